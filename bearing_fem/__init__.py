@@ -1,0 +1,42 @@
+"""bearing_fem: finite-element Reynolds-elasticity solver for rolling-bearing contacts.
+
+Public API (see ``docs/api.md``)::
+
+    import bearing_fem as bf
+    scene = bf.Scene.from_toml("scene.toml")
+    result = bf.solve(scene)
+    bf.export(result, "out/")
+
+Sub-modules are imported lazily so a scene only pays for what it uses
+(no thermal patch for an isothermal scene, no pyvista unless plotting).
+"""
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
+__version__ = "0.1.0"
+
+_LAZY = {
+    "Scene": ("bearing_fem.scene", "Scene"),
+    "SceneError": ("bearing_fem.errors", "SceneError"),
+    "solve": ("bearing_fem.solver", "solve"),
+    "Result": ("bearing_fem.result", "Result"),
+    "export": ("bearing_fem.io", "export"),
+}
+_SUBMODULES = {"kodnir", "thermal", "analytic", "formulas", "units", "rheology",
+               "elasticity", "reynolds", "newton", "post", "io", "plot", "scene",
+               "mesh", "solver", "result", "errors", "bearing"}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        mod, attr = _LAZY[name]
+        return getattr(importlib.import_module(mod), attr)
+    if name in _SUBMODULES:
+        return importlib.import_module(f"bearing_fem.{name}")
+    raise AttributeError(f"module 'bearing_fem' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(list(globals()) + list(_LAZY) + list(_SUBMODULES))
