@@ -134,6 +134,16 @@ def _normalise_shape(shape: int | tuple[int, ...] | None) -> tuple[int, ...] | N
     return shape
 
 
+def _padded_length(n: int) -> int:
+    """FFT length for the linear convolution of n-node fields with a 2n-1 kernel.
+
+    Any length >= 2n - 1 is exact (DC-FFT needs no more); 2n itself is slow for the
+    usual 2^k + 1 grids (2 x 257 = 514 has the prime 257), so 2n - 1 is rounded up to a
+    fast 2-3-5-7-11-smooth length: 257 nodes -> 540, 513 -> 1080.
+    """
+    return scipy.fft.next_fast_len(2 * n - 1, real=True)
+
+
 # ----------------------------------------------------------------------------------------
 # Geometric influence integrals (PHYSICS.md 3)
 # ----------------------------------------------------------------------------------------
@@ -470,11 +480,12 @@ class HalfSpaceLine(Compliance):
     def _build_spectrum(self) -> np.ndarray:
         if self._spectrum is None:
             n = self.x.size
-            # wrap-around arrangement of the even kernel on a 2N ring: offsets 0..N-1 at
-            # 0..N-1, offsets -(N-1)..-1 at N+1..2N-1; index N is never reached.
-            k = np.zeros(2 * n)
+            # wrap-around arrangement of the even kernel on a ring of L >= 2N - 1: offsets
+            # 0..N-1 at 0..N-1, offset -m at L - m; indices N..L-N are never reached.
+            self._padded_length = _padded_length(n)
+            k = np.zeros(self._padded_length)
             k[:n] = self._row
-            k[n + 1:] = self._row[:0:-1]
+            k[self._padded_length - n + 1:] = self._row[:0:-1]
             self._spectrum = scipy.fft.rfft(k)
         return self._spectrum
 
@@ -488,7 +499,8 @@ class HalfSpaceLine(Compliance):
             return self._matrix @ p
         n = self.x.size
         spec = self._build_spectrum()
-        return scipy.fft.irfft(spec * scipy.fft.rfft(p, 2 * n), 2 * n)[:n]
+        length = self._padded_length
+        return scipy.fft.irfft(spec * scipy.fft.rfft(p, length), length)[:n]
 
     def diagonal(self, n: int | None = None) -> np.ndarray:
         self._require_size(n)
@@ -517,11 +529,13 @@ class HalfSpacePoint(Compliance):
 
     ``v = (2/(pi E')) sum K p`` with the exact rectangle integrals of
     :func:`point_kernel`, applied by a zero-padded FFT (DC-FFT, Liu, Wang & Liu 2000):
-    the pressure is embedded in a ``(2 ny, 2 nx)`` array of zeros, the kernel is laid out
-    with non-negative offsets at the start and negative offsets wrapped to the end of
-    each axis (index ``2n - m`` for offset ``-m``; index n unused), and the circular
-    convolution restricted to the first ``(ny, nx)`` block is the exact linear one.
-    The kernel spectrum (``rfft2``, ``(2 ny, nx + 1)`` complex) is cached.
+    the pressure is embedded in an ``(Ly, Lx)`` array of zeros, ``L >= 2n - 1`` per axis
+    (2n - 1 rounded up to a fast FFT length, see ``_padded_length``; the classic choice
+    is 2n), the kernel is laid out with non-negative offsets at the start and negative
+    offsets wrapped to the end of each axis (index ``L - m`` for offset ``-m``; indices
+    n..L-n unused, zero), and the circular convolution restricted to the first
+    ``(ny, nx)`` block is the exact linear one. The kernel spectrum (``rfft2``,
+    ``(Ly, Lx//2 + 1)`` complex) is cached.
 
     Parameters
     ----------
@@ -550,11 +564,12 @@ class HalfSpacePoint(Compliance):
         # C for the non-negative offsets (j Dy, i Dx), m/Pa; even in both offsets.
         self._kernel = scale * _point_kernel_grid(nx, ny, self.dx, self.dy)
         self._kernel.setflags(write=False)
-        self._padded_shape = (2 * ny, 2 * nx)
+        ly, lx = _padded_length(ny), _padded_length(nx)
+        self._padded_shape = (ly, lx)
         wrapped = np.zeros(self._padded_shape)
         wrapped[:ny, :nx] = self._kernel
-        wrapped[ny + 1:, :nx] = self._kernel[:0:-1, :]
-        wrapped[:, nx + 1:] = wrapped[:, nx - 1:0:-1]
+        wrapped[ly - ny + 1:, :nx] = self._kernel[:0:-1, :]
+        wrapped[:, lx - nx + 1:] = wrapped[:, nx - 1:0:-1]
         self._spectrum = scipy.fft.rfft2(wrapped)
 
     def kernel(self) -> np.ndarray:

@@ -7,7 +7,10 @@ Hertz error.
 """
 from __future__ import annotations
 
+import importlib.util
+import json
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -148,9 +151,11 @@ def test_line_hertz_convergence_order():
         hs.append(x[1] - x[0])
         errs.append(err / (b * b / (2.0 * RADIUS)))
     slope = np.polyfit(np.log(hs), np.log(errs), 1)[0]
-    assert slope >= 0.9, (
-        f"observed order {slope:.3f} (errors {errs}) of the outside line gap: sampling the "
-        f"sqrt edge converges at least at first order; a wrong kernel would stall at O(1)")
+    # As for the point contact the sqrt edge of p limits the order to ~1.5; the observed
+    # pre-asymptotic local orders are 1.25-1.34 on these grids.
+    assert 1.1 <= slope <= 2.2, (
+        f"observed order {slope:.3f} (errors {errs}) of the outside line gap is outside "
+        f"[1.1, 2.2]: expected ~1.3-1.5 for a pressure with a square-root edge")
 
 
 # ----------------------------------------------------------------------------------------
@@ -265,7 +270,7 @@ def test_point_fft_equals_direct_double_sum():
 
 
 def test_point_unit_load_layout():
-    nx, ny = 12, 7
+    nx, ny = 12, 13                # 2*13 - 1 = 25 is a fast length: no spare zeros in y
     x = np.arange(nx) * 1.0e-6
     y = np.arange(ny) * 2.0e-6
     op = HalfSpacePoint(x, y, E_PRIME)
@@ -398,3 +403,27 @@ def test_make_compliance():
 def test_bad_input(build, match):
     with pytest.raises(ValueError, match=match):
         build()
+
+
+# ----------------------------------------------------------------------------------------
+# Study (coarse run)
+# ----------------------------------------------------------------------------------------
+
+def test_hertz_kernels_study_coarse(tmp_path):
+    path = pathlib.Path(__file__).resolve().parents[1] / "studies" / "hertz_kernels.py"
+    spec = importlib.util.spec_from_file_location("hertz_kernels_study", path)
+    study = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(study)
+    res = study.main(tmp_path, n=2, repeats=1)
+    saved = json.loads((tmp_path / "hertz_kernels.json").read_text())
+    assert [r["nodes"] for r in saved["line"]] == [501, 1001]
+    assert [r["nodes"] for r in saved["point"]] == [33, 65]
+    for row in res["line"]:
+        assert row["error_rel_deflection"] < 0.01, (
+            f"line Hertz error {row['error_rel_deflection']:.3g} of the central deflection "
+            f"at {row['nodes']} nodes: the 1% budget of test_line_hertz_limit")
+    errs = [row["error_rel_delta"] for row in res["point"]]
+    assert errs[1] < 0.6 * errs[0], (
+        f"point Hertz errors {errs} must fall by > 1/0.6 per halving of D (order >= ~0.7 "
+        f"even on these coarse grids; 1.5 expected)")
+    assert errs[1] < 0.01, f"65^2 point Hertz error {errs[1]:.3g} delta (observed 0.5%)"
