@@ -34,27 +34,31 @@ from bearing_fem.elasticity import (
 # that module provides them, otherwise evaluated from the closed forms here.
 # ----------------------------------------------------------------------------------------
 
-try:
-    from bearing_fem.analytic import hertz_line_gap_outside  # type: ignore[attr-defined]
-except ImportError:  # analytic.py is written concurrently; same closed form as 5.3
-    def hertz_line_gap_outside(x, b, radius):
-        """h - h_centre outside |x| > b: (b^2/(2R)) [|X| sqrt(X^2-1) - arccosh|X|], m."""
-        X = np.abs(np.asarray(x, dtype=float)) / b
-        return (b * b / (2.0 * radius)) * (X * np.sqrt(X * X - 1.0) - np.arccosh(X))
+def _hertz_line_gap_outside_local(x, b, radius):
+    """h - h_centre outside |x| > b: (b^2/(2R)) [|X| sqrt(X^2-1) - arccosh|X|], m (5.3)."""
+    X = np.maximum(np.abs(np.asarray(x, dtype=float)) / b, 1.0)
+    return (b * b / (2.0 * radius)) * (X * np.sqrt(X * X - 1.0) - np.arccosh(X))
 
-try:
-    from bearing_fem.analytic import hertz_point_displacement  # type: ignore[attr-defined]
+
+def _hertz_point_displacement_local(r, a, p_h, e_prime):
+    """Elastic approach v(r) of two half-spaces under circular Hertz pressure, m (5.3)."""
+    r = np.abs(np.asarray(r, dtype=float))
+    out = np.empty_like(r)
+    inside = r <= a
+    out[inside] = math.pi * p_h / (2.0 * a * e_prime) * (2.0 * a * a - r[inside] ** 2)
+    ro = r[~inside]
+    out[~inside] = (p_h / (a * e_prime)) * ((2.0 * a * a - ro ** 2) * np.arcsin(a / ro)
+                                            + a * np.sqrt(ro ** 2 - a * a))
+    return out
+
+
+try:  # analytic.py is written concurrently; prefer it, fall back to the same closed forms
+    from bearing_fem.analytic import hertz_line_gap_outside, hertz_point_displacement
+    HAVE_ANALYTIC = True
 except ImportError:
-    def hertz_point_displacement(r, a, p_h, e_prime):
-        """Elastic approach v(r) of two half-spaces under Hertz pressure, m (5.3)."""
-        r = np.asarray(r, dtype=float)
-        out = np.empty_like(r)
-        inside = r <= a
-        out[inside] = math.pi * p_h / (2.0 * a * e_prime) * (2.0 * a * a - r[inside] ** 2)
-        ro = r[~inside]
-        out[~inside] = (p_h / (a * e_prime)) * ((2.0 * a * a - ro ** 2) * np.arcsin(a / ro)
-                                                + a * np.sqrt(ro ** 2 - a * a))
-        return out
+    hertz_line_gap_outside = _hertz_line_gap_outside_local
+    hertz_point_displacement = _hertz_point_displacement_local
+    HAVE_ANALYTIC = False
 
 
 E_PRIME = 2.2e11      # Pa, steel on steel (E = 2.0e11 Pa, nu = 0.3 gives 2.198e11)
@@ -156,6 +160,18 @@ def test_line_hertz_convergence_order():
     assert 1.1 <= slope <= 2.2, (
         f"observed order {slope:.3f} (errors {errs}) of the outside line gap is outside "
         f"[1.1, 2.2]: expected ~1.3-1.5 for a pressure with a square-root edge")
+
+
+@pytest.mark.skipif(not HAVE_ANALYTIC, reason="bearing_fem.analytic Hertz oracles not present")
+def test_analytic_hertz_oracles_agree_with_physics_md():
+    x = np.linspace(1.0, 5.0, 41) * 1e-4
+    np.testing.assert_allclose(hertz_line_gap_outside(x, 1e-4, 0.01),
+                               _hertz_line_gap_outside_local(x, 1e-4, 0.01), rtol=1e-13,
+                               atol=1e-22, err_msg="two codings of the same closed form (5.3)")
+    r = np.linspace(0.0, 5.0, 51) * 1e-4
+    np.testing.assert_allclose(hertz_point_displacement(r, 1.5e-4, 1e9, E_PRIME),
+                               _hertz_point_displacement_local(r, 1.5e-4, 1e9, E_PRIME),
+                               rtol=1e-13, err_msg="two codings of the same closed form (5.3)")
 
 
 # ----------------------------------------------------------------------------------------
