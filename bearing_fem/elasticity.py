@@ -616,20 +616,18 @@ class HalfSpacePoint(Compliance):
         self._require_size(n)
         ny, nx = self.shape
         rx, ry = min(r, nx - 1), min(r, ny - 1)
-        jj, ii = np.meshgrid(np.arange(ny), np.arange(nx), indexing="ij")
-        rows, cols, vals = [], [], []
-        for oj in range(-ry, ry + 1):
-            for oi in range(-rx, rx + 1):
-                ok = (jj + oj >= 0) & (jj + oj < ny) & (ii + oi >= 0) & (ii + oi < nx)
-                src = (jj[ok] * nx + ii[ok])
-                rows.append(src)
-                cols.append(src + oj * nx + oi)
-                vals.append(np.full(src.size, self._kernel[abs(oj), abs(oi)]))
-        n_all = self.size
-        mat = scipy.sparse.coo_matrix(
-            (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-            shape=(n_all, n_all))
-        return mat.tocsr()
+        # Sparsity pattern = kron(band of half-width ry in y, band of half-width rx in x);
+        # the value of entry (j*nx+i, l*nx+k) is kernel[|j-l|, |i-k|].
+        band_y = scipy.sparse.diags([np.ones(ny - abs(k)) for k in range(-ry, ry + 1)],
+                                    offsets=np.arange(-ry, ry + 1), format="csr")
+        band_x = scipy.sparse.diags([np.ones(nx - abs(k)) for k in range(-rx, rx + 1)],
+                                    offsets=np.arange(-rx, rx + 1), format="csr")
+        mat = scipy.sparse.csr_matrix(scipy.sparse.kron(band_y, band_x, format="csr"))
+        rows = np.repeat(np.arange(self.size, dtype=mat.indices.dtype), np.diff(mat.indptr))
+        row_j, row_i = np.divmod(rows, nx)
+        col_j, col_i = np.divmod(mat.indices, nx)
+        mat.data = self._kernel[np.abs(row_j - col_j), np.abs(row_i - col_i)]
+        return mat
 
     def __repr__(self) -> str:
         return (f"HalfSpacePoint(ny x nx = {self.shape[0]} x {self.shape[1]}, "

@@ -121,6 +121,7 @@ def point_case(n: int, repeats: int = 3) -> dict[str, Any]:
     _, peak_apply = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     apply = _best_time(lambda: op.apply(p), repeats)
+    near_field = _best_time(lambda: op.near_field(2), 1)
 
     inside = r <= a
     v_ref = np.empty_like(r)
@@ -137,6 +138,8 @@ def point_case(n: int, repeats: int = 3) -> dict[str, Any]:
         "central_error_rel_delta": float(abs(v[n // 2, n // 2] - delta) / delta),
         "build_s": build,
         "apply_s": apply,
+        "near_field_r2_s": near_field,
+        "padded_shape": list(op._padded_shape),
         "spectrum_MB": op._spectrum.nbytes / 1e6,
         "peak_build_MB": peak_build / 1e6,
         "peak_apply_extra_MB": (peak_apply - base) / 1e6,
@@ -206,9 +209,9 @@ if __name__ == "__main__":
               f"{_fmt(row['build_dense_s'])}     {_fmt(row['apply_dense_s'])}")
     print(f"  observed order {res['line_order']:.2f}")
     print("Point contact, Hertz pressure on [-2a, 2a]^2 (times in ms, memory in MB)")
-    print("  grid      error/delta  build    apply   spectrum  apply_peak")
+    print("  grid      error/delta  build    apply   near_field(2)  spectrum  apply_peak")
     for row in res["point"]:
         print(f"  {row['nodes']:3d}^2   {row['error_rel_delta']:.3e}  {_fmt(row['build_s'])} "
-              f"{_fmt(row['apply_s'])}   {row['spectrum_MB']:6.1f}    "
-              f"{row['peak_apply_extra_MB']:6.1f}")
+              f"{_fmt(row['apply_s'])}   {_fmt(row['near_field_r2_s'])}       "
+              f"{row['spectrum_MB']:6.1f}    {row['peak_apply_extra_MB']:6.1f}")
     print(f"  observed order {res['point_order']:.2f}")
