@@ -11,6 +11,418 @@ import numpy as np
 # Section A: Kapitsa (point/line, rigid), Martin (rigid cylinder), Hertz dry limits.
 # ----------------------------------------------------------------------------------------
 
+# Section A imports and helpers (kept inside this section so Section B stays independent).
+import functools as _functools
+from typing import Any as _Any
+
+from scipy.optimize import brentq as _brentq
+
+from bearing_fem.units import _require_finite as _a_finite
+from bearing_fem.units import _require_nonnegative as _a_nonneg
+from bearing_fem.units import _require_positive as _a_pos
+
+# Symbols (Section A): x, y [m] (x along the entrainment, inlet at x < 0); h0 [m] central
+# gap; a = 1/(2 rx), b = 1/(2 ry) [1/m] gap curvatures; eta0 = viscosity [Pa s];
+# u_m = mean_speed [m/s]; dh0dt [m/s]; alpha = piezo [1/Pa]; q reduced pressure [Pa];
+# p pressure [Pa]; R = radius [m]; E' = e_prime [Pa]; p_h [Pa].
+
+
+def barus_from_reduced(q: _Any, piezo: _Any) -> np.ndarray:
+    """Pressure from the Barus (Kapitsa) reduced pressure, PHYSICS.md 5.1.
+
+    p = -ln(1 - alpha q)/alpha  (p = q when alpha = 0). Where alpha q >= 1 no pressure
+    exists (the piezo-viscous solution has blown up) and ``inf`` is returned.
+
+    Parameters
+    ----------
+    q : float or array
+        Reduced pressure q = (1 - exp(-alpha p))/alpha [Pa].
+    piezo : float or array
+        Barus coefficient alpha [1/Pa], >= 0.
+
+    Returns
+    -------
+    ndarray
+        p [Pa] (``inf`` where alpha q >= 1).
+    """
+    _a_nonneg("piezo", piezo, "1/Pa")
+    q = np.asarray(q, dtype=float)
+    alpha = np.asarray(piezo, dtype=float)
+    z = alpha * q
+    safe_alpha = np.where(alpha > 0.0, alpha, 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = -np.log1p(-np.minimum(z, 0.5)) / safe_alpha
+        p = np.where(z < 0.5, p, -np.log(np.maximum(1.0 - z, 0.0)) / safe_alpha)
+    p = np.where(z >= 1.0, np.inf, p)
+    return np.where(alpha > 0.0, p, q)
+
+
+def reduced_from_barus(p: _Any, piezo: _Any) -> np.ndarray:
+    """Barus (Kapitsa) reduced pressure q = (1 - exp(-alpha p))/alpha [Pa], PHYSICS.md 5.1.
+
+    q = p when alpha = 0; q -> 1/alpha as p -> inf.
+
+    Parameters
+    ----------
+    p : float or array
+        Pressure [Pa].
+    piezo : float or array
+        alpha [1/Pa], >= 0.
+    """
+    _a_nonneg("piezo", piezo, "1/Pa")
+    p = np.asarray(p, dtype=float)
+    alpha = np.asarray(piezo, dtype=float)
+    safe_alpha = np.where(alpha > 0.0, alpha, 1.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        q = -np.expm1(-alpha * p) / safe_alpha
+    return np.where(alpha > 0.0, q, p)
+
+
+def _check_kapitsa(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_speed: _Any,
+                   dh0dt: _Any) -> None:
+    _a_pos("h0", h0, "m")
+    _a_pos("a", a, "1/m")
+    _a_nonneg("b", b, "1/m")
+    _a_pos("viscosity", viscosity, "Pa s")
+    _a_nonneg("mean_speed", mean_speed, "m/s")
+    _a_finite("dh0dt", dh0dt, "m/s")
+
+
+def kapitsa_point_coefficients(viscosity: _Any, mean_speed: _Any, a: _Any, b: _Any,
+                               dh0dt: _Any = 0.0) -> tuple[_Any, _Any]:
+    """Coefficients of Kapitsa's rigid full-Sommerfeld solution q = (A x + B)/h^2 (5.1).
+
+    A = -12 eta0 u_m a/(3a + 2b) [Pa m], B = -3 eta0 (dh0/dt)/(a + b) [Pa m^2], for the
+    gap h = h0 + a x^2 + b y^2. The line limit b = 0 gives A = -4 eta0 u_m,
+    B = -3 eta0 (dh0/dt)/a.
+
+    Parameters
+    ----------
+    viscosity : float
+        eta0 [Pa s].
+    mean_speed : float
+        u_m [m/s], >= 0 (along +x, inlet at x < 0).
+    a, b : float
+        Gap curvatures 1/(2 rx) > 0 and 1/(2 ry) >= 0 [1/m].
+    dh0dt : float
+        Approach rate dh0/dt [m/s] (< 0: squeezing, positive pressure).
+
+    Returns
+    -------
+    (A, B)
+        A [Pa m] and B [Pa m^2].
+    """
+    _a_pos("viscosity", viscosity, "Pa s")
+    _a_nonneg("mean_speed", mean_speed, "m/s")
+    _a_pos("a", a, "1/m")
+    _a_nonneg("b", b, "1/m")
+    _a_finite("dh0dt", dh0dt, "m/s")
+    big_a = -12.0 * viscosity * mean_speed * a / (3.0 * a + 2.0 * b)
+    big_b = -3.0 * viscosity * dh0dt / (a + b)
+    return big_a, big_b
+
+
+def kapitsa_point_pressure(x: _Any, y: _Any, h0: float, a: float, b: float,
+                           viscosity: float, mean_speed: float, dh0dt: float = 0.0,
+                           piezo: float = 0.0) -> np.ndarray:
+    """Kapitsa rigid point-contact pressure, full-Sommerfeld (PHYSICS.md 5.1).
+
+    q = (A x + B)/h^2 with h = h0 + a x^2 + b y^2 solves the isoviscous Reynolds equation
+    div(h^3/(12 eta0) grad q) = u_m dh/dx + dh0/dt exactly; then p = -ln(1 - alpha q)/alpha
+    (Barus transform). p may be negative (no cavitation condition) and is ``inf`` where
+    alpha q >= 1 (no piezo-viscous solution, see :func:`kapitsa_existence_ratio`).
+
+    Parameters
+    ----------
+    x, y : float or array
+        Coordinates [m] (broadcast together).
+    h0 : float
+        Central gap [m].
+    a, b : float
+        Gap curvatures 1/(2 rx), 1/(2 ry) [1/m].
+    viscosity : float
+        eta0 [Pa s].
+    mean_speed : float
+        u_m [m/s].
+    dh0dt : float
+        dh0/dt [m/s].
+    piezo : float
+        alpha [1/Pa].
+
+    Returns
+    -------
+    ndarray
+        p [Pa].
+    """
+    _check_kapitsa(h0, a, b, viscosity, mean_speed, dh0dt)
+    big_a, big_b = kapitsa_point_coefficients(viscosity, mean_speed, a, b, dh0dt)
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    h = h0 + a * x**2 + b * y**2
+    return barus_from_reduced((big_a * x + big_b) / h**2, piezo)
+
+
+def kapitsa_point_max_reduced(h0: _Any, a: _Any, b: _Any, viscosity: _Any,
+                              mean_speed: _Any, dh0dt: _Any = 0.0) -> np.ndarray:
+    """Supremum over the plane of the isoviscous Kapitsa pressure q = (A x + B)/h^2 [Pa].
+
+    Where A x + B > 0 the maximum over y is at y = 0, so the supremum is that of
+    f(x) = (A x + B)/(h0 + a x^2)^2 along y = 0, or 0 (the value at infinity) if f < 0
+    everywhere. f'(x) = 0 reduces to the quadratic 3 a A x^2 + 4 a B x - A h0 = 0, with
+    real roots x = (-4 a B -+ sqrt(16 a^2 B^2 + 12 a A^2 h0))/(6 a A); f is evaluated at
+    both (closed form, any mix of wedge and squeeze). For A = 0 (pure squeeze) the maximum
+    is B/h0^2 at x = 0 if B > 0. Pure wedge: (9|A|/16)(3a)^(-1/2) h0^(-3/2) (PHYSICS.md 5.1).
+
+    Parameters
+    ----------
+    h0, a, b, viscosity, mean_speed, dh0dt
+        As :func:`kapitsa_point_pressure` [m, 1/m, 1/m, Pa s, m/s, m/s]; broadcast.
+
+    Returns
+    -------
+    ndarray
+        sup q [Pa], >= 0.
+    """
+    _check_kapitsa(h0, a, b, viscosity, mean_speed, dh0dt)
+    big_a, big_b = kapitsa_point_coefficients(viscosity, mean_speed, a, b, dh0dt)
+    big_a, big_b, h0, a = np.broadcast_arrays(*(np.asarray(v, dtype=float)
+                                                for v in (big_a, big_b, h0, a)))
+    wedge = big_a != 0.0
+    a_safe = np.where(wedge, big_a, 1.0)
+    root = np.sqrt(16.0 * a**2 * big_b**2 + 12.0 * a * big_a**2 * h0)
+    best = np.where(wedge, -np.inf, big_b / h0**2)
+    for sign in (-1.0, 1.0):
+        xs = (-4.0 * a * big_b + sign * root) / (6.0 * a * a_safe)
+        fs = (big_a * xs + big_b) / (h0 + a * xs**2) ** 2
+        best = np.where(wedge, np.maximum(best, fs), best)
+    return np.maximum(best, 0.0)
+
+
+def kapitsa_existence_ratio(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_speed: _Any,
+                            dh0dt: _Any = 0.0, *, piezo: _Any) -> np.ndarray:
+    """alpha q_max of Kapitsa's rigid solution [-] (PHYSICS.md 5.1).
+
+    A rigid piezo-viscous (Barus) full-Sommerfeld solution exists iff this is < 1; as it
+    tends to 1 the peak pressure tends to infinity. Arguments as
+    :func:`kapitsa_point_max_reduced`, plus ``piezo`` alpha [1/Pa] (keyword).
+    """
+    _a_nonneg("piezo", piezo, "1/Pa")
+    return np.asarray(piezo, dtype=float) * kapitsa_point_max_reduced(
+        h0, a, b, viscosity, mean_speed, dh0dt)
+
+
+def kapitsa_line_pressure(x: _Any, h0: float, radius: float, viscosity: float,
+                          mean_speed: float, dh0dt: float = 0.0,
+                          piezo: float = 0.0) -> np.ndarray:
+    """Rigid cylinder, full-Sommerfeld (PHYSICS.md 5.1 line limit b = 0, and 5.2).
+
+    q = (A x + B)/h^2, h = h0 + x^2/(2R), A = -4 eta0 u_m, B = -6 eta0 R dh0/dt; solves
+    d/dx(h^3/(12 eta0) dq/dx) = u_m dh/dx + dh0/dt; p = Barus transform of q.
+
+    Parameters
+    ----------
+    x : float or array
+        [m].
+    h0 : float
+        Central gap [m].
+    radius : float
+        R [m].
+    viscosity : float
+        eta0 [Pa s].
+    mean_speed : float
+        u_m [m/s].
+    dh0dt : float
+        [m/s].
+    piezo : float
+        alpha [1/Pa].
+
+    Returns
+    -------
+    ndarray
+        p [Pa] (``inf`` where alpha q >= 1).
+    """
+    _a_pos("radius", radius, "m")
+    a = 1.0 / (2.0 * radius)
+    return kapitsa_point_pressure(x, 0.0, h0, a, 0.0, viscosity, mean_speed, dh0dt, piezo)
+
+
+def kapitsa_line_max_reduced(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: _Any,
+                             dh0dt: _Any = 0.0) -> np.ndarray:
+    """max_x of the isoviscous rigid-cylinder q [Pa] (b = 0 case of
+    :func:`kapitsa_point_max_reduced`)."""
+    _a_pos("radius", radius, "m")
+    return kapitsa_point_max_reduced(h0, 1.0 / (2.0 * np.asarray(radius, dtype=float)),
+                                     0.0, viscosity, mean_speed, dh0dt)
+
+
+# --- Martin: rigid cylinder with the Reynolds outlet condition (PHYSICS.md 5.2) ---------
+def _martin_shape(g: _Any, h_star_ratio: float) -> np.ndarray:
+    """p/P0 of Martin's solution as a function of g = arctan(x/sqrt(2 R h0)) (5.2)."""
+    g = np.asarray(g, dtype=float)
+    return 12.0 * ((g + np.pi / 2.0) * (0.5 - 3.0 * h_star_ratio / 8.0)
+                   + (1.0 - h_star_ratio) * np.sin(2.0 * g) / 4.0
+                   - h_star_ratio * np.sin(4.0 * g) / 32.0)
+
+
+@_functools.lru_cache(maxsize=1)
+def martin_outlet_angle() -> float:
+    """Martin's outlet angle g_c [rad], root of p(g_c) = 0 with H* = sec^2(g_c) (5.2).
+
+    Computed with brentq on (1e-3, 1.2) rad (p/P0 is pi/16 > 0 near g = 0 and negative at
+    1.2). The result is g_c ~ 0.4436 rad, i.e. X_c = tan(g_c) ~ 0.475 (the classical
+    "0.475" is the outlet position x_c/sqrt(2 R h0), not the angle), H* ~ 1.2257.
+    """
+    def p_at_outlet(gc: float) -> float:
+        return float(_martin_shape(gc, 1.0 / np.cos(gc) ** 2))
+
+    return float(_brentq(p_at_outlet, 1e-3, 1.2, xtol=1e-15))
+
+
+def martin_hstar(h0: _Any) -> np.ndarray:
+    """Film h* = h0 sec^2(g_c) [m] at the Reynolds outlet, where dp/dx = 0 (5.2)."""
+    _a_pos("h0", h0, "m")
+    return np.asarray(h0, dtype=float) / np.cos(martin_outlet_angle()) ** 2
+
+
+def martin_outlet_position(h0: _Any, radius: _Any) -> np.ndarray:
+    """Outlet (cavitation) position x_c = sqrt(2 R h0) tan(g_c) [m] (5.2)."""
+    _a_pos("h0", h0, "m")
+    _a_pos("radius", radius, "m")
+    return np.sqrt(2.0 * np.asarray(radius, dtype=float) * h0) * np.tan(martin_outlet_angle())
+
+
+def martin_pressure(x: _Any, h0: float, radius: float, viscosity: float,
+                    mean_speed: float, piezo: float = 0.0) -> np.ndarray:
+    """Martin's rigid-cylinder pressure with the Reynolds outlet condition (5.2).
+
+    With L = sqrt(2 R h0), g = arctan(x/L), P0 = eta0 u_m L/h0^2, H* = sec^2(g_c):
+    q/P0 = 12[(g + pi/2)(1/2 - 3H*/8) + (1 - H*) sin(2g)/4 - H* sin(4g)/32] for
+    x <= x_c, and 0 beyond the outlet x_c; then p = Barus transform of q (``inf`` where
+    alpha q >= 1). It integrates dp/dx = 12 eta0 u_m (h - h*)/h^3 from p(-inf) = 0.
+
+    Parameters
+    ----------
+    x : float or array
+        [m] (inlet at x < 0).
+    h0 : float
+        Central (minimum) gap [m].
+    radius : float
+        R [m].
+    viscosity : float
+        eta0 [Pa s].
+    mean_speed : float
+        u_m [m/s].
+    piezo : float
+        alpha [1/Pa].
+
+    Returns
+    -------
+    ndarray
+        p [Pa].
+    """
+    _a_pos("h0", h0, "m")
+    _a_pos("radius", radius, "m")
+    _a_pos("viscosity", viscosity, "Pa s")
+    _a_nonneg("mean_speed", mean_speed, "m/s")
+    gc = martin_outlet_angle()
+    length = np.sqrt(2.0 * radius * h0)
+    p0 = viscosity * mean_speed * length / h0**2
+    g = np.arctan(np.asarray(x, dtype=float) / length)
+    q = np.where(g <= gc, p0 * _martin_shape(g, 1.0 / np.cos(gc) ** 2), 0.0)
+    return barus_from_reduced(q, piezo)
+
+
+def martin_load(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: _Any) -> np.ndarray:
+    """Martin load per unit length w = 6 eta0 u_m R/h* [N/m], h* = h0 sec^2(g_c) (5.2).
+
+    Exact (integration by parts of the isoviscous pressure; ~ 4.896 eta0 u_m R/h0).
+    """
+    _a_pos("radius", radius, "m")
+    _a_pos("viscosity", viscosity, "Pa s")
+    _a_nonneg("mean_speed", mean_speed, "m/s")
+    return 6.0 * np.asarray(viscosity * mean_speed * radius, dtype=float) / martin_hstar(h0)
+
+
+def martin_max_reduced(h0: _Any, radius: _Any, viscosity: _Any,
+                       mean_speed: _Any) -> np.ndarray:
+    """Peak isoviscous Martin pressure [Pa]: P0 (p/P0)(-g_c), at x = -x_c where h = h* (5.2)."""
+    _a_pos("h0", h0, "m")
+    _a_pos("radius", radius, "m")
+    _a_pos("viscosity", viscosity, "Pa s")
+    _a_nonneg("mean_speed", mean_speed, "m/s")
+    gc = martin_outlet_angle()
+    h0 = np.asarray(h0, dtype=float)
+    p0 = viscosity * mean_speed * np.sqrt(2.0 * np.asarray(radius) * h0) / h0**2
+    return p0 * _martin_shape(-gc, 1.0 / np.cos(gc) ** 2)
+
+
+def martin_existence_ratio(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: _Any, *,
+                           piezo: _Any) -> np.ndarray:
+    """alpha q_max for Martin's cylinder [-]: a Barus solution exists iff < 1 (5.2)."""
+    _a_nonneg("piezo", piezo, "1/Pa")
+    return np.asarray(piezo, dtype=float) * martin_max_reduced(h0, radius, viscosity,
+                                                               mean_speed)
+
+
+# --- Hertz dry limits (PHYSICS.md 5.3) ---------------------------------------------------
+def hertz_line_pressure(x: _Any, b: float, p_h: float) -> np.ndarray:
+    """Hertz line pressure p = p_h sqrt(1 - (x/b)^2) for |x| <= b, else 0 [Pa] (5.3).
+
+    Parameters: x [m], half-width b [m], p_h [Pa]. Integrates to w = pi b p_h/2.
+    """
+    _a_pos("b", b, "m")
+    _a_nonneg("p_h", p_h, "Pa")
+    xi = np.asarray(x, dtype=float) / b
+    return p_h * np.sqrt(np.maximum(1.0 - xi**2, 0.0))
+
+
+def hertz_line_gap_outside(x: _Any, b: float, radius: float) -> np.ndarray:
+    """Dry Hertz line gap relative to the flat contact, h - h_centre [m] (5.3).
+
+    For X = |x|/b >= 1: (b^2/(2R)) [X sqrt(X^2 - 1) - arccosh X]; 0 inside (the Hertz
+    pressure makes x^2/(2R) + v flat there).
+
+    Parameters: x [m], b [m], R = radius [m].
+    """
+    _a_pos("b", b, "m")
+    _a_pos("radius", radius, "m")
+    big_x = np.maximum(np.abs(np.asarray(x, dtype=float)) / b, 1.0)
+    return b**2 / (2.0 * radius) * (big_x * np.sqrt(big_x**2 - 1.0) - np.arccosh(big_x))
+
+
+def hertz_point_pressure(x: _Any, y: _Any, a: float, p_h: float) -> np.ndarray:
+    """Circular Hertz pressure p = p_h sqrt(1 - r^2/a^2), r <= a, else 0 [Pa] (5.3).
+
+    Parameters: x, y [m] (broadcast), contact radius a [m], p_h [Pa].
+    Integrates to F = 2 pi a^2 p_h/3.
+    """
+    _a_pos("a", a, "m")
+    _a_nonneg("p_h", p_h, "Pa")
+    r2 = (np.asarray(x, dtype=float) ** 2 + np.asarray(y, dtype=float) ** 2) / a**2
+    return p_h * np.sqrt(np.maximum(1.0 - r2, 0.0))
+
+
+def hertz_point_displacement(r: _Any, a: float, p_h: float, e_prime: float) -> np.ndarray:
+    """Combined surface displacement v(r) of the circular Hertz pressure [m] (5.3).
+
+    v = (2/(pi E')) double-integral p/dist (Boussinesq, PHYSICS.md 2):
+    r <= a: v = (pi p_h/(2 a E'))(2a^2 - r^2)  (= delta - r^2/(2R) with Hertz values);
+    r >= a: v = (p_h/(a E'))[(2a^2 - r^2) arcsin(a/r) + a sqrt(r^2 - a^2)].
+
+    Parameters: r [m] (|r| is used), a [m], p_h [Pa], E' [Pa].
+    """
+    _a_pos("a", a, "m")
+    _a_nonneg("p_h", p_h, "Pa")
+    _a_pos("e_prime", e_prime, "Pa")
+    r = np.abs(np.asarray(r, dtype=float))
+    inside = np.pi * p_h / (2.0 * a * e_prime) * (2.0 * a**2 - r**2)
+    ro = np.maximum(r, a)
+    outside = p_h / (a * e_prime) * ((2.0 * a**2 - ro**2) * np.arcsin(a / ro)
+                                     + a * np.sqrt(ro**2 - a**2))
+    return np.where(r <= a, inside, outside)
+
+
+
 # ----------------------------------------------------------------------------------------
 # Section B: Korovchinsky half-plane thermal contact (PHYSICS.md 5.4), Jaeger/Blok.
 # ----------------------------------------------------------------------------------------
