@@ -426,3 +426,292 @@ def hertz_point_displacement(r: _Any, a: float, p_h: float, e_prime: float) -> n
 # ----------------------------------------------------------------------------------------
 # Section B: Korovchinsky half-plane thermal contact (PHYSICS.md 5.4), Jaeger/Blok.
 # ----------------------------------------------------------------------------------------
+
+
+def _as_positive(name: str, value: float, unit: str) -> float:
+    """Return ``value`` as a float, or raise ValueError naming argument, value and unit."""
+    v = float(value)
+    if not np.isfinite(v) or v <= 0.0:
+        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {value!r}")
+    return v
+
+
+def korovchinsky_root(x_over_a: np.ndarray | float, y_over_a: np.ndarray | float) -> np.ndarray:
+    """Parameter t >= 0 of the confocal ellipse through (x', y') (PHYSICS.md 5.4).
+
+    t is the non-negative root of ``1 - x'^2/(1+t) - y'^2/t = 0``, i.e. of
+    ``t^2 + (1 - x'^2 - y'^2) t - y'^2 = 0``; t = 0 on the strip |x'| <= 1, y' = 0.
+
+    Parameters
+    ----------
+    x_over_a, y_over_a : array_like
+        Coordinates in units of the strip half-width a (dimensionless).
+
+    Returns
+    -------
+    ndarray
+        t (dimensionless), broadcast shape of the inputs.
+    """
+    xp = np.asarray(x_over_a, dtype=float)
+    yp = np.asarray(y_over_a, dtype=float)
+    B = 1.0 - xp**2 - yp**2
+    disc = np.sqrt(B * B + 4.0 * yp**2)
+    # two algebraically equal forms; pick the one without cancellation
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_pos = 2.0 * yp**2 / (B + disc)           # B > 0 (inside the unit circle)
+    t_neg = 0.5 * (disc - B)                        # B <= 0
+    t = np.where(B > 0.0, np.where(B + disc > 0.0, t_pos, 0.0), t_neg)
+    return np.maximum(t, 0.0)
+
+
+def korovchinsky_shape(x_over_a: np.ndarray | float, y_over_a: np.ndarray | float) -> np.ndarray:
+    """C-free part f of the corrected Korovchinsky field, T/T_n = C + f(x', y').
+
+    ``f = -(1/2) ln[(sqrt(1+t) + sqrt t)/2] - (1/2)(1 - sqrt(t/(1+t))) x'^2
+    - (1/2)(sqrt((1+t)/t) - 1) y'^2`` (PHYSICS.md 5.4; seed 004 prints the quadratic
+    coefficients as 1 instead of 1/2). On the strip (t = 0) f = ln sqrt 2 - x'^2/2.
+
+    Parameters
+    ----------
+    x_over_a, y_over_a : array_like
+        x/a across the track and y/a >= 0 into the body (dimensionless).
+
+    Returns
+    -------
+    ndarray
+        f (dimensionless, in units of T_n).
+    """
+    xp = np.asarray(x_over_a, dtype=float)
+    yp = np.abs(np.asarray(y_over_a, dtype=float))
+    t = korovchinsky_root(xp, yp)
+    st = np.sqrt(t)
+    s1 = np.sqrt(1.0 + t)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # (sqrt((1+t)/t) - 1) y'^2 = (s1 - st) y'^2 / st -> 0 as y' -> 0 on the strip
+        yterm = np.where(st > 0.0, (s1 - st) * yp**2 / st, 0.0)
+    return (-0.5 * np.log(0.5 * (s1 + st)) - 0.5 * (1.0 - st / s1) * xp**2 - 0.5 * yterm)
+
+
+def korovchinsky_characteristic_temperature(half_width: float, q_max: float,
+                                            conductivity: float) -> float:
+    """Characteristic temperature T_n = a q_max / lambda [K] (= 2 theta/(pi lambda)).
+
+    Parameters
+    ----------
+    half_width : float
+        Strip half-width a [m].
+    q_max : float
+        Peak of the semi-elliptic flux [W/m^2].
+    conductivity : float
+        Thermal conductivity lambda [W/(m K)].
+    """
+    a = _as_positive("half_width", half_width, "m")
+    lam = _as_positive("conductivity", conductivity, "W/(m K)")
+    return a * float(q_max) / lam
+
+
+def korovchinsky_temperature(x: np.ndarray | float, y: np.ndarray | float, half_width: float,
+                             q_max: float, conductivity: float, C: float = 0.0) -> np.ndarray:
+    """Corrected Korovchinsky temperature T = T_n (C + f(x/a, y/a)) [K].
+
+    Steady conduction in the half-plane y >= 0 with adiabatic surface except the
+    semi-elliptic strip flux q = q_max sqrt(1 - x^2/a^2), |x| <= a (PHYSICS.md 5.4).
+
+    Parameters
+    ----------
+    x, y : array_like
+        Position [m]: x across the track, y >= 0 into the body.
+    half_width : float
+        a [m].
+    q_max : float
+        [W/m^2].
+    conductivity : float
+        lambda [W/(m K)].
+    C : float
+        Korovchinsky's datum constant (dimensionless). ``C = 1/4`` gives the
+        logarithmic potential normalised at r = a (see
+        :func:`korovchinsky_log_potential_constant`).
+
+    Returns
+    -------
+    ndarray
+        Temperature [K] relative to the datum fixed by C.
+    """
+    a = _as_positive("half_width", half_width, "m")
+    Tn = korovchinsky_characteristic_temperature(a, q_max, conductivity)
+    return Tn * (C + korovchinsky_shape(np.asarray(x, float) / a, np.asarray(y, float) / a))
+
+
+def korovchinsky_log_potential_constant() -> float:
+    """The C for which T = -(1/(pi lambda)) integral q(s) ln(|r - s|/a) ds.
+
+    As r -> infinity, t -> r'^2 - 1/2 + O(r'^-2), so f -> -(1/2) ln r' - 1/4 (the two
+    quadratic terms tend to x'^2/(4t) + y'^2/(4t) = 1/4), while the log potential with
+    theta = pi a q_max / 2 tends to -(T_n/2) ln r'. Hence C = 1/4 (exact). The tests
+    check this against direct quadrature of the log potential.
+    """
+    return 0.25
+
+
+def korovchinsky_surface(x_over_a: np.ndarray | float, C: float = 0.0) -> np.ndarray:
+    """Surface temperature T(x, 0)/T_n (PHYSICS.md 5.4 special forms), dimensionless.
+
+    On the strip: C + ln sqrt 2 - x'^2/2. Outside: C - {(1/2) ln[(x' + sqrt(x'^2-1))/2]
+    - (1/2) x' sqrt(x'^2-1) + x'^2/2}, with x' -> |x'|.
+    """
+    xp = np.abs(np.asarray(x_over_a, dtype=float))
+    xo = np.maximum(xp, 1.0)                    # outside branch only; avoids log(0)
+    s = np.sqrt(xo**2 - 1.0)
+    outside = 0.5 * np.log(0.5 * (xo + s)) - 0.5 * xo * s + 0.5 * xo**2
+    return np.where(xp <= 1.0, C + np.log(np.sqrt(2.0)) - 0.5 * xp**2, C - outside)
+
+
+def korovchinsky_depth(y_over_a: np.ndarray | float, C: float = 0.0) -> np.ndarray:
+    """Temperature below the centre T(0, y)/T_n, dimensionless (PHYSICS.md 5.4).
+
+    C - {(1/2) ln[(y' + sqrt(y'^2+1))/2] + (1/2) y' sqrt(y'^2+1) - y'^2/2}.
+    """
+    yp = np.abs(np.asarray(y_over_a, dtype=float))
+    s = np.sqrt(yp**2 + 1.0)
+    return C - (0.5 * np.log(0.5 * (yp + s)) + 0.5 * yp * s - 0.5 * yp**2)
+
+
+def korovchinsky_max(C: float = 0.0) -> float:
+    """Maximum (centre) temperature T_max/T_n = C + ln sqrt 2, dimensionless."""
+    return C + float(np.log(np.sqrt(2.0)))
+
+
+def korovchinsky_edge(C: float = 0.0) -> float:
+    """Strip-edge temperature T(a, 0)/T_n = C + ln sqrt 2 - 1/2 (seed 004 prints -1)."""
+    return C + float(np.log(np.sqrt(2.0))) - 0.5
+
+
+def korovchinsky_strip_average(C: float = 0.0) -> float:
+    """Strip-average temperature (1/2a) int T dx / T_n = C + ln sqrt 2 - 1/6.
+
+    Average of -x'^2/2 over [-1, 1] is -1/6 (seed 004 prints -1/3).
+    """
+    return C + float(np.log(np.sqrt(2.0))) - 1.0 / 6.0
+
+
+# --- high-Peclet moving sources (Jaeger 1942, Blok 1937) -------------------------------
+
+
+def _moving_checks(b: float, conductivity: float, density: float, heat_capacity: float,
+                   speed: float) -> tuple[float, float, float, float, float]:
+    return (_as_positive("b (half-length)", b, "m"),
+            _as_positive("conductivity", conductivity, "W/(m K)"),
+            _as_positive("density", density, "kg/m^3"),
+            _as_positive("heat_capacity", heat_capacity, "J/(kg K)"),
+            _as_positive("speed", speed, "m/s"))
+
+
+def jaeger_surface_temperature(x: np.ndarray | float, flux_fn, b: float, conductivity: float,
+                               density: float, heat_capacity: float,
+                               speed: float) -> np.ndarray:
+    """High-Peclet surface temperature under a band source fixed on a moving body [K].
+
+    ``T(x) = (1/sqrt(pi K rho c V)) int_{-b}^{min(x, b)} q(s) (x - s)^(-1/2) ds``
+    (PHYSICS.md 5.4), valid for Pe = V b/(2 kappa) >~ 5. The body material moves along
+    +x and enters the band at x = -b. The 1/sqrt singularity is removed by the
+    substitution s = x - u^2 (ds/sqrt(x - s) = -2 du), leaving a smooth integrand.
+
+    Parameters
+    ----------
+    x : array_like
+        Surface positions [m] along the motion.
+    flux_fn : callable
+        q(s) [W/m^2] on [-b, b] (vectorised or scalar).
+    b : float
+        Band half-length [m].
+    conductivity, density, heat_capacity, speed : float
+        K [W/(m K)], rho [kg/m^3], c [J/(kg K)], V [m/s].
+
+    Returns
+    -------
+    ndarray
+        Temperature rise [K] above the far-upstream body temperature.
+    """
+    from scipy.integrate import quad
+
+    b, K, rho, c, V = _moving_checks(b, conductivity, density, heat_capacity, speed)
+    xs = np.asarray(x, dtype=float)
+    out = np.zeros(xs.shape)
+    for idx, xi in np.ndenumerate(xs):
+        if xi <= -b:
+            continue
+        lo = np.sqrt(max(xi - b, 0.0))
+        hi = np.sqrt(xi + b)
+        val, _ = quad(lambda u: 2.0 * float(flux_fn(xi - u * u)), lo, hi, limit=200,
+                      epsabs=0.0, epsrel=1e-10)
+        out[idx] = val
+    return out / np.sqrt(np.pi * K * rho * c * V)
+
+
+def moving_line_source_surface_temperature(x: np.ndarray | float, flux_fn, b: float,
+                                           conductivity: float, density: float,
+                                           heat_capacity: float, speed: float) -> np.ndarray:
+    """Exact 2D (any Peclet) surface temperature of a band source on a moving half-plane [K].
+
+    Superposes the steady moving line source (Jaeger/Rosenthal), doubled for the
+    adiabatic surface: ``T(x, 0) = (1/(pi K)) int q(s) exp(k (x - s)) K0(k |x - s|) ds``,
+    k = V/(2 kappa), kappa = K/(rho c), body moving along +x. Reduces to
+    :func:`jaeger_surface_temperature` as Pe = k b -> infinity (exp(u) K0(u) ->
+    sqrt(pi/(2u))). Uses ``scipy.special.k0e`` = exp(u) K0(u); the log singularity at
+    s = x is integrable and handled by splitting the quadrature there.
+
+    Parameters and units as in :func:`jaeger_surface_temperature`.
+    """
+    from scipy.integrate import quad
+    from scipy.special import k0e
+
+    b, K, rho, c, V = _moving_checks(b, conductivity, density, heat_capacity, speed)
+    k = V * rho * c / (2.0 * K)
+    xs = np.asarray(x, dtype=float)
+    out = np.zeros(xs.shape)
+
+    for idx, xi in np.ndenumerate(xs):
+        def g(s: float) -> float:
+            u = k * abs(xi - s)
+            w = k0e(u) if xi >= s else k0e(u) * np.exp(-2.0 * u)
+            return float(flux_fn(s)) * w
+        pts = [xi] if -b < xi < b else None
+        out[idx] = quad(g, -b, b, points=pts, limit=400, epsrel=1e-10)[0]
+    return out / (np.pi * K)
+
+
+def uniform_band_max_coefficient() -> float:
+    """Jaeger coefficient c_u in T_max = c_u q sqrt(b)/sqrt(K rho c V), uniform band.
+
+    Band of half-length b (length 2b): T(x) = 2 q sqrt(x + b)/sqrt(pi K rho c V), largest
+    at the trailing edge x = b, so c_u = 2 sqrt(2)/sqrt(pi) = 1.5958 (PHYSICS.md's
+    1.596 refers to the HALF-length b).
+    """
+    return 2.0 * np.sqrt(2.0) / np.sqrt(np.pi)
+
+
+def blok_semielliptic_maximum() -> tuple[float, float]:
+    """Location and coefficient of the high-Peclet maximum under a semi-elliptic flux.
+
+    With q = q_max sqrt(1 - s^2/b^2), T(xi b) = q_max sqrt(b) g(xi)/sqrt(pi K rho c V),
+    g(xi) = int sqrt(1 - s^2) (xi - s)^(-1/2) ds; g is maximised numerically (bounded
+    Brent on [0, 1.5], s = xi - u^2 substitution for the quadrature).
+
+    Returns
+    -------
+    (x_max_over_b, coefficient) : tuple of float
+        x_max/b (dimensionless, Blok: ~0.652) and c_e with
+        T_max = c_e q_max sqrt(b)/sqrt(K rho c V).
+    """
+    from scipy.integrate import quad
+    from scipy.optimize import minimize_scalar
+
+    def g(xi: float) -> float:
+        lo = np.sqrt(max(xi - 1.0, 0.0))
+        hi = np.sqrt(xi + 1.0)
+        return quad(lambda u: 2.0 * np.sqrt(max(1.0 - (xi - u * u) ** 2, 0.0)), lo, hi,
+                    limit=200, epsrel=1e-12)[0]
+
+    res = minimize_scalar(lambda xi: -g(xi), bounds=(0.0, 1.5), method="bounded",
+                          options={"xatol": 1e-10})
+    return float(res.x), float(-res.fun / np.sqrt(np.pi))
