@@ -311,7 +311,9 @@ def test_hertz_line_gap_against_plane_strain_quadrature():
     b, p_h = units.hertz_line(w, radius, e_prime)
 
     def gap(x):
-        integrand = lambda t: p_h * np.cos(t) ** 2 * b * np.log(abs(x - b * np.sin(t)))  # noqa: E731
+        def integrand(t):  # s = b sin(t): p(s) ds = p_h cos(t)^2 b dt
+            return p_h * np.cos(t) ** 2 * b * np.log(abs(x - b * np.sin(t)))
+
         pts = [np.arcsin(x / b)] if abs(x) < b else None
         val, _ = quad(integrand, -np.pi / 2, np.pi / 2, points=pts, epsabs=0, epsrel=1e-12,
                       limit=200)
