@@ -142,8 +142,9 @@ def strip_mesh(half_width: float, radius: float, n_across: int = 48):
     with r (uniform in mu ~ ln(2r/a)), so R = 100 a costs only ~50 % more than R = 10 a.
     Conformality keeps the cells near-square; at the two strip edges the map doubles
     angles, so the diagonal of each corner cell is chosen through the edge node (no
-    degenerate triangle). The outer ellipse mu = M is blended radially onto the circle
-    r = R (relative shift < 2 (a/2R)^2 ... 2 %, applied smoothly as (mu/M)^4).
+    degenerate triangle). The outer ellipse mu = M (semi-axes a cosh M = R, a sinh M) is
+    blended radially onto the circle r = R (shift ~ (a/R)^2/2 relative, 2 % at R = 5a,
+    applied smoothly with weight (mu/M)^4).
 
     Parameters
     ----------
@@ -548,7 +549,10 @@ class MovingSourceResult:
         T_max sqrt(lambda rho c V)/(q_max sqrt b) [-]; Jaeger's 1.596 (uniform band) or
         Blok's semi-elliptic coefficient in the high-Pe limit.
     mesh, basis, field
-        skfem objects and the nodal solution [K].
+        skfem objects (coordinates in units of b) and the nodal solution in units of
+        ``temperature_scale``.
+    temperature_scale : float
+        q_max b / lambda [K] per unit of ``field``.
     """
 
     half_length: float

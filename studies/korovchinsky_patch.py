@@ -138,8 +138,8 @@ def main(outdir: str | Path = "out/korovchinsky_patch", n: int = 48, quick: bool
     tp = []
     T0 = float(res.temperature(0.0, 0.0))
     for p1, p2 in pairs:
-        q1 = (p1[0] * A_HALF, p1[1] * A_HALF, float(res.temperature(p1[0] * A_HALF, p1[1] * A_HALF)))
-        q2 = (p2[0] * A_HALF, p2[1] * A_HALF, float(res.temperature(p2[0] * A_HALF, p2[1] * A_HALF)))
+        q1, q2 = ((px * A_HALF, py * A_HALF, float(res.temperature(px * A_HALF, py * A_HALF)))
+                  for px, py in (p1, p2))
         rec = th.reconstruct_two_point(A_HALF, q1, q2, LAM)
         tp.append({"p1_over_a": p1, "p2_over_a": p2, "C": rec.C,
                    "source_power_rel_error": rec.source_power / theta - 1,
