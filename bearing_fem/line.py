@@ -1,0 +1,243 @@
+"""Line contact: 1D finite elements (scikit-fem, P1) for the Reynolds-elasticity system.
+
+Unknowns: nodal pressures p_i at the free nodes (the two end nodes carry Dirichlet
+data, 0 by default) and, under load balance, the rigid offset h0.
+
+Equations (all scaled to O(1)):
+
+* Reynolds rows: the weak flux-form residual R_i = int F dphi_i/dx (see
+  :mod:`bearing_fem.reynolds`), scaled to a pressure as r_i = R_i dx / (2 eps0_i p_ref)
+  with eps0_i the isoviscous flow coefficient at node i. With ``cavitation = "none"``
+  the row is r_i = 0; with ``"reynolds"`` it is the Fischer-Burmeister function
+  phi(p_i/p_ref, r_i) = a + b - sqrt(a^2 + b^2) of the complementarity problem
+  p >= 0, R >= 0, p R = 0 (semismooth Newton).
+* Load row: (int p dx - w) / w = 0, partner of h0.
+
+Film: h(x) = h0 + x^2/(2R) + v(x), the geometry evaluated exactly at the quadrature
+points and the elastic displacement v = C p interpolated from the nodes.
+
+Jacobian: dR/dp = A_p + A_h C and dR/dh0 = A_h 1, with A_p, A_h the sparse
+derivative matrices of the flux form (exact, complex-step pointwise derivatives) and C
+the compliance (dense Toeplitz for the half-space, diagonal for Kodnir's local model).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from skfem import CellBasis, ElementLineP1, MeshLine
+
+from .fe import QuadratureOperators, quadrature_operators
+from .reynolds import FluxModel
+
+
+@dataclass
+class LineDiscretisation:
+    """Mesh, basis and precomputed operators of a uniform 1D grid."""
+
+    x: np.ndarray            # node coordinates [m]
+    mesh: MeshLine
+    basis: CellBasis
+    ops: QuadratureOperators
+
+    @classmethod
+    def uniform(cls, x_min: float, x_max: float, nodes: int, intorder: int = 4) -> "LineDiscretisation":
+        x = np.linspace(x_min, x_max, nodes)
+        mesh = MeshLine(x)
+        basis = CellBasis(mesh, ElementLineP1(), intorder=intorder)
+        return cls(x=x, mesh=mesh, basis=basis, ops=quadrature_operators(basis))
+
+    @property
+    def spacing(self) -> float:
+        return float(self.x[1] - self.x[0])
+
+
+def fischer_burmeister(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """phi = a + b - sqrt(a^2 + b^2) and its partial derivatives (generalised at 0)."""
+    r = np.hypot(a, b)
+    phi = a + b - r
+    zero = r < 1e-300
+    rs = np.where(zero, 1.0, r)
+    da = np.where(zero, 1.0 - 1.0 / np.sqrt(2.0), 1.0 - a / rs)
+    db = np.where(zero, 1.0 - 1.0 / np.sqrt(2.0), 1.0 - b / rs)
+    return phi, da, db
+
+
+class LineProblem:
+    """Scaled nonlinear system of one line-contact scene (implements NonlinearProblem).
+
+    Parameters
+    ----------
+    disc : LineDiscretisation
+    flux : FluxModel
+    radius : float
+        Reduced radius R [m].
+    compliance : object with ``matrix()``/``apply()``/``is_zero``/``is_local``
+        From :mod:`bearing_fem.elasticity`.
+    cavitation : {"reynolds", "none"}
+    load : float or None
+        Load per length w [N/m]; None means the offset is prescribed.
+    gap : float or None
+        Prescribed h0 [m] (when ``load`` is None).
+    p_ref, h_ref : float
+        Pressure [Pa] and film [m] scales of the unknowns.
+    boundary_pressure : (float, float)
+        Dirichlet pressures at the two end nodes [Pa].
+    viscosity0 : float
+        eta0 [Pa s], for the row scaling.
+    """
+
+    def __init__(self, disc: LineDiscretisation, flux: FluxModel, radius: float, compliance,
+                 cavitation: str, load: float | None, gap: float | None, p_ref: float,
+                 h_ref: float, viscosity0: float,
+                 boundary_pressure: tuple[float, float] = (0.0, 0.0)) -> None:
+        self.disc, self.flux, self.radius = disc, flux, radius
+        self.compliance = compliance
+        self.cavitation = cavitation
+        self.load, self.gap = load, gap
+        self.p_ref, self.h_ref = p_ref, h_ref
+        self.eta0 = viscosity0
+        x = disc.x
+        n = x.size
+        self.free = np.arange(1, n - 1)
+        self.p_bc = np.zeros(n)
+        self.p_bc[0], self.p_bc[-1] = boundary_pressure
+        ops = disc.ops
+        xq = ops.points[0]
+        self.g_q = xq**2 / (2 * radius)
+        self.gx_q = xq / radius
+        self.g_nodes = x**2 / (2 * radius)
+        self.mass = ops.mass
+        self.has_h0 = load is not None
+        self.n_unknowns = self.free.size + (1 if self.has_h0 else 0)
+        if compliance.is_zero:
+            self._cmat = None
+        elif compliance.is_local:
+            self._cmat = sp.diags(compliance.diagonal(n))
+        else:
+            self._cmat = compliance.matrix(n)
+        self._row_scale = None
+
+    # -- unknown <-> fields --------------------------------------------------------------
+    def unpack(self, z: np.ndarray) -> tuple[np.ndarray, float]:
+        p = self.p_bc.copy()
+        p[self.free] = z[: self.free.size] * self.p_ref
+        h0 = z[-1] * self.h_ref if self.has_h0 else self.gap
+        return p, h0
+
+    def pack(self, p: np.ndarray, h0: float) -> np.ndarray:
+        z = p[self.free] / self.p_ref
+        return np.append(z, h0 / self.h_ref) if self.has_h0 else z
+
+    def displacement(self, p: np.ndarray) -> np.ndarray:
+        if self._cmat is None:
+            return np.zeros_like(p)
+        return self._cmat @ p
+
+    def film_nodes(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Film at the nodes [m]."""
+        return h0 + self.g_nodes + self.displacement(p)
+
+    def fields_q(self, p: np.ndarray, h0: float):
+        """p, h, dp/dx, dh/dx at the quadrature points."""
+        ops = self.disc.ops
+        v = self.displacement(p)
+        h = h0 + self.g_q + ops.value @ v
+        hx = self.gx_q + ops.grad[0] @ v
+        return ops.value @ p, h, ops.grad[0] @ p, hx
+
+    # -- NonlinearProblem ---------------------------------------------------------------------
+    def prepare(self, z: np.ndarray) -> None:
+        p, h0 = self.unpack(z)
+        h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
+        eps0 = h**3 / (12.0 * self.eta0)
+        self._row_scale = (self.disc.spacing / (2.0 * eps0 * self.p_ref))[self.free]
+
+    def admissible(self, z: np.ndarray) -> bool:
+        if not np.all(np.isfinite(z)):
+            return False
+        p, h0 = self.unpack(z)
+        _, h, _, _ = self.fields_q(p, h0)
+        return bool(np.min(h) > 0.0)
+
+    def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Nodal weak residual R_i [m^2/s] (all nodes)."""
+        pq, h, px, hx = self.fields_q(p, h0)
+        (fx,) = self.flux.flux(pq, h, (px,), (hx,), self.disc.ops.element_size)
+        return self.disc.ops.weak_divergence(fx)
+
+    def residual(self, z: np.ndarray) -> np.ndarray:
+        p, h0 = self.unpack(z)
+        r = self.reynolds_residual(p, h0)[self.free] * self._row_scale
+        if self.cavitation == "reynolds":
+            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
+        if self.has_h0:
+            r = np.append(r, (self.mass @ p - self.load) / self.load)
+        return r
+
+    def jacobian(self, z: np.ndarray):
+        """Scaled Jacobian dF/dz (dense ndarray for the half-space, sparse otherwise)."""
+        p, h0 = self.unpack(z)
+        ops = self.disc.ops
+        pq, h, px, hx = self.fields_q(p, h0)
+        (fx,), dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, (px,), (hx,),
+                                                               ops.element_size)
+        a_p = ops.flux_jacobian(0, dp[0], (dgp[0][0],))
+        a_h = ops.flux_jacobian(0, dh[0], (dgh[0][0],))
+        rows = self.free
+        if self._cmat is None:
+            drdp = a_p
+        elif sp.issparse(self._cmat):
+            drdp = (a_p + a_h @ self._cmat).tocsr()
+        else:
+            drdp = a_p.toarray() + a_h @ self._cmat
+        if sp.issparse(drdp):
+            j = drdp[rows][:, rows]
+        else:
+            j = drdp[np.ix_(rows, rows)]
+        res = ops.weak_divergence(fx)[rows]
+        s = self._row_scale
+        if self.cavitation == "reynolds":
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res * s)
+            row_factor = db * s
+        else:
+            row_factor = s
+        # dF/dz for the pressure columns (scaled by p_ref)
+        if sp.issparse(j):
+            j = sp.diags(row_factor * self.p_ref) @ j
+            if self.cavitation == "reynolds":
+                j = j + sp.diags(da)
+        else:
+            j = (row_factor * self.p_ref)[:, None] * j
+            if self.cavitation == "reynolds":
+                j[np.diag_indices_from(j)] += da
+        if not self.has_h0:
+            return j
+        dr_dh0 = (ops.grad[0].T @ (ops.weights * dh[0]))[rows] * row_factor * self.h_ref
+        load_row = self.mass[rows] * self.p_ref / self.load
+        if sp.issparse(j):
+            return sp.bmat([[j, dr_dh0[:, None]], [load_row[None, :], None]], format="csc")
+        out = np.zeros((j.shape[0] + 1, j.shape[1] + 1))
+        out[:-1, :-1] = j
+        out[:-1, -1] = dr_dh0
+        out[-1, :-1] = load_row
+        return out
+
+    def newton_step(self, z: np.ndarray, shift: float = 0.0) -> np.ndarray:
+        """Solve (J + shift D) dz = -F, D = identity on the pressure unknowns."""
+        j = self.jacobian(z)
+        f = self.residual(z)
+        npf = self.free.size
+        if sp.issparse(j):
+            if shift:
+                d = np.zeros(j.shape[0])
+                d[:npf] = shift
+                j = j + sp.diags(d)
+            return spla.spsolve(j.tocsc(), -f)
+        if shift:
+            j[np.arange(npf), np.arange(npf)] += shift
+        return sla.lu_solve(sla.lu_factor(j, overwrite_a=True, check_finite=False), -f,
+                            check_finite=False)

@@ -1,0 +1,203 @@
+"""Damped Newton with a residual line search, and a continuation driver.
+
+The nonlinear problems of the package (line and point contacts) expose a small
+interface, :class:`NonlinearProblem`; this module knows nothing of the physics.
+
+* Newton step  J dz = -F  (dense LU, sparse LU or a Krylov solver chosen by the problem).
+* Line search: backtracking lam = 1, 1/2, ... on the merit f = |F|^2 / 2 with the
+  Armijo condition f(z + lam dz) <= (1 - 2 c lam) f(z), c = 1e-4, accepting only
+  admissible iterates (positive film, finite values).
+* Status strings follow scipy's contract: ``converged``, ``max_iterations``,
+  ``stalled`` (no admissible decrease along the Newton direction), ``diverged``
+  (non-finite values).
+"""
+from __future__ import annotations
+
+import logging
+import time
+from dataclasses import dataclass, field
+from typing import Callable, Protocol
+
+import numpy as np
+
+log = logging.getLogger(__name__)
+
+
+class NonlinearProblem(Protocol):
+    """What :func:`damped_newton` needs from a discretised problem."""
+
+    def prepare(self, z: np.ndarray) -> None:
+        """Freeze iteration-level scalings at the current iterate."""
+
+    def residual(self, z: np.ndarray) -> np.ndarray:
+        """Scaled residual F(z) (dimensionless)."""
+
+    def newton_step(self, z: np.ndarray, shift: float = 0.0) -> np.ndarray:
+        """Solve (J(z) + shift D) dz = -F(z) and return dz (D: identity on field unknowns)."""
+
+    def admissible(self, z: np.ndarray) -> bool:
+        """True if z is a physically admissible iterate (e.g. positive film)."""
+
+
+@dataclass
+class NewtonOutcome:
+    """Result of :func:`damped_newton` (scaled unknowns)."""
+
+    z: np.ndarray
+    status: str
+    iterations: int
+    residual_norm: float
+    history: list[float] = field(default_factory=list)
+    step_lengths: list[float] = field(default_factory=list)
+    seconds: float = 0.0
+
+    @property
+    def converged(self) -> bool:
+        return self.status == "converged"
+
+
+def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-8,
+                  max_iterations: int = 50, min_step: float = 2.0**-8,
+                  callback: Callable[[int, float], None] | None = None) -> NewtonOutcome:
+    """Damped, diagonally regularised Newton iteration on ``problem`` from ``z0``.
+
+    Each iteration solves (J + sigma D) dz = -F, D = identity on the field unknowns
+    (pseudo-transient / Levenberg-Marquardt regularisation), then backtracks
+    lam = 1, 1/2, ... >= ``min_step`` on the merit |F|^2/2 (Armijo). If no step is
+    accepted, sigma grows (x4, from 1e-3) and the iteration is repeated; after an
+    accepted step sigma shrinks (/4) and is dropped below 1e-8, so the final iterations
+    are plain Newton with quadratic convergence. Far from the solution the
+    regularisation keeps nodes whose linearisation is poor (e.g. where
+    exp(alpha p) varies by orders of magnitude) from derailing the whole step.
+
+    Parameters
+    ----------
+    problem : NonlinearProblem
+    z0 : ndarray
+        Initial (scaled) unknowns; must be admissible.
+    tol : float
+        Convergence when max|F| <= tol.
+    max_iterations : int
+        Cap on linear solves (Newton iterations, accepted or rejected).
+    min_step : float
+        Smallest line-search factor tried before the regularisation is increased.
+
+    Returns
+    -------
+    NewtonOutcome
+        The last admissible iterate is always returned (never NaNs).
+    """
+    t0 = time.perf_counter()
+    z = np.array(z0, dtype=float)
+    problem.prepare(z)
+    f = problem.residual(z)
+    if not np.all(np.isfinite(f)):
+        return NewtonOutcome(z, "diverged", 0, float("inf"), seconds=time.perf_counter() - t0)
+    norm = float(np.max(np.abs(f))) if f.size else 0.0
+    history = [norm]
+    steps: list[float] = []
+    status = "max_iterations"
+    it = 0
+    sigma = 0.0
+    while True:
+        if norm <= tol:
+            status = "converged"
+            break
+        if it >= max_iterations:
+            status = "max_iterations"
+            break
+        if sigma > 1e8:
+            status = "stalled"
+            break
+        it += 1
+        try:
+            dz = problem.newton_step(z, shift=sigma)
+        except (np.linalg.LinAlgError, RuntimeError) as exc:
+            log.debug("linear solve failed: %s", exc)
+            sigma = max(4.0 * sigma, 1e-3)
+            continue
+        if not np.all(np.isfinite(dz)):
+            sigma = max(4.0 * sigma, 1e-3)
+            continue
+        merit = 0.5 * float(f @ f)
+        lam = 1.0
+        accepted = False
+        with np.errstate(all="ignore"):
+            while lam >= min_step:
+                zt = z + lam * dz
+                if problem.admissible(zt):
+                    ft = problem.residual(zt)
+                    if np.all(np.isfinite(ft)) and 0.5 * float(ft @ ft) <= (1 - 2e-4 * lam) * merit:
+                        accepted = True
+                        break
+                lam *= 0.5
+        if not accepted:
+            sigma = max(4.0 * sigma, 1e-3)
+            log.debug("newton %d: step rejected, sigma -> %.2e", it, sigma)
+            continue
+        z, steps = zt, steps + [lam]
+        sigma = sigma / 4.0 if sigma > 1e-8 else 0.0
+        problem.prepare(z)
+        f = problem.residual(z)
+        norm = float(np.max(np.abs(f)))
+        history.append(norm)
+        if callback is not None:
+            callback(it, norm)
+        log.debug("newton %d: |F| = %.3e, step %.3g, sigma %.2e", it, norm, lam, sigma)
+    return NewtonOutcome(z, status, it, norm, history, steps, time.perf_counter() - t0)
+
+
+@dataclass
+class ContinuationOutcome:
+    """Result of :func:`continuation`."""
+
+    z: np.ndarray
+    status: str
+    iterations: int
+    steps: list[tuple[float, str, int]]
+    last: NewtonOutcome
+    parameter: float
+
+
+def continuation(make_problem: Callable[[float], NonlinearProblem], z_start: np.ndarray,
+                 *, s_start: float = 0.0, first_step: float = 0.25, tol: float = 1e-8,
+                 max_iterations: int = 50, max_steps: int = 40,
+                 min_increment: float = 1e-3) -> ContinuationOutcome:
+    """Natural-parameter continuation s: s_start -> 1 with adaptive steps.
+
+    ``make_problem(s)`` returns the problem at parameter s (s = 1 is the target). Each
+    step starts Newton from the last converged solution; a failed step is retried with
+    half the increment, a successful one grows it by 1.5.
+    """
+    z = np.array(z_start, dtype=float)
+    s = s_start
+    ds = first_step
+    total = 0
+    record: list[tuple[float, str, int]] = []
+    last = None
+    # converge at the starting parameter first
+    out = damped_newton(make_problem(s), z, tol=tol, max_iterations=max_iterations)
+    total += out.iterations
+    record.append((s, out.status, out.iterations))
+    last = out
+    if not out.converged:
+        return ContinuationOutcome(out.z, out.status, total, record, out, s)
+    z = out.z
+    for _ in range(max_steps):
+        if s >= 1.0:
+            break
+        s_try = min(1.0, s + ds)
+        out = damped_newton(make_problem(s_try), z, tol=tol, max_iterations=max_iterations)
+        total += out.iterations
+        record.append((s_try, out.status, out.iterations))
+        last = out
+        if out.converged:
+            s, z = s_try, out.z
+            ds *= 1.5
+        else:
+            ds *= 0.5
+            if ds < min_increment:
+                break
+    status = "converged" if s >= 1.0 else (last.status if last and not last.converged
+                                            else "max_iterations")
+    return ContinuationOutcome(z, status, total, record, last, s)

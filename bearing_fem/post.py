@@ -1,0 +1,93 @@
+"""Post-processing: film, pressure, friction and heat power (PHYSICS.md section 6).
+
+Newtonian film between surface 1 (z = 0, speed u1) and surface 2 (z = h, speed u2).
+Surface shear stresses, tractions ON the bodies along +x:
+
+    t_1 = -(h/2) dp/dx + eta (u2 - u1)/h,   t_2 = -(h/2) dp/dx + eta (u1 - u2)/h.
+
+Reported (line contacts per metre of length, point contacts in N and W):
+
+* ``rolling_resistance``  F_P = int (h/2) dp/dx dA   (Poiseuille part, per surface),
+* ``sliding_friction``    F_C = int eta u_s / h dA    (Couette part, u_s = u1 - u2),
+* ``friction_force``      F_P + F_C = -int t_1 dA, the force resisting surface 1's motion
+  along +x (positive in the usual case), ``friction_force_surface2`` = F_P - F_C,
+* ``friction_coefficient`` friction_force / load,
+* ``heat_power``          Q = int [eta u_s^2 / h + h^3/(12 eta) |grad p|^2] dA,
+  split into ``heat_power_couette`` and ``heat_power_poiseuille``.
+
+The integrals run over the full-film region: the whole domain for full-Sommerfeld, and
+upstream of the cavitation (outlet) boundary for Reynolds cavitation, where the film
+ruptures and carries no Couette shear.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .fe import QuadratureOperators
+
+
+def full_film_indicator_line(x_q: np.ndarray, outlet: float | None) -> np.ndarray:
+    """1 upstream of the outlet position [m] (or everywhere if None), else 0."""
+    if outlet is None:
+        return np.ones_like(x_q)
+    return (x_q <= outlet).astype(float)
+
+
+def outlet_position_line(x: np.ndarray, p: np.ndarray, cavitation: str) -> float | None:
+    """First node downstream of the pressure maximum with p <= 0 [m] (None if none)."""
+    if cavitation != "reynolds" or not np.any(p > 0):
+        return None
+    i = int(np.argmax(p))
+    idx = np.nonzero(p[i:] <= 0.0)[0]
+    return float(x[i + idx[0]]) if idx.size else None
+
+
+def film_quantities(x: np.ndarray, p: np.ndarray, h_nodes: np.ndarray,
+                    ops: QuadratureOperators, film_q: np.ndarray) -> dict[str, float]:
+    """h_min, h_central (at x = 0), p_max and load (int p) of a line solution."""
+    return {
+        "h_min": float(np.min(film_q)),
+        "h_central": float(np.interp(0.0, x, h_nodes)),
+        "p_max": float(np.max(p)),
+        "load": float(ops.mass @ p),
+    }
+
+
+def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray, grad_p_q: tuple[np.ndarray, ...],
+                      eta_q: np.ndarray, sliding_speed: float, indicator_q: np.ndarray,
+                      load: float) -> dict[str, float]:
+    """Friction forces and dissipated power from fields at the quadrature points.
+
+    Parameters
+    ----------
+    h_q : film [m]; grad_p_q : pressure gradient components [Pa/m], x first;
+    eta_q : viscosity [Pa s]; sliding_speed : u1 - u2 [m/s];
+    indicator_q : 1 in the full-film region, 0 in the cavitated zone; load : N or N/m.
+    """
+    w = ops.weights * indicator_q
+    px = grad_p_q[0]
+    grad2 = sum(g * g for g in grad_p_q)
+    f_p = float(w @ (0.5 * h_q * px))
+    f_c = float(w @ (eta_q * sliding_speed / h_q))
+    q_c = float(w @ (eta_q * sliding_speed**2 / h_q))
+    q_p = float(w @ (h_q**3 * grad2 / (12.0 * eta_q)))
+    friction = f_p + f_c
+    return {
+        "rolling_resistance": f_p,
+        "sliding_friction": f_c,
+        "friction_force": friction,
+        "friction_force_surface2": f_p - f_c,
+        "friction_coefficient": friction / load if load > 0 else 0.0,
+        "heat_power": q_c + q_p,
+        "heat_power_couette": q_c,
+        "heat_power_poiseuille": q_p,
+    }
+
+
+def energy_identity_line(ops: QuadratureOperators, h_q: np.ndarray, px_q: np.ndarray,
+                         eta_q: np.ndarray, mean_speed: float,
+                         indicator_q: np.ndarray) -> tuple[float, float]:
+    """Both sides of int h^3 p'^2/(12 eta) = u_m int h p' (steady, incompressible, 1D)."""
+    w = ops.weights * indicator_q
+    return (float(w @ (h_q**3 * px_q**2 / (12.0 * eta_q))),
+            float(mean_speed * (w @ (h_q * px_q))))

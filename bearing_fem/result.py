@@ -1,0 +1,133 @@
+"""The result of a solve: scipy-style status plus fields and post-processed numbers."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .errors import SolveError
+
+#: Units of every dimensional summary key (line-contact values are per metre of length;
+#: the scene decides, see :func:`summary_units`).
+_UNITS_POINT = {
+    "h_min": "m", "h_central": "m", "p_max": "Pa", "h0": "m", "load": "N",
+    "friction_force": "N", "friction_force_surface2": "N", "rolling_resistance": "N",
+    "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
+    "heat_power_couette": "W", "heat_power_poiseuille": "W", "outlet_position": "m",
+    "wall_time_s": "s",
+}
+
+
+def summary_units(kind: str) -> dict[str, str]:
+    """Units of the summary keys for a ``"line"`` (per metre) or ``"point"`` contact."""
+    if kind == "point":
+        return dict(_UNITS_POINT)
+    per_m = {"N": "N/m", "W": "W/m"}
+    return {k: per_m.get(u, u) for k, u in _UNITS_POINT.items()}
+
+
+#: Status strings, in the spirit of scipy.optimize.
+SUCCESS_STATUSES = ("converged", "linear")
+
+
+@dataclass
+class Result:
+    """Outcome of :func:`bearing_fem.solve`. Never raises for non-convergence.
+
+    Attributes
+    ----------
+    success : bool
+    status : str
+        ``converged`` (Newton), ``linear`` (solved by linear solves, no Newton),
+        ``no_solution`` (proved not to exist), ``max_iterations``, ``stalled``, ``diverged``.
+    message : str
+        Human-readable, with numbers.
+    scene : Scene
+    x, y : ndarray
+        Node coordinates [m] (``y`` is None for line contacts).
+    pressure : ndarray
+        Nodal pressure [Pa] (the last finite iterate when unsuccessful).
+    film : ndarray
+        Nodal film thickness [m].
+    h0 : float
+        Rigid offset [m].
+    quantities : dict
+        Post-processed numbers (see :meth:`summary`).
+    history : list of float
+        Scaled residual norm after each Newton iteration (all continuation steps).
+    newton_iterations : int
+    wall_time_s : float
+    extra_fields : dict
+        Further nodal fields written to the exports, name -> array (names carry units).
+    """
+
+    success: bool
+    status: str
+    message: str
+    scene: Any
+    x: np.ndarray
+    pressure: np.ndarray
+    film: np.ndarray
+    h0: float
+    y: np.ndarray | None = None
+    quantities: dict[str, float] = field(default_factory=dict)
+    history: list[float] = field(default_factory=list)
+    newton_iterations: int = 0
+    linear_solves: int = 0
+    wall_time_s: float = 0.0
+    continuation: list[tuple[float, str, int]] = field(default_factory=list)
+    extra_fields: dict[str, np.ndarray] = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        return (f"Result(message={self.message!r}, success={self.success}, "
+                f"status={self.status!r}, pressure=<array {self.pressure.shape}>, "
+                f"film=<array {self.film.shape}>, newton_iterations={self.newton_iterations})")
+
+    @property
+    def dofs(self) -> int:
+        return int(self.pressure.size)
+
+    def raise_for_status(self) -> "Result":
+        """Raise :class:`~bearing_fem.errors.SolveError` unless the solve succeeded."""
+        if not self.success:
+            raise SolveError(f"{self.status}: {self.message}")
+        return self
+
+    def summary(self) -> dict[str, Any]:
+        """Flat dict with the keys of INTERFACE.md section 3 (SI units)."""
+        from . import __version__
+
+        kind = self.scene.contact.kind
+        out: dict[str, Any] = {
+            "status": self.status,
+            "success": bool(self.success),
+            "message": self.message,
+        }
+        out.update({k: float(v) for k, v in self.quantities.items()})
+        out["h0"] = float(self.h0)
+        out["newton_iterations"] = int(self.newton_iterations)
+        out["linear_solves"] = int(self.linear_solves)
+        out["wall_time_s"] = float(self.wall_time_s)
+        out["dofs"] = self.dofs
+        out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
+        out["dimensionless"] = dimensionless_groups(self.scene)
+        out["version"] = __version__
+        out["scene"] = self.scene.to_dict()
+        return out
+
+
+def dimensionless_groups(scene) -> dict[str, float]:
+    """Moes/Hamrock groups of a loaded elastic scene (empty where not defined)."""
+    from . import units
+
+    if scene.load.force is None or scene.e_prime is None:
+        return {}
+    lub, kin = scene.lubricant, scene.kinematics
+    if scene.contact.kind == "line":
+        g = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
+                            lub.viscosity, kin.mean_speed, lub.effective_piezo)
+    else:
+        g = units.moes_point(scene.load.force, scene.contact.rx, scene.contact.ry,
+                             scene.e_prime, lub.viscosity, kin.mean_speed, lub.effective_piezo)
+    return {k: float(g[k]) for k in ("M", "L", "W", "U", "G") if k in g}

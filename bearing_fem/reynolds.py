@@ -1,0 +1,158 @@
+"""The Reynolds equation in flux form, pointwise, with streamline-upwind stabilisation.
+
+Strong form (PHYSICS.md section 2, steady, u_m along +x):
+
+    div( eps grad p ) = u_m d(rho h)/dx,      eps = rho h^3 / (12 eta)
+
+Weak (flux) form used by the finite elements, for every test function v vanishing on
+Dirichlet boundaries:
+
+    R(v) = int F . grad v = 0,   F = eps grad p - u_m rho h e_x  +  SUPG
+
+Symbols: p pressure [Pa], h film [m], eta viscosity [Pa s], rho relative density [-],
+u_m mean speed [m/s], eps flow coefficient [m^3/(Pa s)], F flux [m^2/s].
+
+Stabilisation (streamline-upwind Petrov-Galerkin, as used for EHL by Habchi et al.):
+where eta is huge the equation degenerates to pure advection d(rho h)/dx = 0 and the
+Galerkin method oscillates. The test function v is replaced by v + tau beta dv/dx with
+an effective advection speed beta = u_m rho c, c being the local compliance dh/dp
+[m/Pa] of the elastic model, and the classical optimal tau:
+
+    Pe = beta dx / (2 eps),   tau beta = (dx/2) (coth Pe - 1/Pe).
+
+It multiplies the element-wise strong residual S = -d(eps)/dx dp/dx + u_m d(rho h)/dx
+(P1: no second derivatives), so it vanishes for the exact solution (consistent) and
+fades out where the Poiseuille term dominates (Pe -> 0). Rigid scenes have no
+advection of pressure (h does not depend on p) and use no stabilisation.
+
+The pointwise flux is a plain numpy function of (p, h, grad p, grad h); its
+partial derivatives, needed by Newton, are taken by the complex-step method (exact to
+rounding), so any analytic viscosity or density law can be plugged in.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from .rheology import density_function, viscosity_function
+
+_STEP = 1e-20  # complex-step size relative to the largest magnitude of the variable
+
+
+@dataclass(frozen=True)
+class FluxModel:
+    """Pointwise Reynolds flux of one scene.
+
+    Parameters
+    ----------
+    viscosity : callable p -> eta [Pa s]
+    density : callable p -> rho/rho0 [-]
+    mean_speed : float
+        u_m [m/s].
+    compliance : float
+        Effective local compliance c = dh/dp [m/Pa] used by the stabilisation;
+        0 disables it (rigid scenes).
+    """
+
+    viscosity: Callable[[np.ndarray], np.ndarray]
+    density: Callable[[np.ndarray], np.ndarray]
+    mean_speed: float
+    compliance: float = 0.0
+    log_viscosity_slope: float = 0.0  # alpha [1/Pa]: d ln(eta)/dp at p = 0 (step control)
+
+    @classmethod
+    def from_lubricant(cls, lubricant, mean_speed: float, compliance: float = 0.0,
+                       piezo_scale: float = 1.0) -> "FluxModel":
+        """Build from a :class:`~bearing_fem.scene.Lubricant`; ``piezo_scale`` multiplies
+        alpha (continuation parameter)."""
+        eta = viscosity_function(lubricant.viscosity_law, lubricant.viscosity,
+                                 lubricant.effective_piezo * piezo_scale)
+        return cls(viscosity=eta, density=density_function(lubricant.density),
+                   mean_speed=mean_speed, compliance=compliance,
+                   log_viscosity_slope=lubricant.effective_piezo * piezo_scale)
+
+    def coefficient(self, p: np.ndarray, h: np.ndarray) -> np.ndarray:
+        """eps = rho h^3 / (12 eta) [m^3/(Pa s)]."""
+        return self.density(p) * h**3 / (12.0 * self.viscosity(p))
+
+    def flux(self, p, h, gp, gh, dx):
+        """Flux F at quadrature points [m^2/s].
+
+        Parameters
+        ----------
+        p, h : arrays
+            Pressure [Pa] and film [m] at the quadrature points.
+        gp, gh : tuple of arrays
+            Gradients of p [Pa/m] and h [-] (one entry per space dimension, x first).
+        dx : array
+            Element size along x [m] (stabilisation only).
+
+        Returns
+        -------
+        tuple of arrays, one flux component per dimension.
+        """
+        rho = self.density(p)
+        eps = rho * h**3 / (12.0 * self.viscosity(p))
+        out = [eps * g for g in gp]
+        out[0] = out[0] - self.mean_speed * rho * h
+        if self.compliance > 0.0:
+            dlnrho, dlneta = self._log_slopes(p)
+            # strong residual of the P1 element: -grad(eps).grad(p) + u_m d(rho h)/dx
+            strong = self.mean_speed * rho * (dlnrho * gp[0] * h + gh[0])
+            for a, b in zip(gp, gh):
+                strong = strong - eps * ((dlnrho - dlneta) * a + 3.0 * b / h) * a
+            pe = self.mean_speed * rho * self.compliance * dx / (2.0 * eps)
+            out[0] = out[0] + 0.5 * dx * _coth_minus_inverse(pe) * strong
+        return tuple(out)
+
+    def _log_slopes(self, p):
+        """d ln(rho)/dp and d ln(eta)/dp [1/Pa] by a central difference on the laws.
+
+        Used only inside the stabilisation term; the complex-step derivative of the whole
+        flux still differentiates it consistently.
+        """
+        dp = 1e3  # Pa; every law here is smooth on this scale
+        lr = (np.log(self.density(p + dp)) - np.log(self.density(p - dp))) / (2 * dp)
+        le = (np.log(self.viscosity(p + dp)) - np.log(self.viscosity(p - dp))) / (2 * dp)
+        return lr, le
+
+    def flux_and_derivatives(self, p, h, gp, gh, dx):
+        """Flux and its exact partial derivatives (complex step) at each quadrature point.
+
+        Returns
+        -------
+        F : tuple of arrays (one per dimension)
+        dF_dp, dF_dh : tuple of arrays (one per flux component)
+        dF_dgp, dF_dgh : list over gradient components k of tuples over flux components
+        """
+        base = self.flux(p, h, gp, gh, dx)
+
+        def deriv(which: str, k: int = 0):
+            args = {"p": p, "h": h, "gp": list(gp), "gh": list(gh)}
+            v = args[which] if which in ("p", "h") else args[which][k]
+            vmax = float(np.max(np.abs(v))) if np.size(v) else 0.0
+            step = _STEP * (vmax if vmax > 0.0 else 1.0)
+            if which in ("p", "h"):
+                args[which] = v + 1j * step
+            else:
+                args[which][k] = v + 1j * step
+            out = self.flux(args["p"], args["h"], tuple(args["gp"]), tuple(args["gh"]), dx)
+            return tuple(np.imag(f) / step for f in out)
+
+        dim = len(gp)
+        return (base, deriv("p"), deriv("h"),
+                [deriv("gp", k) for k in range(dim)], [deriv("gh", k) for k in range(dim)])
+
+
+def _coth_minus_inverse(pe):
+    """xi(Pe) = coth(Pe) - 1/Pe, stable for small and huge Pe (real or complex-step input)."""
+    pe_r = np.real(pe)
+    small = np.abs(pe_r) < 1e-2
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        big = np.where(small, 1.0, pe)
+        clipped = np.where(np.abs(pe_r) > 40.0, 40.0 * np.sign(pe_r), big)  # coth = 1 there
+        val = 1.0 / np.tanh(clipped) - 1.0 / big
+    series = pe / 3.0 - pe**3 / 45.0
+    return np.where(small, series, val)

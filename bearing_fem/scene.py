@@ -1,0 +1,495 @@
+"""Scenes: frozen, keyword-only, SI dataclasses, validated when built.
+
+A scene is everything a solve needs: contact geometry, materials, lubricant,
+kinematics, load (or prescribed gap), model options, mesh and solver settings.
+Build one from a TOML file (:meth:`Scene.from_toml`), from a dict
+(:meth:`Scene.from_dict`) or directly from the dataclasses; change one by copy
+(``dataclasses.replace``). Every invalid value raises :class:`~bearing_fem.errors.SceneError`
+naming the field, the value and the unit. The keys are documented in ``docs/scenes.md``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import MISSING, dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any, Literal, Mapping
+
+from .errors import SceneError
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover
+    import tomli as tomllib  # type: ignore[no-redef]
+
+
+# ---------------------------------------------------------------------------------------
+# validation helpers
+# ---------------------------------------------------------------------------------------
+def _number(obj: Any, name: str, unit: str) -> float:
+    value = getattr(obj, name)
+    section = getattr(obj, "_section", type(obj).__name__.lower())
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SceneError(f"{section}.{name} must be a number in {unit}, got {value!r} "
+                         f"({type(value).__name__})")
+    value = float(value)
+    if not math.isfinite(value):
+        raise SceneError(f"{section}.{name} must be finite ({unit}), got {value!r}")
+    object.__setattr__(obj, name, value)
+    return value
+
+
+def _positive(obj: Any, name: str, unit: str) -> float:
+    value = _number(obj, name, unit)
+    if value <= 0.0:
+        section = getattr(obj, "_section")
+        raise SceneError(f"{section}.{name} must be > 0 {unit}, got {value!r}")
+    return value
+
+
+def _nonneg(obj: Any, name: str, unit: str) -> float:
+    value = _number(obj, name, unit)
+    if value < 0.0:
+        section = getattr(obj, "_section")
+        raise SceneError(f"{section}.{name} must be >= 0 {unit}, got {value!r}")
+    return value
+
+
+def _choice(obj: Any, name: str, allowed: tuple[str, ...]) -> str:
+    value = getattr(obj, name)
+    section = getattr(obj, "_section")
+    if not isinstance(value, str) or value not in allowed:
+        raise SceneError(f"{section}.{name} must be one of {', '.join(map(repr, allowed))}, "
+                         f"got {value!r}")
+    return value
+
+
+# ---------------------------------------------------------------------------------------
+# sections
+# ---------------------------------------------------------------------------------------
+@dataclass(frozen=True, kw_only=True)
+class Contact:
+    """Contact geometry.
+
+    Parameters
+    ----------
+    kind : {"line", "point"}
+        Line contact (roller, per metre of length) or point/elliptical contact (ball).
+    rx : float
+        Reduced radius in the rolling direction x [m] (1/rx = 1/r1x + 1/r2x).
+    ry : float or None
+        Reduced radius across the rolling direction [m]; point contacts only
+        (``inf`` is allowed and means a line-like ellipse).
+    length : float or None
+        Effective contact length [m]; line contacts only, used for totals.
+    """
+
+    _section = "contact"
+    kind: Literal["line", "point"] = "line"
+    rx: float
+    ry: float | None = None
+    length: float | None = None
+
+    def __post_init__(self) -> None:
+        _choice(self, "kind", ("line", "point"))
+        _positive(self, "rx", "m")
+        if self.kind == "point":
+            if self.ry is None:
+                raise SceneError("contact.ry is required for a point contact (m)")
+            _positive(self, "ry", "m")
+            if self.length is not None:
+                raise SceneError(f"contact.length applies to line contacts only, got "
+                                 f"{self.length!r} m for a point contact")
+        else:
+            if self.ry is not None:
+                raise SceneError(f"contact.ry applies to point contacts only, got {self.ry!r} m "
+                                 "for a line contact")
+            if self.length is not None:
+                _positive(self, "length", "m")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Materials:
+    """Elastic bodies: both Young's moduli and Poisson ratios, or E' directly.
+
+    Parameters
+    ----------
+    e1, e2 : float
+        Young's moduli [Pa].
+    nu1, nu2 : float
+        Poisson ratios [-], in (-1, 0.5].
+    reduced_modulus : float or None
+        E' = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) [Pa]; give this *instead of* the four above.
+    """
+
+    _section = "materials"
+    e1: float | None = None
+    nu1: float | None = None
+    e2: float | None = None
+    nu2: float | None = None
+    reduced_modulus: float | None = None
+
+    def __post_init__(self) -> None:
+        pair = [self.e1, self.nu1, self.e2, self.nu2]
+        if self.reduced_modulus is not None:
+            if any(v is not None for v in pair):
+                raise SceneError("materials: give either reduced_modulus (Pa) or e1, nu1, e2, "
+                                 "nu2, not both")
+            _positive(self, "reduced_modulus", "Pa")
+            return
+        for name in ("e1", "nu1", "e2", "nu2"):
+            if getattr(self, name) is None:
+                raise SceneError(f"materials.{name} is required (or give materials."
+                                 "reduced_modulus in Pa)")
+        for name in ("e1", "e2"):
+            _positive(self, name, "Pa")
+        for name in ("nu1", "nu2"):
+            v = _number(self, name, "(dimensionless)")
+            if not -1.0 < v <= 0.5:
+                raise SceneError(f"materials.{name} must lie in (-1, 0.5] (dimensionless), got {v!r}")
+
+    @property
+    def e_prime(self) -> float:
+        """Reduced modulus E' [Pa] (Hamrock convention, PHYSICS.md section 1)."""
+        if self.reduced_modulus is not None:
+            return float(self.reduced_modulus)
+        return 2.0 / ((1 - self.nu1**2) / self.e1 + (1 - self.nu2**2) / self.e2)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Lubricant:
+    """Newtonian lubricant.
+
+    Parameters
+    ----------
+    viscosity : float
+        eta0, viscosity at ambient pressure [Pa s]. No default.
+    piezo : float
+        Barus pressure-viscosity coefficient alpha [1/Pa] (Roelands uses it for its slope).
+    viscosity_law : {"barus", "roelands", "constant"}
+    density : {"incompressible", "dowson-higginson"}
+    """
+
+    _section = "lubricant"
+    viscosity: float
+    piezo: float = 0.0
+    viscosity_law: Literal["barus", "roelands", "constant"] = "barus"
+    density: Literal["incompressible", "dowson-higginson"] = "incompressible"
+
+    def __post_init__(self) -> None:
+        _positive(self, "viscosity", "Pa s")
+        _nonneg(self, "piezo", "1/Pa")
+        if self.piezo > 1e-6:
+            raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils 1e-8..3e-8), "
+                             f"got {self.piezo!r}")
+        _choice(self, "viscosity_law", ("barus", "roelands", "constant"))
+        _choice(self, "density", ("incompressible", "dowson-higginson"))
+        if self.viscosity_law == "roelands" and self.viscosity > 1e4:
+            raise SceneError(f"lubricant.viscosity = {self.viscosity!r} Pa s is outside the "
+                             "Roelands law's range (ln eta0 + 9.67 must stay positive and sane)")
+
+    @property
+    def effective_piezo(self) -> float:
+        """alpha actually used by the law [1/Pa] (0 for ``constant``)."""
+        return 0.0 if self.viscosity_law == "constant" else float(self.piezo)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Kinematics:
+    """Surface speeds along +x [m/s]. The mean (entrainment) speed must be > 0."""
+
+    _section = "kinematics"
+    u1: float
+    u2: float
+
+    def __post_init__(self) -> None:
+        _number(self, "u1", "m/s")
+        _number(self, "u2", "m/s")
+        if self.mean_speed <= 0.0:
+            raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 must be > 0 m/s "
+                             f"(inlet at x < 0), got u1={self.u1!r}, u2={self.u2!r}")
+
+    @property
+    def mean_speed(self) -> float:
+        """u_m = (u1 + u2)/2 [m/s]."""
+        return 0.5 * (self.u1 + self.u2)
+
+    @property
+    def sliding_speed(self) -> float:
+        """u_s = u1 - u2 [m/s]."""
+        return self.u1 - self.u2
+
+    @property
+    def slide_to_roll(self) -> float:
+        """SRR = u_s / u_m [-]."""
+        return self.sliding_speed / self.mean_speed
+
+
+@dataclass(frozen=True, kw_only=True)
+class Load:
+    """Either the load (``force``) or the rigid offset (``gap``), not both.
+
+    Parameters
+    ----------
+    force : float or None
+        N for a point contact, N per metre of length for a line contact.
+    gap : float or None
+        Prescribed rigid offset h0 [m] (no load balance).
+    """
+
+    _section = "load"
+    force: float | None = None
+    gap: float | None = None
+
+    def __post_init__(self) -> None:
+        if (self.force is None) == (self.gap is None):
+            raise SceneError("load: give exactly one of load.force (N or N/m) and load.gap (m), "
+                             f"got force={self.force!r}, gap={self.gap!r}")
+        if self.force is not None:
+            _positive(self, "force", "N (point) or N/m (line)")
+        else:
+            _positive(self, "gap", "m")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Model:
+    """Physics options.
+
+    Parameters
+    ----------
+    elasticity : {"half-space", "local", "rigid"}
+    cavitation : {"reynolds", "none"}
+        ``reynolds``: p >= 0 with the complementarity condition; ``none``: full-Sommerfeld.
+    thermal : {"none", "patch"}
+    """
+
+    _section = "model"
+    elasticity: Literal["half-space", "local", "rigid"] = "half-space"
+    cavitation: Literal["reynolds", "none"] = "reynolds"
+    thermal: Literal["none", "patch"] = "none"
+
+    def __post_init__(self) -> None:
+        _choice(self, "elasticity", ("half-space", "local", "rigid"))
+        _choice(self, "cavitation", ("reynolds", "none"))
+        _choice(self, "thermal", ("none", "patch"))
+
+
+@dataclass(frozen=True, kw_only=True)
+class MeshSpec:
+    """Mesh options; every field optional (defaults come from the scene, see docs/scenes.md).
+
+    Parameters
+    ----------
+    nodes : int or (int, int) or None
+        Node count (line) or (nx, ny) (point).
+    x_range, y_range : (float, float) or None
+        Domain in units of the Hertz half-width (elastic scenes) or of sqrt(2 rx h0)
+        (rigid scenes) [-].
+    """
+
+    _section = "mesh"
+    nodes: int | tuple[int, int] | None = None
+    x_range: tuple[float, float] | None = None
+    y_range: tuple[float, float] | None = None
+
+    def __post_init__(self) -> None:
+        n = self.nodes
+        if n is not None:
+            items = [n] if not isinstance(n, (list, tuple)) else list(n)
+            if len(items) not in (1, 2) or any(isinstance(v, bool) or not isinstance(v, int)
+                                                for v in items):
+                raise SceneError(f"mesh.nodes must be an integer (line) or two integers "
+                                 f"(point), got {n!r}")
+            if any(v < 9 or v > 20001 for v in items):
+                raise SceneError(f"mesh.nodes must lie in [9, 20001] per direction, got {n!r}")
+            object.__setattr__(self, "nodes", items[0] if len(items) == 1 and not
+                               isinstance(n, (list, tuple)) else tuple(items))
+        for name in ("x_range", "y_range"):
+            r = getattr(self, name)
+            if r is None:
+                continue
+            if (not isinstance(r, (list, tuple)) or len(r) != 2
+                    or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
+                raise SceneError(f"mesh.{name} must be two numbers [start, end] (in Hertz "
+                                 f"half-widths), got {r!r}")
+            lo, hi = float(r[0]), float(r[1])
+            if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
+                raise SceneError(f"mesh.{name} must satisfy start < 0 < end (in Hertz "
+                                 f"half-widths), got {r!r}")
+            object.__setattr__(self, name, (lo, hi))
+
+
+@dataclass(frozen=True, kw_only=True)
+class SolverSpec:
+    """Nonlinear-solver settings.
+
+    Parameters
+    ----------
+    tolerance : float
+        Convergence tolerance on the scaled residual (infinity norm) [-].
+    max_iterations : int
+        Newton iterations allowed per continuation step.
+    continuation : bool
+        Fall back to continuation in the pressure-viscosity coefficient when a direct
+        attempt stalls.
+    """
+
+    _section = "solver"
+    tolerance: float = 1e-8
+    max_iterations: int = 50
+    continuation: bool = True
+
+    def __post_init__(self) -> None:
+        _positive(self, "tolerance", "(dimensionless)")
+        if self.tolerance >= 1e-1:
+            raise SceneError(f"solver.tolerance must be < 0.1 (dimensionless), got {self.tolerance!r}")
+        m = self.max_iterations
+        if isinstance(m, bool) or not isinstance(m, int) or not 1 <= m <= 10000:
+            raise SceneError(f"solver.max_iterations must be an integer in [1, 10000], got {m!r}")
+        if not isinstance(self.continuation, bool):
+            raise SceneError(f"solver.continuation must be true or false, got {self.continuation!r}")
+
+
+_SECTIONS: dict[str, type] = {
+    "contact": Contact,
+    "materials": Materials,
+    "lubricant": Lubricant,
+    "kinematics": Kinematics,
+    "load": Load,
+    "model": Model,
+    "mesh": MeshSpec,
+    "solver": SolverSpec,
+}
+_REQUIRED = ("contact", "lubricant", "kinematics", "load")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Scene:
+    """A complete, validated contact scene (SI units). See ``docs/scenes.md``."""
+
+    title: str = ""
+    contact: Contact
+    materials: Materials | None = None
+    lubricant: Lubricant
+    kinematics: Kinematics
+    load: Load
+    model: Model = field(default_factory=Model)
+    mesh: MeshSpec = field(default_factory=MeshSpec)
+    solver: SolverSpec = field(default_factory=SolverSpec)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.title, str):
+            raise SceneError(f"title must be a string, got {self.title!r}")
+        if self.model.elasticity != "rigid" and self.materials is None:
+            raise SceneError(f"materials are required for model.elasticity = "
+                             f"{self.model.elasticity!r} (give e1, nu1, e2, nu2 in Pa, or "
+                             "reduced_modulus in Pa)")
+        if self.model.elasticity == "local" and self.load.force is None:
+            raise SceneError("model.elasticity = 'local' (Kodnir) needs load.force (N/m): its "
+                             "compliance A'/E depends on the load")
+        if self.model.elasticity == "local" and self.contact.kind != "line":
+            raise SceneError("model.elasticity = 'local' is defined for line contacts only, got "
+                             f"contact.kind = {self.contact.kind!r}")
+        nodes = self.mesh.nodes
+        if nodes is not None:
+            want_two = self.contact.kind == "point"
+            if want_two != isinstance(nodes, tuple) or (want_two and len(nodes) != 2):
+                raise SceneError(f"mesh.nodes must be {'[nx, ny]' if want_two else 'one integer'} "
+                                 f"for a {self.contact.kind} contact, got {list(nodes) if isinstance(nodes, tuple) else nodes!r}")
+        if self.mesh.y_range is not None and self.contact.kind == "line":
+            raise SceneError("mesh.y_range applies to point contacts only")
+
+    # ------------------------------------------------------------------------------
+    @property
+    def e_prime(self) -> float | None:
+        """Reduced modulus E' [Pa], or None for a rigid scene without materials."""
+        return None if self.materials is None else self.materials.e_prime
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> "Scene":
+        """Build a scene from a nested mapping with the TOML layout (docs/scenes.md)."""
+        if not isinstance(data, Mapping):
+            raise SceneError(f"a scene must be a table of sections, got {type(data).__name__}")
+        known = ("title",) + tuple(_SECTIONS)
+        unknown = [k for k in data if k not in known]
+        if unknown:
+            raise SceneError(f"unknown scene section(s) {', '.join(map(repr, unknown))}; "
+                             f"known: {', '.join(known)}")
+        for name in _REQUIRED:
+            if name not in data:
+                raise SceneError(f"missing scene section [{name}]")
+        kwargs: dict[str, Any] = {}
+        if "title" in data:
+            kwargs["title"] = data["title"]
+        for name, klass in _SECTIONS.items():
+            if name not in data:
+                continue
+            section = data[name]
+            if not isinstance(section, Mapping):
+                raise SceneError(f"[{name}] must be a table, got {section!r}")
+            names = [f.name for f in fields(klass) if not f.name.startswith("_")]
+            bad = [k for k in section if k not in names]
+            if bad:
+                raise SceneError(f"unknown key(s) {', '.join(f'{name}.{k}' for k in bad)}; "
+                                 f"known keys of [{name}]: {', '.join(names)}")
+            required = [f.name for f in fields(klass) if not f.name.startswith("_")
+                        and f.default is MISSING and f.default_factory is MISSING]
+            missing = [k for k in required if k not in section]
+            if missing:
+                raise SceneError(f"missing key(s) {', '.join(f'{name}.{k}' for k in missing)}")
+            kwargs[name] = klass(**dict(section))
+        return cls(**kwargs)
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> "Scene":
+        """Read and validate a TOML scene file."""
+        path = Path(path)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise SceneError(f"cannot read scene file {str(path)!r}: {exc.strerror}") from None
+        return cls.from_toml_string(text, source=str(path))
+
+    @classmethod
+    def from_toml_string(cls, text: str, source: str = "<string>") -> "Scene":
+        """Parse and validate a scene given as TOML text."""
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise SceneError(f"{source} is not valid TOML: {exc}") from None
+        return cls.from_dict(data)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Nested dict with the TOML layout (None entries omitted); round-trips via from_dict."""
+        out: dict[str, Any] = {}
+        if self.title:
+            out["title"] = self.title
+        for name in _SECTIONS:
+            section = getattr(self, name)
+            if section is None:
+                continue
+            entries = {}
+            for f in fields(section):
+                if f.name.startswith("_"):
+                    continue
+                v = getattr(section, f.name)
+                if v is None:
+                    continue
+                entries[f.name] = list(v) if isinstance(v, tuple) else v
+            out[name] = entries
+        return out
+
+    def replace(self, **sections: Any) -> "Scene":
+        """Copy with whole sections replaced (``dataclasses.replace``)."""
+        return replace(self, **sections)
+
+
+def load_embedded(name: str) -> Scene:
+    """Load one of the example scenes shipped in ``bearing_fem/scenes/`` (e.g. ``"roller"``)."""
+    from importlib import resources
+
+    files = resources.files("bearing_fem") / "scenes"
+    available = sorted(p.name[:-5] for p in files.iterdir() if p.name.endswith(".toml"))
+    if name not in available:
+        raise SceneError(f"unknown embedded scene {name!r}; available: {', '.join(available)}")
+    return Scene.from_toml_string((files / f"{name}.toml").read_text(encoding="utf-8"),
+                                  source=f"embedded scene {name!r}")

@@ -1,0 +1,331 @@
+"""``solve(scene)``: pick the cheapest correct path for a scene and run it.
+
+Paths (a scene pays only for what it needs):
+
+* rigid, incompressible, constant or Barus viscosity, prescribed gap: **linear**.
+  Kapitsa's transform q = (1 - exp(-alpha p))/alpha turns the Reynolds equation into
+  the isoviscous one, solved by one sparse linear solve (full-Sommerfeld) or by a
+  primal-dual active-set sequence of linear solves (Reynolds cavitation, an obstacle
+  problem); then p = -ln(1 - alpha q)/alpha, which exists only while alpha max q < 1
+  (PHYSICS.md 5.1): otherwise the status is ``no_solution``.
+* everything else: **damped Newton** on (p, h0) (:mod:`bearing_fem.line`), from a
+  Hertzian (elastic) or rigid (linear) initial guess, with automatic continuation in the
+  pressure-viscosity coefficient when the direct attempt does not converge.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from .errors import SceneError
+from .line import LineDiscretisation, LineProblem
+from .newton import continuation, damped_newton
+from .result import Result
+from .reynolds import FluxModel
+from .scene import Scene
+
+log = logging.getLogger(__name__)
+
+#: h*/h0 of Martin's rigid isoviscous cylinder (sec^2 of the outlet angle, ~1.2255);
+#: used only to estimate a starting offset for rigid loaded scenes, never as an oracle.
+_MARTIN_HSTAR_APPROX = 1.2255
+#: Default grid density of elastic line contacts: nodes per Hertz half-width.
+NODES_PER_HALF_WIDTH = 300
+#: Cap on default elastic line grids (dense compliance: memory and LU time grow as N^2, N^3).
+MAX_DEFAULT_ELASTIC_NODES = 4001
+#: Default rigid-scene grid: nodes per sqrt(2 R h0).
+NODES_PER_RIGID_LENGTH = 40
+
+
+def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None) -> Result:
+    """Solve a contact scene.
+
+    Parameters
+    ----------
+    scene : Scene
+    boundary_pressure : (float, float), optional
+        Dirichlet pressures at the inlet and outlet ends of a line domain [Pa]
+        (default 0, 0). Used by the analytic-oracle tests to impose exact data.
+
+    Returns
+    -------
+    Result
+        Never raises for non-convergence or non-existence: see ``result.status``.
+    """
+    if not isinstance(scene, Scene):
+        raise SceneError(f"solve() needs a Scene, got {type(scene).__name__}")
+    if scene.model.thermal == "patch":
+        from .coupling import solve_thermal  # only thermal scenes import the patch
+
+        return solve_thermal(scene)
+    if scene.contact.kind == "point":
+        from .point import solve_point
+
+        return solve_point(scene)
+    return solve_line(scene, boundary_pressure=boundary_pressure)
+
+
+# ---------------------------------------------------------------------------------------
+@dataclass
+class LineSetup:
+    """Scales, grid and operators of a line scene (internal)."""
+
+    disc: LineDiscretisation
+    compliance: object
+    p_ref: float
+    h_ref: float
+    x_unit: float
+    h_estimate: float
+    stab_compliance: float
+
+
+def _kodnir_coefficient(scene: Scene) -> float:
+    from .elasticity import kodnir_local_coefficient
+
+    # Kodnir's 1.52 contains nu = 0.3 for two equal bodies: E = E' (1 - 0.3^2).
+    e = scene.e_prime * (1.0 - 0.3**2)
+    return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
+
+
+def line_setup(scene: Scene) -> LineSetup:
+    """Reference scales, default mesh and compliance operator of a line scene."""
+    from . import elasticity, units
+    from .formulas import line_central_film_moes
+
+    R = scene.contact.rx
+    lub, kin, model = scene.lubricant, scene.kinematics, scene.model
+    u_m = kin.mean_speed
+    elastic = model.elasticity != "rigid"
+    if scene.load.force is not None and elastic:
+        w = scene.load.force
+        b, p_h = units.hertz_line(w, R, scene.e_prime)
+        h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity, u_m,
+                                       lub.effective_piezo)
+        x_unit, p_ref, h_ref = b, p_h, h_est
+        # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
+        inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
+        x_range = scene.mesh.x_range or (-inlet, 1.5)
+        density = NODES_PER_HALF_WIDTH
+    else:
+        if scene.load.gap is not None:
+            h0 = scene.load.gap
+        else:  # rigid under load: Martin's isoviscous estimate of the offset
+            h0 = 6 * lub.viscosity * u_m * R / (_MARTIN_HSTAR_APPROX * scene.load.force)
+        x_unit = math.sqrt(2 * R * h0)
+        h_est, h_ref = h0, h0
+        p_ref = lub.viscosity * u_m * x_unit / h0**2
+        if model.cavitation == "none":
+            x_range = scene.mesh.x_range or (-100.0, 100.0)
+        else:
+            x_range = scene.mesh.x_range or (-100.0, 5.0)
+        density = NODES_PER_RIGID_LENGTH
+    width = x_range[1] - x_range[0]
+    cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
+    nodes = scene.mesh.nodes or int(min(max(width * density, 801), cap)) | 1
+    disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
+    if model.elasticity == "rigid":
+        comp = elasticity.RigidCompliance()
+        c_stab = 0.0
+    elif model.elasticity == "local":
+        coef = _kodnir_coefficient(scene)
+        comp = elasticity.LocalCompliance(coef)
+        c_stab = coef
+    else:
+        comp = elasticity.HalfSpaceLine(disc.x, scene.e_prime, method="dense")
+        # effective compliance of a pressure change spread over the contact width
+        c_stab = 4.0 * x_unit / (math.pi * scene.e_prime)
+    return LineSetup(disc, comp, p_ref, h_ref, x_unit, h_est, c_stab)
+
+
+def _is_linear(scene: Scene) -> bool:
+    m, lub = scene.model, scene.lubricant
+    return (m.elasticity == "rigid" and lub.density == "incompressible"
+            and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
+
+
+def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None) -> Result:
+    """Line-contact solve (see module docstring)."""
+    t0 = time.perf_counter()
+    setup = line_setup(scene)
+    bp = (0.0, 0.0) if boundary_pressure is None else tuple(map(float, boundary_pressure))
+    if _is_linear(scene):
+        return _solve_line_linear(scene, setup, bp, t0)
+    return _solve_line_newton(scene, setup, bp, t0)
+
+
+def _make_problem(scene: Scene, setup: LineSetup, bp, piezo_scale: float = 1.0) -> LineProblem:
+    flux = FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
+                                    compliance=setup.stab_compliance, piezo_scale=piezo_scale)
+    return LineProblem(setup.disc, flux, scene.contact.rx, setup.compliance,
+                       scene.model.cavitation, scene.load.force, scene.load.gap,
+                       setup.p_ref, setup.h_ref, scene.lubricant.viscosity, bp)
+
+
+# ---------------------------------------------------------------------------------------
+def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
+                             mean_speed: float, eta0: float, cavitation: str):
+    """Solve the rigid isoviscous Reynolds problem for the reduced pressure q [Pa].
+
+    One sparse solve for full-Sommerfeld; a primal-dual active-set sequence of sparse
+    solves for Reynolds cavitation (q >= 0, A q - f >= 0, q (A q - f) = 0).
+
+    Returns
+    -------
+    q : ndarray (nodal, Pa), linear_solves : int
+    """
+    ops = problem.disc.ops
+    h = h0 + problem.g_q
+    a = ops.flux_jacobian(0, np.zeros_like(h), (h**3 / (12.0 * eta0),)).tocsr()
+    f = ops.weak_divergence(mean_speed * h)
+    n = q_bc.size
+    free = problem.free
+    q = q_bc.copy()
+    rhs = f - a @ q_bc
+    active = np.zeros(n, dtype=bool)
+    solves = 0
+    diag = a.diagonal()
+    for _ in range(200):
+        inactive = free[~active[free]]
+        q = q_bc.copy()
+        q[active] = 0.0
+        if inactive.size:
+            q[inactive] = spla.spsolve(a[inactive][:, inactive].tocsc(), rhs[inactive])
+        solves += 1
+        if cavitation != "reynolds":
+            break
+        lam = a @ q - f
+        new_active = np.zeros(n, dtype=bool)
+        new_active[free] = (lam[free] / diag[free] > q[free])
+        if np.array_equal(new_active, active):
+            break
+        active = new_active
+    return q, solves
+
+
+def _solve_line_linear(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
+    from .analytic import barus_from_reduced, reduced_from_barus
+
+    lub = scene.lubricant
+    alpha = lub.effective_piezo
+    problem = _make_problem(scene, setup, bp)
+    h0 = scene.load.gap
+    q_bc = np.zeros(setup.disc.x.size)
+    q_bc[0], q_bc[-1] = (reduced_from_barus(np.array(bp), alpha) if alpha > 0 else bp)
+    q, solves = reduced_isoviscous_solve(problem, h0, q_bc, scene.kinematics.mean_speed,
+                                         lub.viscosity, scene.model.cavitation)
+    ratio = alpha * float(np.max(q))
+    if ratio >= 1.0:
+        msg = (f"no solution: rigid piezo-viscous (Barus) pressure does not exist since "
+               f"alpha*q_max = {ratio:.4g} >= 1 (Kapitsa transform, PHYSICS.md 5.1; "
+               f"alpha = {alpha:.3g} 1/Pa, q_max = {np.max(q):.4g} Pa). The pressure field "
+               "holds the isoviscous reduced pressure q instead.")
+        return _finish(scene, setup, problem, q, h0, "no_solution", msg, t0,
+                       linear_solves=solves, post=False)
+    p = barus_from_reduced(q, alpha) if alpha > 0 else q
+    msg = (f"solved by {solves} linear solve(s) (rigid, reduced pressure); "
+           f"alpha*q_max = {ratio:.3g} < 1")
+    return _finish(scene, setup, problem, p, h0, "linear", msg, t0, linear_solves=solves)
+
+
+def _initial_guess(scene: Scene, setup: LineSetup, problem: LineProblem) -> np.ndarray:
+    """Hertzian (elastic, loaded), local-dry (Kodnir) or rigid linear initial guess."""
+    x = setup.disc.x
+    R = scene.contact.rx
+    lub = scene.lubricant
+    if scene.load.force is not None and scene.model.elasticity != "rigid":
+        w = scene.load.force
+        if scene.model.elasticity == "local":
+            c = setup.stab_compliance
+            a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2 - x^2)/(2Rc)
+            p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
+        else:
+            b = setup.x_unit
+            p = setup.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
+        p = p * w / (problem.mass @ p)
+        v0 = float(np.interp(0.0, x, problem.displacement(p)))
+        h0 = setup.h_estimate - v0
+        return problem.pack(p, h0)
+    # rigid or prescribed gap: isoviscous rigid solution at the (estimated) offset
+    h0 = scene.load.gap if scene.load.gap is not None else setup.h_ref
+    q, _ = reduced_isoviscous_solve(problem, h0, problem.p_bc.copy(),
+                                    scene.kinematics.mean_speed, lub.viscosity,
+                                    scene.model.cavitation)
+    return problem.pack(q, h0)
+
+
+def _solve_line_newton(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
+    sol = scene.solver
+    problem = _make_problem(scene, setup, bp)
+    z0 = _initial_guess(scene, setup, problem)
+    out = damped_newton(problem, z0, tol=sol.tolerance, max_iterations=sol.max_iterations)
+    history = list(out.history)
+    iterations = out.iterations
+    steps = [(1.0, out.status, out.iterations)]
+    z, status = out.z, out.status
+    if not out.converged and sol.continuation and scene.lubricant.effective_piezo > 0:
+        log.info("direct Newton %s after %d iterations; continuing in alpha", out.status,
+                 out.iterations)
+        cont = continuation(lambda s: _make_problem(scene, setup, bp, piezo_scale=s), z0,
+                            tol=sol.tolerance, max_iterations=sol.max_iterations)
+        iterations += cont.iterations
+        steps += cont.steps
+        history += list(cont.last.history)
+        if cont.status == "converged" or cont.parameter >= 1.0:
+            z, status = cont.z, "converged"
+        else:
+            status = cont.status
+            # keep whichever finite iterate has the smaller residual at the target
+            if np.max(np.abs(problem.residual(cont.z))) < np.max(np.abs(problem.residual(z))):
+                z = cont.z
+    p, h0 = problem.unpack(z)
+    problem.prepare(z)
+    resid = float(np.max(np.abs(problem.residual(z))))
+    if status == "converged":
+        cont_note = "" if len(steps) == 1 else f" with continuation in alpha ({len(steps) - 1} steps)"
+        msg = (f"converged in {iterations} Newton iterations{cont_note}; residual "
+               f"{resid:.2e} <= tol {sol.tolerance:.1e}")
+    else:
+        msg = (f"{status}: no converged solution after {iterations} Newton iterations "
+               f"(max_iterations={sol.max_iterations} per attempt); residual {resid:.2e} > "
+               f"tol {sol.tolerance:.1e}. Fields hold the last admissible iterate.")
+    if scene.model.cavitation == "reynolds":
+        p = np.maximum(p, 0.0)  # FB solution is >= 0 up to the tolerance
+    return _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,
+                   history=history, continuation_steps=steps)
+
+
+def _finish(scene: Scene, setup: LineSetup, problem: LineProblem, p: np.ndarray, h0: float,
+            status: str, message: str, t0: float, *, iterations: int = 0, linear_solves: int = 0,
+            history=None, continuation_steps=None, post: bool = True) -> Result:
+    from . import post as pp
+
+    disc = setup.disc
+    ops = disc.ops
+    h_nodes = problem.film_nodes(p, h0)
+    pq, h_q, px, _ = problem.fields_q(p, h0)
+    quantities: dict[str, float] = {}
+    extra: dict[str, np.ndarray] = {}
+    if post:
+        quantities.update(pp.film_quantities(disc.x, p, h_nodes, ops, h_q))
+        outlet = pp.outlet_position_line(disc.x, p, scene.model.cavitation)
+        ind = pp.full_film_indicator_line(ops.points[0], outlet)
+        eta_q = problem.flux.viscosity(pq)
+        quantities.update(pp.friction_and_heat(ops, h_q, (px,), eta_q,
+                                               scene.kinematics.sliding_speed, ind,
+                                               quantities["load"]))
+        if outlet is not None:
+            quantities["outlet_position"] = outlet
+        nodes_eta = problem.flux.viscosity(p)
+        extra["viscosity_Pa_s"] = nodes_eta
+    success = status in ("converged", "linear")
+    return Result(success=success, status=status, message=message, scene=scene, x=disc.x,
+                  pressure=p, film=h_nodes, h0=float(h0), quantities=quantities,
+                  history=list(history or []), newton_iterations=iterations,
+                  linear_solves=linear_solves, wall_time_s=time.perf_counter() - t0,
+                  continuation=list(continuation_steps or []), extra_fields=extra)
