@@ -259,45 +259,121 @@ def _initial_guess(scene: Scene, setup: LineSetup, problem: LineProblem) -> np.n
     return problem.pack(q, h0)
 
 
-def _solve_line_newton(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
+#: Grid sequencing: coarsest grid of the line Newton solve (nodes).
+COARSEST_NODES = 301
+
+
+def _attempt(scene: Scene, setup: LineSetup, bp, z0: np.ndarray, max_iterations: int):
+    """Direct damped Newton, then continuation in alpha if that fails.
+
+    Returns (z, status, iterations, history, steps, problem)."""
     sol = scene.solver
     problem = _make_problem(scene, setup, bp)
-    z0 = _initial_guess(scene, setup, problem)
-    out = damped_newton(problem, z0, tol=sol.tolerance, max_iterations=sol.max_iterations)
+    out = damped_newton(problem, z0, tol=sol.tolerance, max_iterations=max_iterations)
     history = list(out.history)
-    iterations = out.iterations
     steps = [(1.0, out.status, out.iterations)]
-    z, status = out.z, out.status
-    if not out.converged and sol.continuation and scene.lubricant.effective_piezo > 0:
-        log.info("direct Newton %s after %d iterations; continuing in alpha", out.status,
-                 out.iterations)
-        cont = continuation(lambda s: _make_problem(scene, setup, bp, piezo_scale=s), z0,
-                            tol=sol.tolerance, max_iterations=sol.max_iterations)
-        iterations += cont.iterations
-        steps += cont.steps
-        history += list(cont.last.history)
-        if cont.status == "converged" or cont.parameter >= 1.0:
-            z, status = cont.z, "converged"
-        else:
-            status = cont.status
-            # keep whichever finite iterate has the smaller residual at the target
-            if np.max(np.abs(problem.residual(cont.z))) < np.max(np.abs(problem.residual(z))):
-                z = cont.z
+    if out.converged or not sol.continuation or scene.lubricant.effective_piezo == 0.0:
+        return out.z, out.status, out.iterations, history, steps, problem
+    log.info("direct Newton %s after %d iterations; continuing in alpha", out.status,
+             out.iterations)
+    z_start = _initial_guess(scene, setup, problem)
+    cont = continuation(lambda s: _make_problem(scene, setup, bp, piezo_scale=s), z_start,
+                        tol=sol.tolerance, max_iterations=max_iterations)
+    iterations = out.iterations + cont.iterations
+    steps += cont.steps
+    history += list(cont.last.history)
+    if cont.parameter >= 1.0 and cont.status == "converged":
+        return cont.z, "converged", iterations, history, steps, problem
+    problem.prepare(out.z)
+    r_direct = np.max(np.abs(problem.residual(out.z)))
+    problem.prepare(cont.z)
+    r_cont = np.max(np.abs(problem.residual(cont.z))) if cont.parameter >= 1.0 else np.inf
+    z = cont.z if r_cont < r_direct else out.z
+    return z, cont.status if cont.status != "converged" else out.status, iterations, history, \
+        steps, problem
+
+
+def _line_levels(nodes: int) -> list[int]:
+    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level."""
+    levels = [nodes]
+    while (levels[-1] - 1) % 2 == 0 and (levels[-1] - 1) // 2 + 1 >= COARSEST_NODES:
+        levels.append((levels[-1] - 1) // 2 + 1)
+    return levels[::-1]
+
+
+def _transfer(z: np.ndarray, coarse: LineProblem, fine: LineProblem) -> np.ndarray:
+    """Interpolate a converged coarse solution to a finer grid (same film at x = 0)."""
+    p_c, h0_c = coarse.unpack(z)
+    xc, xf = coarse.disc.x, fine.disc.x
+    p_f = np.interp(xf, xc, p_c)
+    hc = float(np.interp(0.0, xc, coarse.film_nodes(p_c, h0_c)))
+    if fine.has_h0:
+        h0_f = hc - float(np.interp(0.0, xf, fine.g_nodes + fine.displacement(p_f)))
+    else:
+        h0_f = h0_c
+    return fine.pack(p_f, h0_f)
+
+
+def _solve_line_newton(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
+    """Damped Newton with grid sequencing (coarse solve, interpolate, few fine steps)."""
+    sol = scene.solver
+    levels = _line_levels(setup.disc.x.size)
+    iterations, history, steps = 0, [], []
+    z = None
+    prev_problem = None
+    status = "max_iterations"
+    for level, n in enumerate(levels):
+        lvl_setup = setup if n == setup.disc.x.size else _coarsened(scene, setup, n)
+        problem = _make_problem(scene, lvl_setup, bp)
+        z0 = _initial_guess(scene, lvl_setup, problem) if z is None else \
+            _transfer(z, prev_problem, problem)
+        z, status, it, hist, st, problem = _attempt(scene, lvl_setup, bp, z0,
+                                                    sol.max_iterations)
+        iterations += it
+        history += hist
+        steps += [(s, f"{stat} ({n} nodes)", i) for s, stat, i in st]
+        prev_problem = problem
+        if status != "converged":
+            break
+    if status != "converged" or len(levels) == 0 or prev_problem.disc.x.size != setup.disc.x.size:
+        # fall back to the fine grid alone when a coarse level failed
+        if status != "converged" and len(levels) > 1:
+            problem = _make_problem(scene, setup, bp)
+            z0 = _initial_guess(scene, setup, problem)
+            z, status, it, hist, st, problem = _attempt(scene, setup, bp, z0, sol.max_iterations)
+            iterations += it
+            history += hist
+            steps += [(s, f"{stat} ({setup.disc.x.size} nodes)", i) for s, stat, i in st]
     p, h0 = problem.unpack(z)
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
+    n_cont = sum(1 for s in steps if s[0] < 1.0)
     if status == "converged":
-        cont_note = "" if len(steps) == 1 else f" with continuation in alpha ({len(steps) - 1} steps)"
-        msg = (f"converged in {iterations} Newton iterations{cont_note}; residual "
-               f"{resid:.2e} <= tol {sol.tolerance:.1e}")
+        cont_note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
+        msg = (f"converged in {iterations} Newton iterations (grids {levels}{cont_note}); "
+               f"residual {resid:.2e} <= tol {sol.tolerance:.1e}")
     else:
         msg = (f"{status}: no converged solution after {iterations} Newton iterations "
                f"(max_iterations={sol.max_iterations} per attempt); residual {resid:.2e} > "
                f"tol {sol.tolerance:.1e}. Fields hold the last admissible iterate.")
     if scene.model.cavitation == "reynolds":
-        p = np.maximum(p, 0.0)  # FB solution is >= 0 up to the tolerance
+        p = np.maximum(p, 0.0)  # the FB solution is >= 0 up to the tolerance
     return _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,
                    history=history, continuation_steps=steps)
+
+
+def _coarsened(scene: Scene, setup: LineSetup, nodes: int) -> LineSetup:
+    """The same scene on a coarser uniform grid over the same interval."""
+    from dataclasses import replace as dc_replace
+
+    from . import elasticity
+
+    x = setup.disc.x
+    disc = LineDiscretisation.uniform(float(x[0]), float(x[-1]), nodes)
+    comp = setup.compliance
+    if scene.model.elasticity == "half-space":
+        comp = elasticity.HalfSpaceLine(disc.x, scene.e_prime, method="dense")
+    return dc_replace(setup, disc=disc, compliance=comp)
 
 
 def _finish(scene: Scene, setup: LineSetup, problem: LineProblem, p: np.ndarray, h0: float,
