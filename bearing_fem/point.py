@@ -1,0 +1,855 @@
+"""Point and elliptical contacts: 2D finite elements (scikit-fem, bilinear quads).
+
+Symbols and units: x rolling direction, y across it [m]; p pressure [Pa]; q Kapitsa
+reduced pressure [Pa]; h film [m]; h0 rigid offset [m]; a = 1/(2 rx), b = 1/(2 ry)
+gap curvatures [1/m]; eta0 [Pa s]; alpha Barus coefficient [1/Pa]; u_m mean speed
+[m/s]; dh0/dt approach rate [m/s] (``squeeze_velocity``); F load [N]; E' [Pa].
+
+Grid: a tensor-product grid x (nx,), y (ny,) meshed by ``ElementQuad1`` cells, node
+numbering ``j*nx + i`` (x fastest), the layout of
+:class:`~bearing_fem.elasticity.HalfSpacePoint`. Fields in the :class:`Result` are
+``(ny, nx)`` arrays, ``pressure[j, i]`` at ``(x[i], y[j])``.
+
+Film: h = h0 + x^2/(2 rx) + y^2/(2 ry) + v(x, y) (geometry exact at the quadrature
+points, v interpolated from the nodes).
+
+Reynolds (PHYSICS.md 2): div(eps grad p) = u_m d(rho h)/dx + rho dh0/dt. Weak form,
+for every test function phi vanishing on the boundary,
+
+    R(phi) = int F . grad phi + int rho (dh0/dt) phi = 0,   F = eps grad p - u_m rho h e_x
+
+(+ SUPG in F for elastic scenes, :mod:`bearing_fem.reynolds`).
+
+Two paths (a scene pays only for what it needs):
+
+* **linear** - rigid, incompressible, constant or Barus viscosity, prescribed gap: the
+  Kapitsa reduced pressure q = (1 - exp(-alpha p))/alpha obeys the isoviscous equation
+  A q = f - s  (A stiffness with h^3/(12 eta0), f = int u_m h dphi/dx, s = int dh0/dt phi),
+  one sparse solve (full-Sommerfeld) or a primal-dual active set of sparse solves
+  (Reynolds cavitation q >= 0). p = -ln(1 - alpha q)/alpha exists only while
+  alpha max q < 1; otherwise status ``no_solution`` and the fields hold q.
+  Default rigid grid: sinh-graded (fine at the centre), since no FFT is needed.
+* **Newton** - everything else: damped Newton (:func:`bearing_fem.newton.damped_newton`)
+  on the scaled unknowns (p at interior nodes, h0 under load balance) with
+  Fischer-Burmeister cavitation rows and a load row, as :mod:`bearing_fem.line`. The
+  Jacobian dR/dp = A_p + A_h C couples the sparse Reynolds blocks with the dense
+  half-space compliance C (FFT apply); each Newton step is solved by GMRES with the
+  matrix-free Jacobian, preconditioned by a sparse LU of A_p + A_h C_near
+  (C truncated to a near-field stencil). Grid sequencing (coarse solve, bilinear
+  interpolation, few fine steps) and continuation in alpha as :mod:`bearing_fem.solver`.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from skfem import CellBasis, ElementQuad1, MeshQuad
+
+from .errors import SceneError
+from .fe import QuadratureOperators, quadrature_operators
+from .line import fischer_burmeister
+from .newton import continuation, damped_newton
+from .result import Result
+from .reynolds import FluxModel
+
+log = logging.getLogger(__name__)
+
+#: Default rigid-scene domain, in units of sqrt(2 rx h0) (x) and sqrt(2 ry h0) (y).
+#: PHYSICS.md 5.2: a free inlet needs X <= -30 in 2D for the load within ~0.3%.
+RIGID_RANGE_FS = ((-30.0, 30.0), (-30.0, 30.0))
+RIGID_RANGE_REYNOLDS = ((-30.0, 8.0), (-30.0, 30.0))
+#: Default rigid grid (sinh-graded, nodes per direction).
+RIGID_NODES = 161
+#: Default elastic grid (uniform, nodes per direction) and domain in Hertz semi-axes.
+ELASTIC_NODES = 129
+ELASTIC_RANGE = ((-4.5, 1.5), (-3.0, 3.0))
+#: Grid sequencing: coarsest grid (nodes per direction) of the elastic Newton solve.
+COARSEST_NODES = 65
+#: Near-field radius (cells) of the compliance block in the preconditioner.
+NEAR_FIELD_CELLS = 2
+
+
+# ---------------------------------------------------------------------------------------
+# grid
+# ---------------------------------------------------------------------------------------
+@dataclass
+class PointGrid:
+    """Tensor grid of bilinear quads with node numbering ``j*nx + i``.
+
+    Attributes
+    ----------
+    x, y : ndarray
+        Node coordinates [m], strictly increasing.
+    mesh : skfem.MeshQuad
+    basis : skfem.CellBasis
+    ops : QuadratureOperators
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    mesh: MeshQuad
+    basis: CellBasis
+    ops: QuadratureOperators
+
+    @classmethod
+    def tensor(cls, x: np.ndarray, y: np.ndarray, intorder: int | None = None) -> "PointGrid":
+        """Build the grid from node coordinates x (nx,), y (ny,) [m]."""
+        x = np.asarray(x, dtype=float)
+        y = np.asarray(y, dtype=float)
+        for name, v in (("x", x), ("y", y)):
+            if v.ndim != 1 or v.size < 3 or np.any(np.diff(v) <= 0):
+                raise ValueError(f"grid {name} must be >= 3 strictly increasing coordinates "
+                                 f"in m, got shape {v.shape}")
+        nx, ny = x.size, y.size
+        xx, yy = np.meshgrid(x, y)  # (ny, nx): flat index j*nx + i
+        p = np.vstack([xx.ravel(), yy.ravel()])
+        i, j = np.meshgrid(np.arange(nx - 1), np.arange(ny - 1))
+        n00 = (j * nx + i).ravel()
+        # same local orientation as MeshQuad.init_tensor: (i,j), (i,j+1), (i+1,j+1), (i+1,j)
+        t = np.vstack([n00, n00 + nx, n00 + nx + 1, n00 + 1])
+        mesh = MeshQuad(p, t)
+        kw = {} if intorder is None else {"intorder": intorder}
+        basis = CellBasis(mesh, ElementQuad1(), **kw)
+        return cls(x=x, y=y, mesh=mesh, basis=basis, ops=quadrature_operators(basis))
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(ny, nx)."""
+        return self.y.size, self.x.size
+
+    @property
+    def size(self) -> int:
+        return self.x.size * self.y.size
+
+    def node_coordinates(self) -> tuple[np.ndarray, np.ndarray]:
+        """Flat node coordinates (X, Y) [m], index j*nx + i."""
+        xx, yy = np.meshgrid(self.x, self.y)
+        return xx.ravel(), yy.ravel()
+
+    def boundary_mask(self) -> np.ndarray:
+        """Flat boolean mask of the boundary nodes."""
+        m = np.zeros(self.shape, dtype=bool)
+        m[0, :] = m[-1, :] = m[:, 0] = m[:, -1] = True
+        return m.ravel()
+
+    def interpolate(self, field: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """Bilinear interpolation of a nodal field to points (x, y) [m] (flattened)."""
+        from scipy.interpolate import RegularGridInterpolator
+
+        f = RegularGridInterpolator((self.y, self.x), np.asarray(field).reshape(self.shape),
+                                    bounds_error=False, fill_value=None)
+        return f(np.column_stack([np.ravel(y), np.ravel(x)]))
+
+
+def graded_coordinates(lo: float, hi: float, nodes: int, unit: float,
+                       stretch: float = 1.0) -> np.ndarray:
+    """Nodes on [lo, hi] * unit [m], dense near 0: x = unit stretch sinh(s), s uniform.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Range in units of ``unit`` [-], lo < 0 < hi.
+    nodes : int
+        Node count.
+    unit : float
+        Length unit [m].
+    stretch : float
+        Length [in ``unit``] below which the spacing is nearly uniform [-].
+    """
+    s = np.linspace(math.asinh(lo / stretch), math.asinh(hi / stretch), nodes)
+    return unit * stretch * np.sinh(s)
+
+
+# ---------------------------------------------------------------------------------------
+# setup
+# ---------------------------------------------------------------------------------------
+@dataclass
+class PointSetup:
+    """Scales, grid and compliance of a point scene (internal).
+
+    Attributes
+    ----------
+    grid : PointGrid
+    compliance : HalfSpacePoint or None (rigid)
+    p_ref, h_ref : float
+        Pressure [Pa] and film [m] scales of the unknowns.
+    x_unit, y_unit : float
+        Length units of the mesh ranges [m].
+    h_estimate : float
+        Estimated central film [m] (Nijenbanning-Venner-Moes for elastic scenes).
+    stab_compliance : float
+        Effective compliance of the SUPG stabilisation [m/Pa] (0 when rigid).
+    hertz : HertzPoint or None
+    """
+
+    grid: PointGrid
+    compliance: object
+    p_ref: float
+    h_ref: float
+    x_unit: float
+    y_unit: float
+    h_estimate: float
+    stab_compliance: float
+    hertz: object = None
+
+
+def _nodes(scene, default: int) -> tuple[int, int]:
+    n = scene.mesh.nodes
+    if n is None:
+        return default, default
+    return int(n[0]), int(n[1])
+
+
+def point_setup(scene, nodes: tuple[int, int] | None = None) -> PointSetup:
+    """Reference scales, default grid and compliance of a point scene.
+
+    Rigid scenes: lengths in sqrt(2 rx h0) (x) and sqrt(2 ry h0) (y), sinh-graded grid.
+    Elastic scenes: lengths in the Hertz semi-axes a_x, a_y, uniform grid (FFT compliance).
+    ``nodes`` overrides ``scene.mesh.nodes`` (grid sequencing).
+    """
+    from . import units
+    from .elasticity import HalfSpacePoint
+    from .formulas import point_central_film_nvm
+
+    rx, ry = scene.contact.rx, scene.contact.ry
+    lub, kin, model = scene.lubricant, scene.kinematics, scene.model
+    u_m = kin.mean_speed
+    elastic = model.elasticity != "rigid"
+    if model.elasticity == "local":
+        raise SceneError("model.elasticity = 'local' is defined for line contacts only")
+    if elastic and scene.load.force is not None:
+        F = scene.load.force
+        hz = units.hertz_point(F, rx, ry, scene.e_prime)
+        h_est = point_central_film_nvm(F, rx, ry, scene.e_prime, lub.viscosity, u_m,
+                                       lub.effective_piezo)
+        x_unit, y_unit = hz.a_x, hz.a_y
+        p_ref, h_ref = hz.p_h, h_est
+        # fully flooded inlet: 4.5 a, or 12 hydrodynamic lengths sqrt(2 rx h) at low load
+        inlet = max(4.5, 12.0 * math.sqrt(2 * rx * h_est) / hz.a_x)
+        side = max(3.0, 0.5 * inlet + 0.75)
+        xr = scene.mesh.x_range or (-inlet, 1.5)
+        yr = scene.mesh.y_range or (-side, side)
+        nxy = nodes or _nodes(scene, ELASTIC_NODES)
+        grid = PointGrid.tensor(np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0]),
+                                np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1]))
+        comp = HalfSpacePoint(grid.x, grid.y, scene.e_prime)
+        c_stab = 4.0 * x_unit / (math.pi * scene.e_prime)
+        return PointSetup(grid, comp, p_ref, h_ref, x_unit, y_unit, h_est, c_stab, hz)
+    if scene.load.gap is not None:
+        h0 = scene.load.gap
+    else:
+        # rigid under load: Kapitsa's full-Sommerfeld wedge has zero load; estimate h0 from
+        # the pressure scale eta0 u_m L/h0^2 acting on an area ~ 2 L^2 (start only)
+        a = 1 / (2 * rx)
+        lx = math.sqrt(2 * rx)
+        # F ~ 2 eta0 u_m lx^3 h0^(-1/2)  ->  h0
+        h0 = (2.0 * lub.viscosity * u_m * lx**3 / scene.load.force) ** 2
+        del a
+    x_unit, y_unit = math.sqrt(2 * rx * h0), math.sqrt(2 * ry * h0)
+    p_ref = lub.viscosity * u_m * x_unit / h0**2
+    rng = RIGID_RANGE_FS if model.cavitation == "none" else RIGID_RANGE_REYNOLDS
+    xr = scene.mesh.x_range or rng[0]
+    yr = scene.mesh.y_range or rng[1]
+    nxy = nodes or _nodes(scene, RIGID_NODES)
+    uniform = scene.mesh.x_range is not None or scene.mesh.y_range is not None
+    if uniform:  # an explicit range asks for a uniform grid (convergence studies)
+        gx = np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0])
+        gy = np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1])
+    else:
+        gx = graded_coordinates(xr[0], xr[1], nxy[0], x_unit, stretch=1.5)
+        gy = graded_coordinates(yr[0], yr[1], nxy[1], y_unit, stretch=1.5)
+    grid = PointGrid.tensor(gx, gy)
+    return PointSetup(grid, None, p_ref, h0, x_unit, y_unit, h0, 0.0, None)
+
+
+def _is_linear(scene) -> bool:
+    m, lub = scene.model, scene.lubricant
+    return (m.elasticity == "rigid" and lub.density == "incompressible"
+            and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
+
+
+def _boundary_values(grid: PointGrid, boundary_pressure) -> np.ndarray:
+    """Flat nodal Dirichlet pressure [Pa] (zero off the boundary)."""
+    out = np.zeros(grid.size)
+    if boundary_pressure is None:
+        return out
+    mask = grid.boundary_mask()
+    if callable(boundary_pressure):
+        X, Y = grid.node_coordinates()
+        vals = np.asarray(boundary_pressure(X[mask], Y[mask]), dtype=float)
+        out[mask] = np.broadcast_to(vals, (int(mask.sum()),))
+    else:
+        arr = np.asarray(boundary_pressure, dtype=float)
+        if arr.size != grid.size:
+            raise ValueError(f"boundary_pressure must be a callable (x [m], y [m]) -> p [Pa] "
+                             f"or nodal values of shape {grid.shape}, got shape {arr.shape}")
+        out[mask] = arr.ravel()[mask]
+    if not np.all(np.isfinite(out)):
+        raise ValueError("boundary_pressure must be finite (Pa) on the boundary nodes")
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# linear rigid path
+# ---------------------------------------------------------------------------------------
+def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
+                           mean_speed: float, viscosity: float, q_bc: np.ndarray,
+                           cavitation: str, squeeze_velocity: float = 0.0
+                           ) -> tuple[np.ndarray, int, np.ndarray]:
+    """Rigid isoviscous Reynolds problem for the reduced pressure q [Pa].
+
+    Solves int h^3/(12 eta0) grad q . grad phi = int u_m h dphi/dx - int (dh0/dt) phi
+    with q = q_bc on the boundary: one sparse solve (``cavitation = "none"``) or a
+    primal-dual active-set sequence (``"reynolds"``: q >= 0, A q - f >= 0, complementary).
+
+    Parameters
+    ----------
+    grid : PointGrid
+    h0 : float
+        Central gap [m].
+    rx, ry : float
+        Reduced radii [m].
+    mean_speed : float
+        u_m [m/s].
+    viscosity : float
+        eta0 [Pa s].
+    q_bc : ndarray
+        Flat nodal Dirichlet data [Pa] (only boundary entries are used).
+    cavitation : {"none", "reynolds"}
+    squeeze_velocity : float
+        dh0/dt [m/s] (< 0: approach, positive squeeze pressure).
+
+    Returns
+    -------
+    q : ndarray (flat, Pa); linear_solves : int; active : bool ndarray (cavitated nodes)
+    """
+    ops = grid.ops
+    xq, yq = ops.points
+    h = h0 + xq**2 / (2 * rx) + yq**2 / (2 * ry)
+    eps = h**3 / (12.0 * viscosity)
+    zero = np.zeros_like(h)
+    a = (ops.flux_jacobian(0, zero, (eps, zero)) + ops.flux_jacobian(1, zero, (zero, eps))).tocsr()
+    f = ops.weak_divergence(mean_speed * h, zero)
+    if squeeze_velocity:
+        f = f - ops.value.T @ (ops.weights * squeeze_velocity)
+    n = grid.size
+    free = np.nonzero(~grid.boundary_mask())[0]
+    rhs = f - a @ np.where(grid.boundary_mask(), q_bc, 0.0)
+    q_bnd = np.where(grid.boundary_mask(), q_bc, 0.0)
+    active = np.zeros(n, dtype=bool)
+    diag = a.diagonal()
+    solves = 0
+    q = q_bnd.copy()
+    for _ in range(200):
+        inactive = free[~active[free]]
+        q = q_bnd.copy()
+        if inactive.size:
+            q[inactive] = spla.spsolve(a[inactive][:, inactive].tocsc(), rhs[inactive])
+        solves += 1
+        if cavitation != "reynolds":
+            break
+        lam = a @ q - f
+        new_active = np.zeros(n, dtype=bool)
+        new_active[free] = lam[free] / diag[free] > q[free]
+        if np.array_equal(new_active, active):
+            break
+        active = new_active
+    return q, solves, active
+
+
+def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: float,
+                  t0: float) -> Result:
+    from .analytic import barus_from_reduced, reduced_from_barus
+
+    lub = scene.lubricant
+    alpha = lub.effective_piezo
+    h0 = scene.load.gap
+    grid = setup.grid
+    q_bc = reduced_from_barus(p_bc, alpha) if alpha > 0 else p_bc
+    q, solves, active = reduced_pressure_solve(
+        grid, h0, scene.contact.rx, scene.contact.ry, scene.kinematics.mean_speed,
+        lub.viscosity, q_bc, scene.model.cavitation, squeeze_velocity)
+    ratio = alpha * float(np.max(q))
+    problem = PointProblem(grid, _flux(scene, setup), scene.contact.rx, scene.contact.ry,
+                           None, scene.model.cavitation, None, h0, setup.p_ref, setup.h_ref,
+                           lub.viscosity, p_bc, squeeze_velocity)
+    if ratio >= 1.0:
+        msg = (f"no solution: rigid piezo-viscous (Barus) pressure does not exist since "
+               f"alpha*q_max = {ratio:.4g} >= 1 (Kapitsa transform, PHYSICS.md 5.1; "
+               f"alpha = {alpha:.3g} 1/Pa, q_max = {np.max(q):.4g} Pa). The pressure field "
+               "holds the isoviscous reduced pressure q instead.")
+        return _finish(scene, setup, problem, q, h0, "no_solution", msg, t0,
+                       linear_solves=solves, post=False)
+    p = barus_from_reduced(q, alpha) if alpha > 0 else q
+    msg = (f"solved by {solves} linear solve(s) (rigid, reduced pressure, {grid.x.size} x "
+           f"{grid.y.size} nodes); alpha*q_max = {ratio:.3g} < 1")
+    return _finish(scene, setup, problem, p, h0, "linear", msg, t0, linear_solves=solves,
+                   cavitated=active)
+
+
+# ---------------------------------------------------------------------------------------
+# nonlinear problem
+# ---------------------------------------------------------------------------------------
+class PointProblem:
+    """Scaled nonlinear system of one point-contact scene (a NonlinearProblem).
+
+    Unknowns z: p/p_ref at the interior nodes, then h0/h_ref under load balance.
+    Rows: Reynolds rows r_i = R_i / (d_i eps0_i p_ref) (d_i eps0_i the isoviscous
+    stiffness diagonal), wrapped by Fischer-Burmeister for Reynolds cavitation; load row
+    (int p - F)/F.
+
+    Parameters
+    ----------
+    grid : PointGrid
+    flux : FluxModel
+    rx, ry : float
+        Reduced radii [m].
+    compliance : HalfSpacePoint or None
+        None: rigid.
+    cavitation : {"reynolds", "none"}
+    load : float or None
+        F [N]; None: h0 prescribed (``gap``).
+    gap : float or None
+        h0 [m].
+    p_ref, h_ref : float
+        Scales [Pa], [m].
+    viscosity0 : float
+        eta0 [Pa s] (row scaling).
+    p_bc : ndarray
+        Flat Dirichlet pressures [Pa].
+    squeeze_velocity : float
+        dh0/dt [m/s].
+    near_field_cells : int
+        Compliance stencil radius of the preconditioner.
+    """
+
+    def __init__(self, grid: PointGrid, flux: FluxModel, rx: float, ry: float, compliance,
+                 cavitation: str, load: float | None, gap: float | None, p_ref: float,
+                 h_ref: float, viscosity0: float, p_bc: np.ndarray | None = None,
+                 squeeze_velocity: float = 0.0,
+                 near_field_cells: int = NEAR_FIELD_CELLS) -> None:
+        self.grid, self.flux = grid, flux
+        self.rx, self.ry = rx, ry
+        self.compliance = compliance
+        self.cavitation = cavitation
+        self.load, self.gap = load, gap
+        self.p_ref, self.h_ref = p_ref, h_ref
+        self.eta0 = viscosity0
+        self.squeeze = float(squeeze_velocity)
+        n = grid.size
+        self.free = np.nonzero(~grid.boundary_mask())[0]
+        self.p_bc = np.zeros(n) if p_bc is None else np.asarray(p_bc, dtype=float).ravel()
+        ops = grid.ops
+        xq, yq = ops.points
+        self.g_q = xq**2 / (2 * rx) + yq**2 / (2 * ry)
+        self.gx_q = xq / rx
+        self.gy_q = yq / ry
+        X, Y = grid.node_coordinates()
+        self.g_nodes = X**2 / (2 * rx) + Y**2 / (2 * ry)
+        self.mass = ops.mass
+        self.has_h0 = load is not None
+        self.n_unknowns = self.free.size + (1 if self.has_h0 else 0)
+        # Q1 stiffness diagonal / eps on the local cell (Laplacian): (4/3)(hy/hx + hx/hy)
+        hx = np.gradient(grid.x)
+        hy = np.gradient(grid.y)
+        hxx, hyy = np.meshgrid(hx, hy)
+        self._stiff_diag = ((4.0 / 3.0) * (hyy / hxx + hxx / hyy)).ravel()
+        self.near_field_cells = near_field_cells
+        self._row_scale = None
+        self.linear_iterations = 0
+
+    # -- unknowns <-> fields -------------------------------------------------------------
+    def unpack(self, z: np.ndarray) -> tuple[np.ndarray, float]:
+        p = self.p_bc.copy()
+        p[self.free] = z[: self.free.size] * self.p_ref
+        h0 = z[-1] * self.h_ref if self.has_h0 else self.gap
+        return p, float(h0)
+
+    def pack(self, p: np.ndarray, h0: float) -> np.ndarray:
+        z = np.ravel(p)[self.free] / self.p_ref
+        return np.append(z, h0 / self.h_ref) if self.has_h0 else z
+
+    def displacement(self, p: np.ndarray) -> np.ndarray:
+        if self.compliance is None:
+            return np.zeros_like(p)
+        return self.compliance.apply(p)
+
+    def film_nodes(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Nodal film [m] (flat)."""
+        return h0 + self.g_nodes + self.displacement(p)
+
+    def fields_q(self, p: np.ndarray, h0: float, v: np.ndarray | None = None):
+        """p, h, (px, py), (hx, hy) at the quadrature points."""
+        ops = self.grid.ops
+        if v is None:
+            v = self.displacement(p)
+        h = h0 + self.g_q + ops.value @ v
+        gh = (self.gx_q + ops.grad[0] @ v, self.gy_q + ops.grad[1] @ v)
+        gp = (ops.grad[0] @ p, ops.grad[1] @ p)
+        return ops.value @ p, h, gp, gh
+
+    # -- NonlinearProblem ------------------------------------------------------------------
+    def prepare(self, z: np.ndarray) -> None:
+        p, h0 = self.unpack(z)
+        h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
+        eps0 = h**3 / (12.0 * self.eta0)
+        self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free]
+
+    def admissible(self, z: np.ndarray) -> bool:
+        if not np.all(np.isfinite(z)):
+            return False
+        p, h0 = self.unpack(z)
+        _, h, _, _ = self.fields_q(p, h0)
+        return bool(np.min(h) > 0.0)
+
+    def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Nodal weak residual R_i [m^3/s] (all nodes)."""
+        pq, h, gp, gh = self.fields_q(p, h0)
+        ops = self.grid.ops
+        fl = self.flux.flux(pq, h, gp, gh, ops.element_size)
+        r = ops.weak_divergence(*fl)
+        if self.squeeze:
+            rho = self.flux.density(pq)
+            r = r + ops.value.T @ (ops.weights * rho * self.squeeze)
+        return r
+
+    def residual(self, z: np.ndarray) -> np.ndarray:
+        p, h0 = self.unpack(z)
+        r = self.reynolds_residual(p, h0)[self.free] * self._row_scale
+        if self.cavitation == "reynolds":
+            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
+        if self.has_h0:
+            r = np.append(r, (self.mass @ p - self.load) / self.load)
+        return r
+
+    def _blocks(self, z: np.ndarray):
+        """Sparse A_p, A_h (all nodes), dR/dh0 (all nodes), residual, row factors."""
+        p, h0 = self.unpack(z)
+        ops = self.grid.ops
+        pq, h, gp, gh = self.fields_q(p, h0)
+        fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh,
+                                                            ops.element_size)
+        a_p = None
+        a_h = None
+        for d in range(2):
+            ap = ops.flux_jacobian(d, dp[d], (dgp[0][d], dgp[1][d]))
+            ah = ops.flux_jacobian(d, dh[d], (dgh[0][d], dgh[1][d]))
+            a_p = ap if a_p is None else a_p + ap
+            a_h = ah if a_h is None else a_h + ah
+        res = ops.weak_divergence(*fl)
+        drdh0 = ops.grad[0].T @ (ops.weights * dh[0]) + ops.grad[1].T @ (ops.weights * dh[1])
+        if self.squeeze:
+            res = res + ops.value.T @ (ops.weights * self.flux.density(pq) * self.squeeze)
+            if self.flux.density(np.array([1e8]))[0] != 1.0:  # compressible: d rho/dp term
+                dp_rho = np.imag(self.flux.density(pq + 1j * 1e-20 * max(self.p_ref, 1.0))) \
+                    / (1e-20 * max(self.p_ref, 1.0))
+                a_p = a_p + ops.value.T @ sp.diags(ops.weights * dp_rho * self.squeeze) \
+                    @ ops.value
+        rows = self.free
+        s = self._row_scale
+        if self.cavitation == "reynolds":
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res[rows] * s)
+            row_factor = db * s
+        else:
+            da = None
+            row_factor = s
+        return a_p.tocsr(), a_h.tocsr(), drdh0, row_factor, da
+
+    def jacobian_sparse(self, z: np.ndarray, near: bool = True) -> sp.csc_matrix:
+        """Scaled sparse Jacobian (rigid: exact) or its near-field approximation."""
+        a_p, a_h, drdh0, row_factor, da = self._blocks(z)
+        return self._assemble(a_p, a_h, drdh0, row_factor, da, near)
+
+    def _assemble(self, a_p, a_h, drdh0, row_factor, da, near: bool) -> sp.csc_matrix:
+        rows = self.free
+        m = a_p
+        if self.compliance is not None and near:
+            m = (a_p + a_h @ self.compliance.near_field(self.near_field_cells)).tocsr()
+        j = sp.diags(row_factor * self.p_ref) @ m[rows][:, rows]
+        if da is not None:
+            j = j + sp.diags(da)
+        if not self.has_h0:
+            return j.tocsc()
+        col = (drdh0[rows] * row_factor * self.h_ref)[:, None]
+        load_row = (self.mass[rows] * self.p_ref / self.load)[None, :]
+        return sp.bmat([[j, sp.csr_matrix(col)], [sp.csr_matrix(load_row), None]],
+                       format="csc")
+
+    def newton_step(self, z: np.ndarray, shift: float = 0.0) -> np.ndarray:
+        """Solve (J + shift D) dz = -F; D = identity on the pressure unknowns.
+
+        Rigid: sparse direct. Elastic: GMRES on the matrix-free Jacobian (sparse blocks
+        plus A_h (C x) by FFT), preconditioned by a sparse LU of the near-field Jacobian.
+        """
+        f = self.residual(z)
+        npf = self.free.size
+        a_p, a_h, drdh0, row_factor, da = self._blocks(z)
+        dshift = np.zeros(self.n_unknowns)
+        dshift[:npf] = shift
+        pre = self._assemble(a_p, a_h, drdh0, row_factor, da, near=True)
+        if shift:
+            pre = (pre + sp.diags(dshift)).tocsc()
+        if self.compliance is None:
+            return spla.spsolve(pre, -f)
+        lu = spla.splu(pre, permc_spec="COLAMD")
+        rows = self.free
+        n = self.grid.size
+        comp = self.compliance
+        scale = row_factor * self.p_ref
+        col = drdh0[rows] * row_factor * self.h_ref
+        load_row = self.mass[rows] * self.p_ref / self.load if self.has_h0 else None
+
+        def matvec(u: np.ndarray) -> np.ndarray:
+            u = np.ravel(u)
+            full = np.zeros(n)
+            full[rows] = u[:npf]
+            v = a_p @ full + a_h @ comp.apply(full)
+            out = scale * v[rows]
+            if da is not None:
+                out = out + da * u[:npf]
+            out = out + shift * u[:npf]
+            if self.has_h0:
+                out = out + col * u[npf]
+                return np.append(out, load_row @ u[:npf])
+            return out
+
+        op = spla.LinearOperator((self.n_unknowns, self.n_unknowns), matvec=matvec)
+        prec = spla.LinearOperator((self.n_unknowns, self.n_unknowns), matvec=lu.solve)
+        count = [0]
+
+        def cb(_):
+            count[0] += 1
+
+        x0 = lu.solve(-f)
+        dz, info = spla.gmres(op, -f, x0=x0, M=prec, rtol=1e-8, atol=0.0, restart=60,
+                              maxiter=4, callback=cb, callback_type="pr_norm")
+        self.linear_iterations += count[0]
+        if info < 0:
+            raise RuntimeError(f"gmres failed (info={info})")
+        return dz
+
+
+def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
+    return FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
+                                    compliance=setup.stab_compliance, piezo_scale=piezo_scale)
+
+
+def _make_problem(scene, setup: PointSetup, p_bc, squeeze_velocity: float,
+                  piezo_scale: float = 1.0) -> PointProblem:
+    return PointProblem(setup.grid, _flux(scene, setup, piezo_scale), scene.contact.rx,
+                        scene.contact.ry, setup.compliance, scene.model.cavitation,
+                        scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
+                        scene.lubricant.viscosity, p_bc, squeeze_velocity)
+
+
+def _initial_guess(scene, setup: PointSetup, problem: PointProblem) -> np.ndarray:
+    """Hertzian pressure (elastic, loaded) or the rigid isoviscous solution."""
+    grid = setup.grid
+    X, Y = grid.node_coordinates()
+    if scene.load.force is not None and setup.compliance is not None:
+        hz = setup.hertz
+        p = hz.p_h * np.sqrt(np.maximum(1.0 - (X / hz.a_x) ** 2 - (Y / hz.a_y) ** 2, 0.0))
+        p = p * scene.load.force / (problem.mass @ p)
+        v0 = float(grid.interpolate(problem.displacement(p), np.array([0.0]),
+                                    np.array([0.0]))[0])
+        return problem.pack(p, setup.h_estimate - v0)
+    h0 = scene.load.gap if scene.load.gap is not None else setup.h_ref
+    q, _, _ = reduced_pressure_solve(grid, h0, scene.contact.rx, scene.contact.ry,
+                                     scene.kinematics.mean_speed, scene.lubricant.viscosity,
+                                     problem.p_bc, scene.model.cavitation, problem.squeeze)
+    if scene.model.cavitation == "reynolds":
+        q = np.maximum(q, 0.0)
+    return problem.pack(q, h0)
+
+
+def _attempt(scene, setup, p_bc, squeeze, z0, max_iterations):
+    """Direct damped Newton, then continuation in alpha if that fails."""
+    sol = scene.solver
+    problem = _make_problem(scene, setup, p_bc, squeeze)
+    out = damped_newton(problem, z0, tol=sol.tolerance, max_iterations=max_iterations)
+    history = list(out.history)
+    steps = [(1.0, out.status, out.iterations)]
+    if out.converged or not sol.continuation or scene.lubricant.effective_piezo == 0.0:
+        return out.z, out.status, out.iterations, history, steps, problem
+    log.info("direct Newton %s after %d iterations; continuing in alpha", out.status,
+             out.iterations)
+    z_start = _initial_guess(scene, setup, problem)
+    cont = continuation(lambda s: _make_problem(scene, setup, p_bc, squeeze, piezo_scale=s),
+                        z_start, tol=sol.tolerance, max_iterations=max_iterations)
+    iterations = out.iterations + cont.iterations
+    steps += cont.steps
+    history += list(cont.last.history)
+    if cont.parameter >= 1.0 and cont.status == "converged":
+        return cont.z, "converged", iterations, history, steps, problem
+    return out.z, out.status, iterations, history, steps, problem
+
+
+def _levels(n: tuple[int, int]) -> list[tuple[int, int]]:
+    """Grid sequence halving the spacing each level, coarsest >= COARSEST_NODES."""
+    levels = [n]
+    while all((m - 1) % 2 == 0 and (m - 1) // 2 + 1 >= COARSEST_NODES for m in levels[-1]):
+        levels.append(tuple((m - 1) // 2 + 1 for m in levels[-1]))
+    return levels[::-1]
+
+
+def _transfer(z: np.ndarray, coarse: PointProblem, fine: PointProblem) -> np.ndarray:
+    """Bilinear interpolation of a coarse solution to a finer grid (same central film)."""
+    p_c, h0_c = coarse.unpack(z)
+    X, Y = fine.grid.node_coordinates()
+    p_f = coarse.grid.interpolate(p_c, X, Y)
+    p_f[~np.isin(np.arange(p_f.size), fine.free)] = fine.p_bc[
+        ~np.isin(np.arange(p_f.size), fine.free)]
+    o = np.array([0.0])
+    hc = float(coarse.grid.interpolate(coarse.film_nodes(p_c, h0_c), o, o)[0])
+    if fine.has_h0:
+        h0_f = hc - float(fine.grid.interpolate(fine.g_nodes + fine.displacement(p_f), o, o)[0])
+    else:
+        h0_f = h0_c
+    return fine.pack(p_f, h0_f)
+
+
+def _solve_newton(scene, setup: PointSetup, p_bc_fn, squeeze: float, t0: float,
+                  max_iterations: int | None) -> Result:
+    sol = scene.solver
+    maxit = max_iterations or sol.max_iterations
+    n_fine = (setup.grid.x.size, setup.grid.y.size)
+    levels = _levels(n_fine) if setup.compliance is not None else [n_fine]
+    iterations, history, steps = 0, [], []
+    z, prev, status = None, None, "max_iterations"
+    linear_its = 0
+    problem = None
+    for n in levels:
+        lvl = setup if n == n_fine else point_setup(scene, nodes=n)
+        p_bc = _boundary_values(lvl.grid, p_bc_fn)
+        problem = _make_problem(scene, lvl, p_bc, squeeze)
+        z0 = _initial_guess(scene, lvl, problem) if z is None else _transfer(z, prev, problem)
+        z, status, it, hist, st, problem = _attempt(scene, lvl, p_bc, squeeze, z0, maxit)
+        linear_its += problem.linear_iterations
+        iterations += it
+        history += hist
+        steps += [(s, f"{stat} ({n[0]}x{n[1]} nodes)", i) for s, stat, i in st]
+        prev = problem
+        if status != "converged":
+            break
+    if status != "converged" and len(levels) > 1 and problem.grid.size != setup.grid.size:
+        p_bc = _boundary_values(setup.grid, p_bc_fn)
+        problem = _make_problem(scene, setup, p_bc, squeeze)
+        z, status, it, hist, st, problem = _attempt(scene, setup, p_bc, squeeze,
+                                                    _initial_guess(scene, setup, problem),
+                                                    maxit)
+        iterations += it
+        history += hist
+        steps += [(s, f"{stat} ({n_fine[0]}x{n_fine[1]} nodes)", i) for s, stat, i in st]
+    p, h0 = problem.unpack(z)
+    problem.prepare(z)
+    resid = float(np.max(np.abs(problem.residual(z))))
+    n_cont = sum(1 for s in steps if s[0] < 1.0)
+    if status == "converged":
+        note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
+        msg = (f"converged in {iterations} Newton iterations (grids "
+               f"{[f'{a}x{b}' for a, b in levels]}{note}); residual {resid:.2e} <= tol "
+               f"{sol.tolerance:.1e}")
+    else:
+        msg = (f"{status}: no converged solution after {iterations} Newton iterations "
+               f"(max_iterations={maxit} per attempt); residual {resid:.2e} > tol "
+               f"{sol.tolerance:.1e}. Fields hold the last admissible iterate.")
+    if scene.model.cavitation == "reynolds":
+        p = np.maximum(p, 0.0)
+    res = _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,
+                  history=history, continuation_steps=steps)
+    res.extra_fields = dict(res.extra_fields)
+    res.quantities["gmres_iterations"] = float(linear_its)
+    return res
+
+
+# ---------------------------------------------------------------------------------------
+# public API
+# ---------------------------------------------------------------------------------------
+def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None,
+                squeeze_velocity: float = 0.0, max_iterations: int | None = None) -> Result:
+    """Solve a point/elliptical contact scene.
+
+    Parameters
+    ----------
+    scene : Scene
+        ``contact.kind == "point"``.
+    boundary_pressure : callable or ndarray, optional
+        Dirichlet pressure on the domain boundary [Pa]: a callable ``(x [m], y [m]) -> p``
+        on flat arrays, or nodal values of shape (ny, nx) (only boundary nodes are used).
+        Default 0. The analytic-oracle tests impose the exact Kapitsa solution this way.
+    squeeze_velocity : float
+        Approach rate dh0/dt [m/s] (negative: the surfaces approach, positive squeeze
+        pressure). A scene has no key for it yet (proposed: ``[kinematics] squeeze``).
+    max_iterations : int, optional
+        Overrides ``scene.solver.max_iterations`` (Newton iterations per attempt).
+
+    Returns
+    -------
+    Result
+        ``x`` (nx,), ``y`` (ny,) [m]; ``pressure`` [Pa] and ``film`` [m] as (ny, nx)
+        arrays. Never raises for non-convergence or non-existence (see ``status``).
+    """
+    from .scene import Scene
+
+    if not isinstance(scene, Scene):
+        raise SceneError(f"solve_point() needs a Scene, got {type(scene).__name__}")
+    if scene.contact.kind != "point":
+        raise SceneError(f"solve_point() needs contact.kind = 'point', got "
+                         f"{scene.contact.kind!r}")
+    sq = float(squeeze_velocity)
+    if not math.isfinite(sq):
+        raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
+    t0 = time.perf_counter()
+    setup = point_setup(scene)
+    if _is_linear(scene):
+        return _solve_linear(scene, setup, _boundary_values(setup.grid, boundary_pressure),
+                             sq, t0)
+    return _solve_newton(scene, setup, boundary_pressure, sq, t0, max_iterations)
+
+
+def _finish(scene, setup: PointSetup, problem: PointProblem, p: np.ndarray, h0: float,
+            status: str, message: str, t0: float, *, iterations: int = 0,
+            linear_solves: int = 0, history=None, continuation_steps=None, post: bool = True,
+            cavitated: np.ndarray | None = None) -> Result:
+    from . import post as pp
+
+    grid = problem.grid
+    ops = grid.ops
+    h_nodes = problem.film_nodes(p, h0)
+    quantities: dict[str, float] = {}
+    extra: dict[str, np.ndarray] = {}
+    if post:
+        pq, h_q, gp, _ = problem.fields_q(p, h0)
+        o = np.array([0.0])
+        v = problem.displacement(p)
+        load = float(problem.mass @ p)
+        quantities.update({
+            "h_min": float(min(np.min(h_nodes), np.min(h_q))),
+            "h_central": float(h0 + grid.interpolate(v, o, o)[0]),
+            "p_max": float(np.max(p)),
+            "load": load,
+        })
+        if scene.model.cavitation == "reynolds":
+            full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
+            full = full | grid.boundary_mask()
+            ind = (ops.value @ full.astype(float) >= 0.5).astype(float)
+        else:
+            ind = np.ones_like(h_q)
+        eta_q = problem.flux.viscosity(pq)
+        quantities.update(pp.friction_and_heat(ops, h_q, gp, eta_q,
+                                               scene.kinematics.sliding_speed, ind, load))
+        extra["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
+    success = status in ("converged", "linear")
+    return Result(success=success, status=status, message=message, scene=scene, x=grid.x,
+                  y=grid.y, pressure=np.asarray(p).reshape(grid.shape),
+                  film=np.asarray(h_nodes).reshape(grid.shape), h0=float(h0),
+                  quantities=quantities, history=list(history or []),
+                  newton_iterations=iterations, linear_solves=linear_solves,
+                  wall_time_s=time.perf_counter() - t0,
+                  continuation=list(continuation_steps or []), extra_fields=extra)
