@@ -1,0 +1,399 @@
+"""Export and read back solve results: ``summary.json``, ``result.h5``, ``fields.vtu``.
+
+I/O only, no physics. Every file is written under a temporary name in the output
+directory and moved into place with :func:`os.replace` once all files of an export are
+complete, so a crash or a full disk never leaves a half-written ``summary.json`` next to
+an older ``result.h5``. h5py and meshio are imported inside the functions that use them.
+
+Files written by :func:`export`
+-------------------------------
+``summary.json``
+    :meth:`bearing_fem.result.Result.summary` as strict JSON (``allow_nan=False``);
+    a non-finite number, which the solver should never produce, is written as ``null``.
+``result.h5``
+    Datasets ``x`` [m], ``y`` [m] (point contacts only), ``pressure_Pa``, ``film_m`` and
+    every entry of ``result.extra_fields``, each with a ``unit`` attribute. Root
+    attributes ``kind``, ``status``, ``success``, ``message``, ``version``, ``h0`` [m],
+    ``scene`` (the scene as TOML text), ``summary`` (the summary as JSON text). Group
+    ``convergence``: dataset ``history`` (scaled residual after each Newton iteration),
+    attributes ``newton_iterations``, ``linear_solves``, ``wall_time_s`` and
+    ``continuation`` (JSON list of ``[parameter, status, iterations]``).
+``fields.vtu``
+    VTK unstructured grid (meshio): a 1D line mesh of the nodes (line contact) or quads
+    on the structured (ny, nx) grid (point contact), with point data ``pressure_Pa``,
+    ``film_m`` and the extra fields. Coordinates in metres.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import secrets
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+__all__ = ["export", "read_result", "scene_to_toml", "write_summary", "write_h5",
+           "write_vtu", "FILES"]
+
+#: File names written by :func:`export`, keyed as in its returned dict.
+FILES = {"summary": "summary.json", "h5": "result.h5", "vtu": "fields.vtu"}
+
+#: Unit suffixes of field names (longest first), e.g. ``viscosity_Pa_s`` -> ``Pa s``.
+_SUFFIX_UNITS = (
+    ("_W_m2", "W/m^2"), ("_Pa_s", "Pa s"), ("_m_s", "m/s"), ("_Pa", "Pa"), ("_K", "K"),
+    ("_degC", "degC"), ("_C", "degC"), ("_W", "W"), ("_m", "m"), ("_s", "s"), ("_1", "1"),
+)
+
+
+def field_unit(name: str) -> str:
+    """Unit encoded in a field name's suffix (``film_m`` -> ``m``), or ``""`` if none.
+
+    Parameters
+    ----------
+    name : str
+        Field name; by convention it ends with its unit (STYLE.md).
+
+    Returns
+    -------
+    str
+    """
+    for suffix, unit in _SUFFIX_UNITS:
+        if name.endswith(suffix):
+            return unit
+    return ""
+
+
+# ---------------------------------------------------------------------------------------
+# TOML text of a scene (tomllib reads only; scenes are small nested tables)
+# ---------------------------------------------------------------------------------------
+def _toml_value(value: Any, where: str) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        v = float(value)
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(value, str):
+        return json.dumps(value)  # a JSON string is a valid TOML basic string
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml_value(v, where) for v in value) + "]"
+    raise TypeError(f"cannot write {where} = {value!r} ({type(value).__name__}) as TOML")
+
+
+def _toml_key(key: Any) -> str:
+    key = str(key)
+    return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else json.dumps(key)
+
+
+def scene_to_toml(scene: Any) -> str:
+    """TOML text of a scene (a :class:`~bearing_fem.scene.Scene` or its ``to_dict()``).
+
+    The text reads back with :meth:`Scene.from_toml_string` to an equal scene. Top-level
+    scalars come first, then one ``[section]`` table per nested mapping.
+
+    Parameters
+    ----------
+    scene : Scene or mapping
+        A scene, or a nested mapping with the TOML layout of ``docs/scenes.md``.
+
+    Returns
+    -------
+    str
+    """
+    data = scene.to_dict() if hasattr(scene, "to_dict") else scene
+    if not isinstance(data, Mapping):
+        raise TypeError(f"scene_to_toml needs a Scene or a mapping, got {type(data).__name__}")
+    lines: list[str] = []
+    tables = [(k, v) for k, v in data.items() if isinstance(v, Mapping)]
+    for key, value in data.items():
+        if not isinstance(value, Mapping):
+            lines.append(f"{_toml_key(key)} = {_toml_value(value, key)}")
+    for name, table in tables:
+        if lines:
+            lines.append("")
+        lines.append(f"[{_toml_key(name)}]")
+        for key, value in table.items():
+            if isinstance(value, Mapping):
+                raise TypeError(f"scene_to_toml: nested table {name}.{key} is not supported")
+            lines.append(f"{_toml_key(key)} = {_toml_value(value, f'{name}.{key}')}")
+    return "\n".join(lines) + "\n"
+
+
+# ---------------------------------------------------------------------------------------
+# helpers
+# ---------------------------------------------------------------------------------------
+def _json_safe(value: Any) -> Any:
+    """Plain-Python copy of ``value`` with non-finite floats replaced by ``None``."""
+    if isinstance(value, Mapping):
+        return {str(k): _json_safe(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_json_safe(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _json_safe(value.tolist())
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        v = float(value)
+        return v if math.isfinite(v) else None
+    return value
+
+
+def _kind(result: Any) -> str:
+    return "point" if result.y is not None else "line"
+
+
+def _fields(result: Any) -> dict[str, np.ndarray]:
+    """Nodal fields to export, name (with unit suffix) -> array (copies)."""
+    out = {"pressure_Pa": np.array(result.pressure, dtype=float),
+           "film_m": np.array(result.film, dtype=float)}
+    for name, arr in (result.extra_fields or {}).items():
+        if name in out or name in ("x", "y"):
+            raise ValueError(f"extra field name {name!r} clashes with a standard dataset")
+        out[str(name)] = np.array(arr, dtype=float)
+    return out
+
+
+def _grid(result: Any) -> tuple[np.ndarray, np.ndarray | None]:
+    """Node coordinates (n, 3) and, for point contacts, the (ny, nx) node-index grid.
+
+    Accepts for a point contact either grid axes (``x`` of size nx, ``y`` of size ny,
+    fields with nx*ny values in C order of (ny, nx)) or nodal coordinates (``x``, ``y``
+    and the fields all of one size, any node order, on a tensor-product grid).
+    """
+    x = np.asarray(result.x, dtype=float)
+    n = np.asarray(result.pressure).size
+    if result.y is None:
+        if x.size != n:
+            raise ValueError(f"line result: x has {x.size} nodes but pressure has {n}")
+        pts = np.zeros((n, 3))
+        pts[:, 0] = x.ravel()
+        return pts, None
+    y = np.asarray(result.y, dtype=float)
+    if x.ndim == 1 and y.ndim == 1 and x.size * y.size == n and x.size != n:
+        xx, yy = np.meshgrid(x, y)  # (ny, nx)
+        pts = np.column_stack([xx.ravel(), yy.ravel(), np.zeros(n)])
+        index = np.arange(n).reshape(y.size, x.size)
+        return pts, index
+    if x.size != n or y.size != n:
+        raise ValueError(f"point result: x ({x.shape}), y ({y.shape}) and pressure ({n} "
+                         "values) are neither grid axes nor nodal coordinates")
+    xs, ix = np.unique(x.ravel(), return_inverse=True)
+    ys, iy = np.unique(y.ravel(), return_inverse=True)
+    if xs.size * ys.size != n:
+        raise ValueError(f"point result: {n} nodes do not form a tensor grid "
+                         f"({xs.size} x values, {ys.size} y values)")
+    index = np.full((ys.size, xs.size), -1, dtype=np.int64)
+    index[iy, ix] = np.arange(n)
+    pts = np.column_stack([x.ravel(), y.ravel(), np.zeros(n)])
+    return pts, index
+
+
+class _Staging:
+    """Temporary files in ``outdir`` moved into place together by :meth:`commit`."""
+
+    def __init__(self, outdir: Path):
+        self.outdir = outdir
+        self.pending: list[tuple[Path, Path]] = []
+
+    def temp(self, final_name: str) -> Path:
+        # a fresh, unguessable name; the writer creates it with the usual permissions
+        # (mkstemp would make it 0600)
+        suffix = Path(final_name).suffix
+        tmp = self.outdir / f".{final_name}.{os.getpid()}.{secrets.token_hex(6)}.tmp{suffix}"
+        self.pending.append((tmp, self.outdir / final_name))
+        return tmp
+
+    def commit(self) -> None:
+        for tmp, final in self.pending:
+            os.replace(tmp, final)
+        self.pending.clear()
+
+    def discard(self) -> None:
+        for tmp, _ in self.pending:
+            try:
+                tmp.unlink()
+            except FileNotFoundError:
+                pass
+        self.pending.clear()
+
+
+# ---------------------------------------------------------------------------------------
+# writers
+# ---------------------------------------------------------------------------------------
+def write_summary(result: Any, path: str | Path) -> Path:
+    """Write ``result.summary()`` as strict JSON to ``path`` (not atomic; see :func:`export`)."""
+    path = Path(path)
+    text = json.dumps(_json_safe(result.summary()), indent=2, allow_nan=False)
+    path.write_text(text + "\n", encoding="utf-8")
+    return path
+
+
+def write_h5(result: Any, path: str | Path) -> Path:
+    """Write fields, provenance and convergence history to an HDF5 file at ``path``.
+
+    The layout is described in the module docstring. Not atomic on its own; use
+    :func:`export` for that.
+    """
+    import h5py
+
+    from . import __version__
+
+    path = Path(path)
+    summary = _json_safe(result.summary())
+    with h5py.File(path, "w") as f:
+        f.attrs["kind"] = _kind(result)
+        f.attrs["status"] = str(result.status)
+        f.attrs["success"] = bool(result.success)
+        f.attrs["message"] = str(result.message)
+        f.attrs["version"] = __version__
+        f.attrs["h0"] = float(result.h0)
+        f.attrs["scene"] = scene_to_toml(result.scene)
+        f.attrs["summary"] = json.dumps(summary, allow_nan=False)
+        coords = {"x": result.x} if result.y is None else {"x": result.x, "y": result.y}
+        for name, arr in coords.items():
+            ds = f.create_dataset(name, data=np.array(arr, dtype=float))
+            ds.attrs["unit"] = "m"
+        for name, arr in _fields(result).items():
+            ds = f.create_dataset(name, data=arr)
+            ds.attrs["unit"] = field_unit(name)
+        g = f.create_group("convergence")
+        ds = g.create_dataset("history", data=np.array(result.history, dtype=float))
+        ds.attrs["unit"] = "1"
+        ds.attrs["description"] = "scaled residual norm after each Newton iteration"
+        g.attrs["newton_iterations"] = int(result.newton_iterations)
+        g.attrs["linear_solves"] = int(getattr(result, "linear_solves", 0))
+        g.attrs["wall_time_s"] = float(result.wall_time_s)
+        g.attrs["continuation"] = json.dumps(_json_safe(
+            [list(step) for step in getattr(result, "continuation", [])]))
+    return path
+
+
+def write_vtu(result: Any, path: str | Path) -> Path:
+    """Write the nodal fields as a VTK unstructured grid (``.vtu``) at ``path``.
+
+    Line contact: 1D line cells between consecutive nodes. Point contact: quads on the
+    structured (ny, nx) grid. Point data: ``pressure_Pa``, ``film_m``, extra fields.
+    """
+    import meshio
+
+    pts, index = _grid(result)
+    if index is None:
+        n = pts.shape[0]
+        cells = [("line", np.column_stack([np.arange(n - 1), np.arange(1, n)]))]
+    else:
+        quads = np.column_stack([index[:-1, :-1].ravel(), index[:-1, 1:].ravel(),
+                                 index[1:, 1:].ravel(), index[1:, :-1].ravel()])
+        cells = [("quad", quads)]
+    data = {name: arr.ravel() for name, arr in _fields(result).items()}
+    mesh = meshio.Mesh(pts, cells, point_data=data)
+    meshio.write(str(path), mesh, file_format="vtu")
+    return Path(path)
+
+
+def export(result: Any, outdir: str | Path) -> dict[str, Path]:
+    """Write ``summary.json``, ``result.h5`` and ``fields.vtu`` of a result into ``outdir``.
+
+    All three files are first written under temporary names in ``outdir`` and then moved
+    into place with :func:`os.replace`; if any writer fails, the temporary files are
+    removed and existing files are left untouched. ``result`` is not modified.
+
+    Parameters
+    ----------
+    result : Result
+        Any result of :func:`bearing_fem.solve` (successful or not: the status is stored).
+    outdir : str or Path
+        Output directory, created with its parents if needed.
+
+    Returns
+    -------
+    dict[str, Path]
+        ``{"summary": .../summary.json, "h5": .../result.h5, "vtu": .../fields.vtu}``.
+    """
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    stage = _Staging(outdir)
+    try:
+        write_summary(result, stage.temp(FILES["summary"]))
+        write_h5(result, stage.temp(FILES["h5"]))
+        write_vtu(result, stage.temp(FILES["vtu"]))
+        stage.commit()
+    except BaseException:
+        stage.discard()
+        raise
+    return {key: outdir / name for key, name in FILES.items()}
+
+
+# ---------------------------------------------------------------------------------------
+# reader
+# ---------------------------------------------------------------------------------------
+def read_result(path: str | Path) -> dict[str, Any]:
+    """Read a ``result.h5`` written by :func:`export` (or the directory holding it).
+
+    Parameters
+    ----------
+    path : str or Path
+        The HDF5 file, or an export directory containing ``result.h5``.
+
+    Returns
+    -------
+    dict
+        ``kind``, ``status``, ``success``, ``message``, ``version``, ``h0`` [m];
+        ``x``, ``y`` (None for line contacts) [m]; ``pressure_Pa``, ``film_m``;
+        ``fields`` (every nodal dataset by name, including the two above and the extra
+        fields); ``units`` (dataset name -> unit); ``scene`` (dict with the TOML
+        layout) and ``scene_toml`` (text); ``summary`` (dict); ``history``,
+        ``newton_iterations``, ``linear_solves``, ``wall_time_s``, ``continuation``.
+    """
+    import h5py
+
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # pragma: no cover
+        import tomli as tomllib  # type: ignore[no-redef]
+
+    path = Path(path)
+    if path.is_dir():
+        path = path / FILES["h5"]
+    out: dict[str, Any] = {}
+    with h5py.File(path, "r") as f:
+        a = f.attrs
+        out["kind"] = str(a["kind"])
+        out["status"] = str(a["status"])
+        out["success"] = bool(a["success"])
+        out["message"] = str(a["message"])
+        out["version"] = str(a["version"])
+        out["h0"] = float(a["h0"])
+        out["scene_toml"] = str(a["scene"])
+        out["scene"] = tomllib.loads(out["scene_toml"])
+        out["summary"] = json.loads(str(a["summary"]))
+        units: dict[str, str] = {}
+        fields: dict[str, np.ndarray] = {}
+        for name, ds in f.items():
+            if not isinstance(ds, h5py.Dataset):
+                continue
+            units[name] = str(ds.attrs.get("unit", ""))
+            if name not in ("x", "y"):
+                fields[name] = ds[()]
+        out["x"] = f["x"][()]
+        out["y"] = f["y"][()] if "y" in f else None
+        out["pressure_Pa"] = fields["pressure_Pa"]
+        out["film_m"] = fields["film_m"]
+        out["fields"] = fields
+        out["units"] = units
+        g = f["convergence"]
+        out["history"] = g["history"][()]
+        out["newton_iterations"] = int(g.attrs["newton_iterations"])
+        out["linear_solves"] = int(g.attrs["linear_solves"])
+        out["wall_time_s"] = float(g.attrs["wall_time_s"])
+        out["continuation"] = json.loads(str(g.attrs["continuation"]))
+    return out
