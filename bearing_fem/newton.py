@@ -64,7 +64,7 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
     Each iteration solves (J + sigma D) dz = -F, D = identity on the field unknowns
     (pseudo-transient / Levenberg-Marquardt regularisation), then backtracks
     lam = 1, 1/2, ... >= ``min_step`` on the merit |F|^2/2 (Armijo). If no step is
-    accepted, sigma grows (x4, from 1e-3) and the iteration is repeated; after an
+    accepted, sigma grows (x10, from 1e-2; stall above 1) and the iteration is repeated; after an
     accepted step sigma shrinks (/4) and is dropped below 1e-8, so the final iterations
     are plain Newton with quadratic convergence. Far from the solution the
     regularisation keeps nodes whose linearisation is poor (e.g. where
@@ -106,7 +106,7 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
         if it >= max_iterations:
             status = "max_iterations"
             break
-        if sigma > 1e8:
+        if sigma > 1.0:  # three regularised retries failed: give up on this attempt
             status = "stalled"
             break
         it += 1
@@ -132,7 +132,7 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
                         break
                 lam *= 0.5
         if not accepted:
-            sigma = max(4.0 * sigma, 1e-3)
+            sigma = max(10.0 * sigma, 1e-2)
             log.debug("newton %d: step rejected, sigma -> %.2e", it, sigma)
             continue
         z, steps = zt, steps + [lam]

@@ -34,12 +34,27 @@ def full_film_indicator_line(x_q: np.ndarray, outlet: float | None) -> np.ndarra
 
 
 def outlet_position_line(x: np.ndarray, p: np.ndarray, cavitation: str) -> float | None:
-    """First node downstream of the pressure maximum with p <= 0 [m] (None if none)."""
+    """Cavitation (outlet) boundary downstream of the pressure maximum [m], sub-grid.
+
+    At a Reynolds free boundary p = dp/dx = 0, so p ~ c (x_c - x)^2 and sqrt(p) is linear
+    in x: x_c is found by extrapolating sqrt(p) from the last two pressurised nodes to
+    zero (second-order accurate), bounded by the first cavitated node. None when the
+    scene has no cavitation or no pressurised node precedes a cavitated one.
+    """
     if cavitation != "reynolds" or not np.any(p > 0):
         return None
     i = int(np.argmax(p))
     idx = np.nonzero(p[i:] <= 0.0)[0]
-    return float(x[i + idx[0]]) if idx.size else None
+    if not idx.size:
+        return None
+    k = i + int(idx[0])  # first cavitated node
+    if k - 2 < i:
+        return float(x[k])
+    s1, s2 = np.sqrt(p[k - 1]), np.sqrt(p[k - 2])
+    if s2 <= s1:
+        return float(x[k])
+    xc = x[k - 1] + (x[k - 1] - x[k - 2]) * s1 / (s2 - s1)
+    return float(min(xc, x[k]))
 
 
 def film_quantities(x: np.ndarray, p: np.ndarray, h_nodes: np.ndarray,

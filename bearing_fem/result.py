@@ -15,6 +15,7 @@ _UNITS_POINT = {
     "friction_force": "N", "friction_force_surface2": "N", "rolling_resistance": "N",
     "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
     "heat_power_couette": "W", "heat_power_poiseuille": "W", "outlet_position": "m",
+    "h_outlet": "m",
     "wall_time_s": "s",
 }
 

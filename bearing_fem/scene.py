@@ -349,6 +349,139 @@ class SolverSpec:
             raise SceneError(f"solver.continuation must be true or false, got {self.continuation!r}")
 
 
+@dataclass(frozen=True, kw_only=True)
+class Thermal:
+    """Thermal coupling (``model.thermal = "patch"``; see ``docs/coupling.md``).
+
+    Parameters
+    ----------
+    oil_temperature : float
+        Bulk oil (and far-field body) temperature [deg C]. No default.
+    exponent : float
+        Prokofiev exponent n [-] of eta0(t) = eta_ref (t_ref/t)^n (seed 000). No default.
+    temperature_law : {"prokofiev"}
+    reference_temperature : float
+        t_ref [deg C] at which ``reference_viscosity`` (or ``lubricant.viscosity``) holds.
+    reference_viscosity : float or None
+        eta_ref [Pa s]; None: ``lubricant.viscosity`` is the value at t_ref.
+    piezo_temperatures, piezo_values : (float, ...) or None
+        Optional alpha(t) table: temperatures [deg C] (ascending) and alpha [1/Pa];
+        ln(alpha) is interpolated linearly in t (and extrapolated), i.e.
+        alpha = alpha_i exp(-beta (t - t_i)). None: ``lubricant.piezo`` at every t.
+    conductivity, density, heat_capacity : float
+        Body 1 lambda [W/(m K)], rho [kg/m^3], c [J/(kg K)] (bearing steel defaults).
+    conductivity2, density2, heat_capacity2 : float or None
+        Body 2 values; None: same as body 1.
+    source_model : {"jaeger", "fe"}
+        Flash temperature of each body: closed-form high-Peclet Jaeger integral, or the
+        FE moving source (:func:`bearing_fem.thermal.moving_source`).
+    contact_temperature : {"mean", "max"}
+        Which surface temperature rise sets eta0: the pressure-weighted mean or the maximum.
+    max_iterations : int
+        Fixed-point iterations allowed.
+    tolerance : float
+        Stop when the contact temperature changes by less than this [K].
+    relaxation : float
+        Under-relaxation factor omega in (0, 1] of the temperature update [-].
+    """
+
+    _section = "thermal"
+    oil_temperature: float
+    exponent: float
+    temperature_law: Literal["prokofiev"] = "prokofiev"
+    reference_temperature: float = 40.0
+    reference_viscosity: float | None = None
+    piezo_temperatures: tuple[float, ...] | None = None
+    piezo_values: tuple[float, ...] | None = None
+    conductivity: float = 46.0
+    density: float = 7850.0
+    heat_capacity: float = 470.0
+    conductivity2: float | None = None
+    density2: float | None = None
+    heat_capacity2: float | None = None
+    source_model: Literal["jaeger", "fe"] = "jaeger"
+    contact_temperature: Literal["mean", "max"] = "mean"
+    max_iterations: int = 30
+    tolerance: float = 0.05
+    relaxation: float = 0.7
+
+    def __post_init__(self) -> None:
+        _positive(self, "oil_temperature", "deg C (Prokofiev law needs t > 0 deg C)")
+        _positive(self, "exponent", "(dimensionless)")
+        _choice(self, "temperature_law", ("prokofiev",))
+        _positive(self, "reference_temperature", "deg C")
+        if self.reference_viscosity is not None:
+            _positive(self, "reference_viscosity", "Pa s")
+        for name in ("conductivity", "density", "heat_capacity"):
+            unit = {"conductivity": "W/(m K)", "density": "kg/m^3",
+                    "heat_capacity": "J/(kg K)"}[name]
+            _positive(self, name, unit)
+            if getattr(self, name + "2") is not None:
+                _positive(self, name + "2", unit)
+        _choice(self, "source_model", ("jaeger", "fe"))
+        _choice(self, "contact_temperature", ("mean", "max"))
+        ts, vs = self.piezo_temperatures, self.piezo_values
+        if (ts is None) != (vs is None):
+            raise SceneError("thermal: give both thermal.piezo_temperatures (deg C) and "
+                             f"thermal.piezo_values (1/Pa), or neither; got {ts!r}, {vs!r}")
+        if ts is not None:
+            ok = (isinstance(ts, (list, tuple)) and isinstance(vs, (list, tuple))
+                  and len(ts) == len(vs) >= 1
+                  and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                          and math.isfinite(v) for v in (*ts, *vs)))
+            if not ok:
+                raise SceneError("thermal.piezo_temperatures (deg C) and thermal.piezo_values "
+                                 f"(1/Pa) must be equal-length lists of numbers, got {ts!r}, {vs!r}")
+            if any(b <= a for a, b in zip(ts, ts[1:])):
+                raise SceneError(f"thermal.piezo_temperatures must be strictly ascending (deg C), "
+                                 f"got {ts!r}")
+            if any(not 0.0 < v <= 1e-6 for v in vs):
+                raise SceneError(f"thermal.piezo_values must lie in (0, 1e-6] 1/Pa, got {vs!r}")
+            object.__setattr__(self, "piezo_temperatures", tuple(float(v) for v in ts))
+            object.__setattr__(self, "piezo_values", tuple(float(v) for v in vs))
+        m = self.max_iterations
+        if isinstance(m, bool) or not isinstance(m, int) or not 1 <= m <= 1000:
+            raise SceneError(f"thermal.max_iterations must be an integer in [1, 1000], got {m!r}")
+        _positive(self, "tolerance", "K")
+        r = _positive(self, "relaxation", "(dimensionless)")
+        if r > 1.0:
+            raise SceneError(f"thermal.relaxation must lie in (0, 1] (dimensionless), got {r!r}")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Traction:
+    """Shear (traction) model of the sliding (Couette) stress; see ``docs/coupling.md``.
+
+    Parameters
+    ----------
+    model : {"newtonian", "eyring", "limiting"}
+        ``newtonian`` tau = eta u_s/h (default: what post-processing reports);
+        ``eyring`` tau = tau0 asinh(eta u_s/(h tau0));
+        ``limiting`` tau = min(eta u_s/h, tau_L0 + Lambda p).
+    eyring_stress : float
+        Eyring stress tau0 [Pa] (typical oils 2..10 MPa).
+    limiting_shear_stress : float
+        tau_L0 [Pa], the limiting shear stress at p = 0.
+    limiting_slope : float
+        Lambda [-], pressure slope of the limiting shear stress (typical 0.05..0.1).
+    """
+
+    _section = "traction"
+    model: Literal["newtonian", "eyring", "limiting"] = "newtonian"
+    eyring_stress: float = 5.0e6
+    limiting_shear_stress: float = 2.0e6
+    limiting_slope: float = 0.075
+
+    def __post_init__(self) -> None:
+        _choice(self, "model", ("newtonian", "eyring", "limiting"))
+        _positive(self, "eyring_stress", "Pa")
+        _nonneg(self, "limiting_shear_stress", "Pa")
+        _nonneg(self, "limiting_slope", "(dimensionless)")
+        if self.limiting_shear_stress == 0.0 and self.limiting_slope == 0.0:
+            raise SceneError("traction: limiting_shear_stress (Pa) and limiting_slope (-) are "
+                             "both 0: the limiting stress would vanish")
+
+
 _SECTIONS: dict[str, type] = {
     "contact": Contact,
     "materials": Materials,
@@ -358,6 +491,8 @@ _SECTIONS: dict[str, type] = {
     "model": Model,
     "mesh": MeshSpec,
     "solver": SolverSpec,
+    "thermal": Thermal,
+    "traction": Traction,
 }
 _REQUIRED = ("contact", "lubricant", "kinematics", "load")
 
@@ -375,6 +510,8 @@ class Scene:
     model: Model = field(default_factory=Model)
     mesh: MeshSpec = field(default_factory=MeshSpec)
     solver: SolverSpec = field(default_factory=SolverSpec)
+    thermal: Thermal | None = None
+    traction: Traction = field(default_factory=Traction)
 
     def __post_init__(self) -> None:
         if not isinstance(self.title, str):
@@ -395,6 +532,9 @@ class Scene:
             if want_two != isinstance(nodes, tuple) or (want_two and len(nodes) != 2):
                 raise SceneError(f"mesh.nodes must be {'[nx, ny]' if want_two else 'one integer'} "
                                  f"for a {self.contact.kind} contact, got {list(nodes) if isinstance(nodes, tuple) else nodes!r}")
+        if self.model.thermal == "patch" and self.thermal is None:
+            raise SceneError("model.thermal = 'patch' needs a [thermal] section (at least "
+                             "thermal.oil_temperature in deg C and thermal.exponent)")
         if self.mesh.y_range is not None and self.contact.kind == "line":
             raise SceneError("mesh.y_range applies to point contacts only")
 

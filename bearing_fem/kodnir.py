@@ -1,0 +1,730 @@
+"""Seed 000's dimensionless EHL boundary problem (Kodnir), solved by finite elements.
+
+Seed 000 (Yachikov & Vostrikov 2015, eqs 4-6) writes the isothermal, Newtonian, Barus,
+locally compliant line contact as
+
+    dk/dz = (1 - H)/H^3 exp(B alpha k),     H = 1 - z_a^2 + z^2 + C k,           (4), (5)
+    k(z_a) = 0, H(z_a) = 1 at the outlet z_a < 0;  k(z_b) = 0 at the inlet z_b > 0, (6)
+
+and solves it by shooting on z_a. Here the same problem is solved by P1 finite elements
+(scikit-fem), semismooth Newton and continuation, with no shooting.
+
+Symbols (all DIMENSIONLESS; PHYSICS.md section 4, "Seed 000 (Kodnir) variables"):
+
+=========  =====================================================================
+z          x/B1, x AGAINST the motion (inlet at z_b = +20, outlet z_a < 0)
+k          p/B, dimensionless pressure
+H          h/h*, film over the film h* where dp/dx = 0 at the outlet
+C          A' B/(E h*), local compliance (elastic deflection C k)
+b_alpha    B alpha, piezo-viscous parameter (viscosity exp(b_alpha k))
+H_off      1 - z_a^2, offset of the film (an unknown of the discretisation)
+eps        H^3 exp(-b_alpha k), flow coefficient
+F          eps dk/dz + H, mass flux (in units of the Couette flux of the film h*)
+=========  =====================================================================
+
+Formulation. Eq (4) is the once-integrated Reynolds equation
+F = H^3 exp(-b_alpha k) dk/dz + H = 1. Differentiating, -dF/dz = 0: the Reynolds equation
+in divergence form, d/dz(eps dk/dz) = -dH/dz (the fluid moves towards -z), whose
+weak form on a fixed domain z in [z_min, z_b] is
+
+    R_i = int F dphi_i/dz dz = 0       (phi_i the P1 hat functions).
+
+Cavitation (Reynolds / Swift-Stieber) is the complementarity problem k_i >= 0, R_i >= 0,
+k_i R_i = 0 at every free node, written as a Fischer-Burmeister row. In the cavitated
+zone z < z_a, k = 0 and R_i ~ -dH/dz dz > 0 (diverging gap). The free boundary gets
+k = dk/dz = 0 automatically, so there the flux is F = H(z_a).
+
+The flux condition. With P1 elements, R_i = Fbar(e_left) - Fbar(e_right) (element means
+of F), so the Galerkin equations make the element-mean flux the same constant Q in every
+pressurised element (discrete mass conservation), and Q is the reaction (weak residual)
+at the Dirichlet inlet node z_b. The extra scalar equation that determines the extra
+unknown H_off is Q = R_N = 1: the film at the outlet, where dk/dz = 0, equals h*
+(H = 1) -- exactly the seed's condition H(z_a) = 1 of eq (6). Then z_a = -sqrt(1 - H_off)
+by eq (5): the outlet position is a continuous function of the unknowns (sub-grid).
+The free-boundary position (where k drops to 0) is reported separately, from a linear
+extrapolation of sqrt(k) (k ~ (z - z_a)^2 near a Reynolds outlet) through the two first
+pressurised nodes; both converge to the same point and their difference is a
+discretisation-error indicator.
+
+Stabilisation. Where exp(b_alpha k) is large, eps -> 0 and the equation degenerates to
+the advection of k through the elastic film term C k (Galerkin P1 then gives odd-even
+oscillations). The flux is stabilised by streamline-upwind Petrov-Galerkin exactly as
+in :mod:`bearing_fem.reynolds` (test function v + tau beta dv/dz, advection speed
+beta = -C, tau beta = -(dz/2)(coth Pe - 1/Pe), Pe = C dz / (2 eps), multiplying the
+element strong residual S = -d(eps)/dz dk/dz - dH/dz); consistent (S = 0 for the exact
+solution) and absent when C = 0. The derivatives of the pointwise flux are taken by the
+complex-step method.
+
+Post-processing (seed 000 eqs 8-9): I = int_{z_a}^{z_b} (1 - H) dk/dz dz and
+J = int_{z_a}^{z_b} exp(b_alpha k)/H dz; dimensional friction and heat by
+:func:`kodnir_friction_heat`.
+"""
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from scipy.optimize import brentq
+from skfem import CellBasis, ElementLineP1, MeshLine
+
+from .fe import QuadratureOperators, quadrature_operators
+from .line import fischer_burmeister
+from .newton import NewtonOutcome, damped_newton
+from .reynolds import _coth_minus_inverse
+
+log = logging.getLogger(__name__)
+
+__all__ = ["KodnirResult", "KodnirScales", "KodnirFrictionHeat", "solve", "kodnir_scales",
+           "kodnir_friction_heat", "to_dimensional", "graded_grid"]
+
+_STEP = 1e-20  # complex step
+
+
+# ----------------------------------------------------------------------------------------
+# Grid
+# ----------------------------------------------------------------------------------------
+def graded_grid(z_min: float, z_fine: float, z_b: float, nodes: int,
+                fine_fraction: float = 0.8) -> np.ndarray:
+    """Node coordinates: uniform on [z_min, z_fine], geometric growth up to z_b.
+
+    ``fine_fraction`` of the intervals are uniform (spacing dz); the rest grow
+    geometrically from dz so that they end exactly at z_b (dimensionless z).
+    """
+    if not z_min < z_fine < z_b:
+        raise ValueError(f"need z_min < z_fine < z_b, got {z_min}, {z_fine}, {z_b}")
+    n_int = nodes - 1
+    n_f = max(2, int(round(fine_fraction * n_int)))
+    n_c = n_int - n_f
+    dz = (z_fine - z_min) / n_f
+    fine = np.linspace(z_min, z_fine, n_f + 1)
+    length = z_b - z_fine
+    if n_c <= 0:
+        return np.append(fine[:-1], np.linspace(z_fine, z_b, 2))
+    if length <= n_c * dz:  # no growth needed
+        return np.append(fine, np.linspace(z_fine, z_b, n_c + 1)[1:])
+    r_hi = min(10.0, math.exp(600.0 / n_c))
+    ratio = brentq(lambda r: dz * np.expm1(n_c * np.log(r)) / (r - 1.0) - length,
+                   1.0 + 1e-12, r_hi)
+    steps = dz * ratio ** np.arange(1, n_c + 1)
+    coarse = z_fine + np.cumsum(steps)
+    coarse[-1] = z_b
+    return np.append(fine, coarse)
+
+
+@dataclass
+class _Grid:
+    z: np.ndarray
+    ops: QuadratureOperators
+
+    @classmethod
+    def from_nodes(cls, z: np.ndarray, intorder: int = 4) -> "_Grid":
+        basis = CellBasis(MeshLine(np.asarray(z, dtype=float)), ElementLineP1(), intorder=intorder)
+        return cls(z=np.asarray(z, dtype=float), ops=quadrature_operators(basis))
+
+
+# ----------------------------------------------------------------------------------------
+# Pointwise flux
+# ----------------------------------------------------------------------------------------
+def _flux(k, H, kp, Hp, dz, b_alpha: float, C: float):
+    """Stabilised flux F = eps k' + H + tau beta S at quadrature points (dimensionless)."""
+    eps = H**3 * np.exp(-b_alpha * k)
+    f = eps * kp + H
+    if C > 0.0:
+        strong = -eps * (3.0 * Hp / H - b_alpha * kp) * kp - Hp
+        pe = C * dz / (2.0 * eps)
+        f = f - 0.5 * dz * _coth_minus_inverse(pe) * strong
+    return f
+
+
+def _flux_derivatives(k, H, kp, Hp, dz, b_alpha, C):
+    """Flux and its partial derivatives w.r.t. (k, H, k', H') by complex step."""
+    base = _flux(k, H, kp, Hp, dz, b_alpha, C)
+    args = [k, H, kp, Hp]
+    out = []
+    for j in range(4):
+        v = args[j]
+        scale = float(np.max(np.abs(v))) if v.size else 1.0
+        step = _STEP * (scale if scale > 0 else 1.0)
+        a = list(args)
+        a[j] = v + 1j * step
+        out.append(np.imag(_flux(*a, dz, b_alpha, C)) / step)
+    return base, out
+
+
+# ----------------------------------------------------------------------------------------
+# Nonlinear problem (implements newton.NonlinearProblem)
+# ----------------------------------------------------------------------------------------
+class KodnirProblem:
+    """Discrete system of seed 000's problem on a fixed grid.
+
+    Unknowns: k at the interior nodes (k = 0 at z_min and z_b) and H_off.
+    Rows: Fischer-Burmeister(k_i, R_i s_i) at interior nodes, s_i a frozen row scale
+    (1/|dR_i/dk_i|, so the residual is in units of k); last row Q - 1 = R_N - 1.
+    """
+
+    def __init__(self, grid: _Grid, C: float, b_alpha: float) -> None:
+        self.grid, self.C, self.b_alpha = grid, float(C), float(b_alpha)
+        ops = grid.ops
+        self.zq = ops.points[0]
+        n = grid.z.size
+        self.n = n
+        self.free = np.arange(1, n - 1)
+        self.n_unknowns = self.free.size + 1
+        self._scale: np.ndarray | None = None
+
+    # fields -----------------------------------------------------------------------------
+    def unpack(self, u: np.ndarray) -> tuple[np.ndarray, float]:
+        k = np.zeros(self.n, dtype=u.dtype)
+        k[self.free] = u[:-1]
+        return k, u[-1]
+
+    def pack(self, k: np.ndarray, h_off: float) -> np.ndarray:
+        return np.append(k[self.free], h_off)
+
+    def film_nodes(self, k: np.ndarray, h_off: float) -> np.ndarray:
+        return h_off + self.grid.z**2 + self.C * k
+
+    def fields_q(self, k: np.ndarray, h_off: float):
+        ops = self.grid.ops
+        kq = ops.value @ k
+        kp = ops.grad[0] @ k
+        H = h_off + self.zq**2 + self.C * kq
+        Hp = 2.0 * self.zq + self.C * kp
+        return kq, H, kp, Hp
+
+    def nodal_residual(self, k: np.ndarray, h_off: float) -> np.ndarray:
+        """R_i = int F dphi_i/dz at all nodes (R at z_b is the flux Q)."""
+        kq, H, kp, Hp = self.fields_q(k, h_off)
+        f = _flux(kq, H, kp, Hp, self.grid.ops.element_size, self.b_alpha, self.C)
+        return self.grid.ops.weak_divergence(f)
+
+    # NonlinearProblem -------------------------------------------------------------------
+    def prepare(self, u: np.ndarray) -> None:
+        # the row scale is frozen at the first iterate (the previous continuation
+        # solution) so that the Newton merit |F|^2 is the same function all along
+        if self._scale is not None:
+            return
+        k, h_off = self.unpack(u)
+        ops = self.grid.ops
+        kq, H, kp, Hp = self.fields_q(k, h_off)
+        _, d = _flux_derivatives(kq, H, kp, Hp, ops.element_size, self.b_alpha, self.C)
+        a = ops.flux_jacobian(0, d[0] + self.C * d[1], (d[2] + self.C * d[3],))
+        diag = np.abs(a.diagonal())[self.free]
+        self._scale = 1.0 / np.maximum(diag, 1e-300)
+
+    def admissible(self, u: np.ndarray) -> bool:
+        if not np.all(np.isfinite(u)):
+            return False
+        k, h_off = self.unpack(u)
+        _, H, _, _ = self.fields_q(k, h_off)
+        if not (np.min(H) > 0.0 and np.min(self.film_nodes(k, h_off)) > 0.0):
+            return False
+        with np.errstate(over="ignore"):
+            return bool(np.all(np.isfinite(np.exp(self.b_alpha * np.abs(k)))))
+
+    def residual(self, u: np.ndarray) -> np.ndarray:
+        k, h_off = self.unpack(u)
+        with np.errstate(over="ignore", invalid="ignore"):
+            r = self.nodal_residual(k, h_off)
+        phi, _, _ = fischer_burmeister(k[self.free], r[self.free] * self._scale)
+        return np.append(phi, r[-1] - 1.0)
+
+    def jacobian(self, u: np.ndarray) -> sp.csc_matrix:
+        k, h_off = self.unpack(u)
+        ops = self.grid.ops
+        kq, H, kp, Hp = self.fields_q(k, h_off)
+        f, d = _flux_derivatives(kq, H, kp, Hp, ops.element_size, self.b_alpha, self.C)
+        r = ops.weak_divergence(f)
+        a = ops.flux_jacobian(0, d[0] + self.C * d[1], (d[2] + self.C * d[3],)).tocsr()
+        col_h = np.asarray(ops.grad[0].T @ (ops.weights * d[1])).ravel()
+        fr = self.free
+        s = self._scale
+        _, da, db = fischer_burmeister(k[fr], r[fr] * s)
+        jk = sp.diags(db * s) @ a[fr][:, fr] + sp.diags(da)
+        jh = (db * s * col_h[fr])[:, None]
+        last_k = a[self.n - 1][:, fr]
+        last_h = np.array([[col_h[self.n - 1]]])
+        return sp.bmat([[jk, sp.csr_matrix(jh)], [last_k, sp.csr_matrix(last_h)]], format="csc")
+
+    def newton_step(self, u: np.ndarray, shift: float = 0.0) -> np.ndarray:
+        j = self.jacobian(u)
+        f = self.residual(u)
+        if shift:
+            d = np.full(j.shape[0], shift)
+            d[-1] = 0.0
+            j = j + sp.diags(d)
+        return spla.spsolve(j.tocsc(), -f)
+
+
+# ----------------------------------------------------------------------------------------
+# Result
+# ----------------------------------------------------------------------------------------
+@dataclass
+class KodnirResult:
+    """Solution of seed 000's problem (4)-(6). Everything is dimensionless.
+
+    Attributes
+    ----------
+    success : bool
+    status : str
+        ``converged`` or the reason of failure (``invalid``, ``no_convergence``,
+        ``outlet_outside_domain``).
+    message : str
+    C, b_alpha, z_b : float
+        Parameters.
+    z_a : float
+        Outlet position -sqrt(1 - H_off) (seed's z_a, eq 5); NaN only when unsuccessful.
+    z_a_free_boundary : float
+        Where k drops to 0, from sqrt(k) extrapolation (agrees with z_a to discretisation
+        accuracy).
+    k_max : float
+        Maximum of k (sub-grid parabola through the three nodes around the largest nodal k).
+    z_k_max : float
+        Its position.
+    h_min : float
+        Minimum of H over [z_a, z_b] (sub-grid parabola), and ``z_h_min`` its position.
+    h_offset : float
+        H_off = 1 - z_a^2.
+    friction_integral : float
+        I = int_{z_a}^{z_b} (1 - H) dk/dz dz (seed eq 8).
+    couette_integral : float
+        J = int_{z_a}^{z_b} exp(b_alpha k)/H dz (seed eq 9).
+    flux : float
+        Discrete mass flux Q (1 when converged).
+    z, k, H : ndarray
+        Nodes, nodal k, nodal H of the final grid.
+    iterations : int
+        Total Newton iterations (all continuation steps and grids).
+    continuation : list of (C, b_alpha, status, iterations)
+    """
+
+    success: bool
+    status: str
+    message: str
+    C: float
+    b_alpha: float
+    z_b: float
+    z_a: float = math.nan
+    z_a_free_boundary: float = math.nan
+    k_max: float = math.nan
+    z_k_max: float = math.nan
+    h_min: float = math.nan
+    z_h_min: float = math.nan
+    h_offset: float = math.nan
+    friction_integral: float = math.nan
+    couette_integral: float = math.nan
+    flux: float = math.nan
+    z: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    k: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    H: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    iterations: int = 0
+    continuation: list = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        return (f"KodnirResult(message={self.message!r}, success={self.success}, "
+                f"status={self.status!r}, C={self.C}, b_alpha={self.b_alpha}, "
+                f"z_a={self.z_a:.6g}, k_max={self.k_max:.6g}, h_min={self.h_min:.6g}, "
+                f"I={self.friction_integral:.6g}, J={self.couette_integral:.6g}, "
+                f"z: shape {self.z.shape})")
+
+    def summary(self) -> dict:
+        """Flat dict of the scalar outputs."""
+        keys = ["success", "status", "message", "C", "b_alpha", "z_b", "z_a",
+                "z_a_free_boundary", "k_max", "z_k_max", "h_min", "z_h_min", "h_offset",
+                "friction_integral", "couette_integral", "flux", "iterations"]
+        out = {k: getattr(self, k) for k in keys}
+        out["nodes"] = int(self.z.size)
+        return out
+
+
+# ----------------------------------------------------------------------------------------
+# Post-processing of a discrete solution
+# ----------------------------------------------------------------------------------------
+def _parabola_extremum(z: np.ndarray, f: np.ndarray, i: int) -> tuple[float, float]:
+    """Vertex of the parabola through nodes i-1, i, i+1 (falls back to the node)."""
+    if i <= 0 or i >= z.size - 1:
+        return float(z[i]), float(f[i])
+    c = np.polyfit(z[i - 1:i + 2] - z[i], f[i - 1:i + 2], 2)
+    if c[0] == 0.0:
+        return float(z[i]), float(f[i])
+    zv = -c[1] / (2 * c[0])
+    if abs(zv) > max(z[i + 1] - z[i], z[i] - z[i - 1]):
+        return float(z[i]), float(f[i])
+    return float(z[i] + zv), float(np.polyval(c, zv))
+
+
+def _free_boundary(z: np.ndarray, k: np.ndarray) -> float:
+    """Outlet where k drops to 0: sqrt(k) extrapolated linearly from the two first
+    pressurised nodes (k ~ (z - z_a)^2 at a Reynolds boundary)."""
+    pos = np.nonzero(k > 0.0)[0]
+    if pos.size < 3:
+        return math.nan
+    i = pos[0]
+    # the first pressurised node lies within one cell of the free boundary, where the
+    # complementarity solution is least accurate: use nodes i+1 and i+2
+    s1, s2 = math.sqrt(max(k[i + 1], 0.0)), math.sqrt(max(k[i + 2], 0.0))
+    if s2 <= s1:
+        return float(z[i])
+    return float(z[i + 1] - s1 * (z[i + 2] - z[i + 1]) / (s2 - s1))
+
+
+def _gauss_on(a: float, b: float, n: int = 8) -> tuple[np.ndarray, np.ndarray]:
+    t, w = np.polynomial.legendre.leggauss(n)
+    return 0.5 * (b - a) * t + 0.5 * (a + b), 0.5 * (b - a) * w
+
+
+def _integrals(prob: KodnirProblem, k: np.ndarray, h_off: float, z_a: float) -> tuple[float, float]:
+    """I and J over [z_a, z_b]: scikit-fem quadrature on the elements right of z_a and a
+    Gauss rule on the part of the element cut by z_a."""
+    grid, ops = prob.grid, prob.grid.ops
+    kq, H, kp, _ = prob.fields_q(k, h_off)
+    nq = ops.n_quad
+    z = grid.z
+    left = np.repeat(z[:-1], nq)
+    full = left >= z_a
+    w = ops.weights * full
+    with np.errstate(over="ignore"):
+        i_val = float(w @ ((1.0 - H) * kp))
+        j_val = float(w @ (np.exp(prob.b_alpha * kq) / H))
+    e = int(np.searchsorted(z, z_a) - 1)
+    if 0 <= e < z.size - 1:
+        zg, wg = _gauss_on(z_a, z[e + 1])
+        kg = np.interp(zg, z, k)
+        slope = (k[e + 1] - k[e]) / (z[e + 1] - z[e])
+        Hg = h_off + zg**2 + prob.C * kg
+        i_val += float(wg @ ((1.0 - Hg) * slope))
+        j_val += float(wg @ (np.exp(prob.b_alpha * kg) / Hg))
+    return i_val, j_val
+
+
+def _finish(res: KodnirResult, prob: KodnirProblem, u: np.ndarray) -> KodnirResult:
+    k, h_off = prob.unpack(u)
+    z = prob.grid.z
+    H = prob.film_nodes(k, h_off)
+    res.z, res.k, res.H = z.copy(), k.copy(), H.copy()
+    res.h_offset = float(h_off)
+    res.flux = float(prob.nodal_residual(k, h_off)[-1])
+    res.z_a = -math.sqrt(max(1.0 - h_off, 0.0))
+    res.z_a_free_boundary = _free_boundary(z, k)
+    res.z_k_max, res.k_max = _parabola_extremum(z, k, int(np.argmax(k)))
+    inside = z >= res.z_a
+    idx = np.nonzero(inside)[0]
+    i_min = int(idx[np.argmin(H[idx])])
+    res.z_h_min, res.h_min = _parabola_extremum(z, H, i_min)
+    res.friction_integral, res.couette_integral = _integrals(prob, k, h_off, res.z_a)
+    return res
+
+
+# ----------------------------------------------------------------------------------------
+# Driver
+# ----------------------------------------------------------------------------------------
+def _check(C: float, b_alpha: float, z_b: float, nodes: int) -> None:
+    for name, val in (("C", C), ("b_alpha", b_alpha), ("z_b", z_b)):
+        if not isinstance(val, (int, float, np.floating, np.integer)) or not math.isfinite(val):
+            raise ValueError(f"{name} must be a finite number (dimensionless), got {val!r}")
+    if C < 0:
+        raise ValueError(f"C (dimensionless compliance) must be >= 0, got {C}")
+    if b_alpha < 0:
+        raise ValueError(f"b_alpha (dimensionless B alpha) must be >= 0, got {b_alpha}")
+    if z_b <= 0:
+        raise ValueError(f"z_b (dimensionless inlet position) must be > 0, got {z_b}")
+    if int(nodes) < 50:
+        raise ValueError(f"nodes must be >= 50, got {nodes}")
+
+
+def _initial_guess(prob: KodnirProblem) -> np.ndarray:
+    """Rigid isoviscous solution (C = 0, b_alpha = 0) as initial guess.
+
+    With H = H_off + z^2 the flux form of eq (4) integrates from the inlet,
+    k(z) = int_z^{z_b} (H - 1)/H^3 dz, clipped at 0 downstream of its first zero, and
+    H_off is chosen so that this k vanishes again at z_a = -sqrt(1 - H_off)
+    (Martin's outlet when z_b -> infinity).
+    """
+    from scipy.integrate import cumulative_trapezoid
+
+    z = prob.grid.z
+    zz = np.unique(np.concatenate([z, np.linspace(z[0], z[-1], 4001)]))
+
+    def profile(h_off: float) -> np.ndarray:
+        H = h_off + zz**2
+        f = (H - 1.0) / H**3
+        c = cumulative_trapezoid(f, zz, initial=0.0)
+        return c[-1] - c
+
+    def k_at_outlet(h_off: float) -> float:
+        za = -math.sqrt(1.0 - h_off)
+        return float(np.interp(za, zz, profile(h_off)))
+
+    try:
+        h_off = brentq(k_at_outlet, 0.3, 0.99, xtol=1e-12)
+    except ValueError:
+        h_off = 0.8
+    kk = profile(h_off)
+    za = -math.sqrt(1.0 - h_off)
+    kk = np.where(zz > za, np.maximum(kk, 0.0), 0.0)
+    k = np.interp(z, zz, kk)
+    k[0] = k[-1] = 0.0
+    return prob.pack(k, h_off)
+
+
+def _transfer(u: np.ndarray, old: KodnirProblem, new: KodnirProblem) -> np.ndarray:
+    k, h_off = old.unpack(u)
+    kn = np.interp(new.grid.z, old.grid.z, k, left=0.0, right=0.0)
+    return new.pack(kn, h_off)
+
+
+def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
+           record: list, tol: float, max_iterations: int,
+           min_increment: float = 1e-3) -> tuple[np.ndarray | None, int, str]:
+    """Follow the straight segments of a (C, b_alpha) path with adaptive steps."""
+    u = u0
+    total = 0
+    start = path[0]
+    prob = KodnirProblem(grid, *start)
+    out = damped_newton(prob, u, tol=tol, max_iterations=max_iterations)
+    total += out.iterations
+    record.append((start[0], start[1], out.status, out.iterations))
+    if not out.converged:
+        return None, total, f"no convergence at C={start[0]:.4g}, b_alpha={start[1]:.4g}"
+    u = out.z
+    for a, b in zip(path[:-1], path[1:]):
+        s, ds = 0.0, 1.0
+        while s < 1.0:
+            st = min(1.0, s + ds)
+            pc = (a[0] + st * (b[0] - a[0]), a[1] + st * (b[1] - a[1]))
+            prob = KodnirProblem(grid, *pc)
+            out = damped_newton(prob, u, tol=tol, max_iterations=max_iterations)
+            total += out.iterations
+            record.append((pc[0], pc[1], out.status, out.iterations))
+            if out.converged:
+                s, u = st, out.z
+                ds = min(1.0, 1.5 * ds)
+            else:
+                ds *= 0.5
+                if ds < min_increment:
+                    return None, total, (f"continuation stalled at C={pc[0]:.4g}, "
+                                         f"b_alpha={pc[1]:.4g} ({out.status}, "
+                                         f"|F| = {out.residual_norm:.2e})")
+    return u, total, "ok"
+
+
+def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 4001,
+          coarse_nodes: int = 401, z_min: float | None = None, tol: float = 1e-10,
+          max_iterations: int = 60) -> KodnirResult:
+    """Solve seed 000's dimensionless problem (4)-(6) by P1 finite elements.
+
+    Parameters
+    ----------
+    C : float
+        Dimensionless local compliance C = A' B/(E h*), >= 0.
+    b_alpha : float
+        Dimensionless piezo-viscous parameter B alpha, >= 0.
+    z_b : float
+        Dimensionless inlet position (> 0); k(z_b) = 0.
+    nodes : int
+        Nodes of the final grid (80 % of them uniform over the contact and the outlet
+        zone [z_min, z_fine], the rest graded geometrically up to z_b).
+    coarse_nodes : int
+        Nodes of the first (continuation) grid.
+    z_min : float or None
+        Left end of the first grid (default -3, moved left automatically if the outlet
+        comes close to it).
+    tol : float
+        Newton tolerance on the max-norm of the scaled residual (units of k).
+    max_iterations : int
+        Newton iterations per continuation step.
+
+    Returns
+    -------
+    KodnirResult
+        Never raises for non-convergence: ``success=False`` with a message and NaN-free
+        arrays of the last grid (empty when nothing converged).
+
+    Raises
+    ------
+    ValueError
+        For C < 0, b_alpha < 0, z_b <= 0 (the message names the argument).
+
+    Notes
+    -----
+    Strategy: on a coarse grid solve the isoviscous problem (C, 0) directly (if that
+    fails, march in C from the rigid problem), then march in b_alpha with adaptive steps;
+    then build the final grid around the outlet found, interpolate, and finish with Newton
+    at the target (marching again on the fine grid only if the direct step fails).
+    """
+    _check(C, b_alpha, z_b, nodes)
+    C, b_alpha, z_b = float(C), float(b_alpha), float(z_b)
+    res = KodnirResult(success=False, status="no_convergence", message="", C=C,
+                       b_alpha=b_alpha, z_b=z_b)
+    record: list = []
+    total = 0
+    zlo = -3.0 if z_min is None else float(z_min)
+    u = None
+    for _attempt in range(4):
+        zf = min(0.5 * z_b, max(2.0, -zlo))
+        grid = _Grid.from_nodes(graded_grid(zlo, zf, z_b, coarse_nodes))
+        prob0 = KodnirProblem(grid, C, 0.0)
+        u0 = _initial_guess(prob0)
+        u, it, msg = _march(grid, u0, [(C, 0.0), (C, b_alpha)], record, tol, max_iterations)
+        total += it
+        if u is None:
+            u, it, msg = _march(grid, u0, [(0.0, 0.0), (C, 0.0), (C, b_alpha)], record, tol,
+                                max_iterations)
+            total += it
+        if u is None:
+            break
+        coarse = KodnirProblem(grid, C, b_alpha)
+        k, h_off = coarse.unpack(u)
+        za = -math.sqrt(max(1.0 - h_off, 0.0))
+        pos = np.nonzero(k > 0)[0]
+        if pos.size and pos[0] > 3 and za - zlo > 0.3 * max(1.0, abs(za)):
+            break
+        zlo = 2.0 * min(za, zlo) - 1.0   # outlet too close to the left end: widen
+        u = None
+    res.iterations = total
+    res.continuation = record
+    if u is None:
+        res.message = f"coarse grid: {msg}"
+        return res
+    # final grid: uniform over [z_a - margin, z_fine], graded to z_b
+    margin = 0.25 + 0.15 * abs(za)
+    zf = min(0.5 * z_b, abs(za) + 1.5 + 0.25 * abs(za))
+    z_final = graded_grid(za - margin, zf, z_b, nodes)
+    grid_f = _Grid.from_nodes(z_final)
+    prob = KodnirProblem(grid_f, C, b_alpha)
+    uf = _transfer(u, coarse, prob)
+    out: NewtonOutcome = damped_newton(prob, uf, tol=tol, max_iterations=max_iterations)
+    total += out.iterations
+    record.append((C, b_alpha, out.status + " (final grid)", out.iterations))
+    ufin = out.z if out.converged else None
+    if ufin is None:
+        ufin, it, msg = _march(grid_f, _transfer(u, coarse, KodnirProblem(grid_f, C, 0.0)),
+                               [(C, 0.0), (C, b_alpha)], record, tol, max_iterations)
+        total += it
+    res.iterations = total
+    if ufin is None:
+        res.message = f"final grid: {msg}"
+        _finish(res, prob, out.z)   # last finite iterate, for diagnosis
+        res.success = False
+        return res
+    _finish(res, prob, ufin)
+    k = res.k
+    pos = np.nonzero(k > 0)[0]
+    if pos.size == 0 or pos[0] < 2:
+        res.status = "outlet_outside_domain"
+        res.message = "pressurised zone reaches the left end of the grid"
+        return res
+    res.success, res.status = True, "converged"
+    res.message = (f"converged: {total} Newton iterations, {len(record)} solves, "
+                   f"flux {res.flux:.12f}")
+    return res
+
+
+# ----------------------------------------------------------------------------------------
+# Dimensional conversions (seed 000)
+# ----------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class KodnirScales:
+    """Seed 000's scales. SI where stated.
+
+    Attributes
+    ----------
+    h_star : film at the outlet where dp/dx = 0 [m]
+    B1 : sqrt(2 h* R), length scale of z [m]
+    B : 6 eta0 U_sum B1 / h*^2, pressure scale of k [Pa]
+    C : A' B / (E h*), dimensionless compliance [-]
+    b_alpha : B alpha [-]
+    compliance : A'/E [m/Pa]
+    """
+
+    h_star: float
+    B1: float
+    B: float
+    C: float
+    b_alpha: float
+    compliance: float
+
+
+def kodnir_scales(h_star: float, radius: float, viscosity: float, sum_speed: float,
+                  youngs_modulus: float, load_per_length: float, piezo: float) -> KodnirScales:
+    """Seed 000's scales and parameters from a dimensional line contact.
+
+    Parameters
+    ----------
+    h_star : film h* where dp/dx = 0 [m] (seed's h0)
+    radius : reduced radius R (seed's rho_pr) [m]
+    viscosity : eta0 [Pa s]
+    sum_speed : U_sum = U1 + U2 [m/s]
+    youngs_modulus : E of the two equal bodies [Pa] (not E')
+    load_per_length : q_H [N/m]
+    piezo : Barus alpha [1/Pa]
+
+    Returns
+    -------
+    KodnirScales
+        B1 = sqrt(2 h* R), B = 6 eta0 U_sum B1/h*^2, C = A' B/(E h*) with
+        A' = 2.54 b_H, b_H = 1.52 sqrt(q_H R/E), and B alpha.
+    """
+    from .elasticity import kodnir_local_coefficient
+
+    for name, val, unit in (("h_star", h_star, "m"), ("radius", radius, "m"),
+                            ("viscosity", viscosity, "Pa s"), ("sum_speed", sum_speed, "m/s")):
+        if not val > 0:
+            raise ValueError(f"{name} must be > 0 {unit}, got {val}")
+    if not piezo >= 0:
+        raise ValueError(f"piezo must be >= 0 1/Pa, got {piezo}")
+    c = kodnir_local_coefficient(load_per_length, radius, youngs_modulus)
+    b1 = math.sqrt(2.0 * h_star * radius)
+    b = 6.0 * viscosity * sum_speed * b1 / h_star**2
+    return KodnirScales(h_star=h_star, B1=b1, B=b, C=c * b / h_star, b_alpha=b * piezo,
+                        compliance=c)
+
+
+def to_dimensional(result: KodnirResult, scales: KodnirScales) -> dict[str, np.ndarray]:
+    """Fields in SI and in the package convention (x along the motion: x = -B1 z).
+
+    Returns ``x`` [m] (ascending), ``pressure`` p = B k [Pa], ``film`` h = h* H [m].
+    """
+    x = -scales.B1 * result.z[::-1]
+    return {"x": x, "pressure": scales.B * result.k[::-1], "film": scales.h_star * result.H[::-1]}
+
+
+@dataclass(frozen=True)
+class KodnirFrictionHeat:
+    """Seed 000 eqs 7-9. rolling_force w_k [N/m], friction_coefficient f [-],
+    heat_power Q [W/m] and its two parts [W/m]."""
+
+    rolling_force: float
+    friction_coefficient: float
+    heat_power: float
+    heat_power_rolling: float
+    heat_power_sliding: float
+
+
+def kodnir_friction_heat(result: KodnirResult, h_star: float, B: float, q_H: float,
+                         sum_speed: float, sliding_speed: float) -> KodnirFrictionHeat:
+    """Seed 000's friction coefficient and heat power per length (eqs 7-9).
+
+    w_k = (B h*/2) I,  f = 2 w_k / q_H,  Q = U_sum (w_k + (U_s/U_sum)^2 (B h*/6) J).
+
+    Parameters
+    ----------
+    result : successful KodnirResult
+    h_star : [m]; B : pressure scale [Pa]; q_H : load per length [N/m];
+    sum_speed : U_sum = U1 + U2 [m/s]; sliding_speed : U_s = U1 - U2 [m/s]
+    """
+    if not result.success:
+        raise ValueError(f"result is not a converged solution: {result.message}")
+    for name, val in (("h_star", h_star), ("B", B), ("q_H", q_H), ("sum_speed", sum_speed)):
+        if not val > 0:
+            raise ValueError(f"{name} must be > 0, got {val}")
+    wk = 0.5 * B * h_star * result.friction_integral
+    q_roll = sum_speed * wk
+    q_slide = sum_speed * (sliding_speed / sum_speed) ** 2 * B * h_star / 6.0 * result.couette_integral
+    return KodnirFrictionHeat(rolling_force=wk, friction_coefficient=2.0 * wk / q_H,
+                              heat_power=q_roll + q_slide, heat_power_rolling=q_roll,
+                              heat_power_sliding=q_slide)
