@@ -1,0 +1,396 @@
+"""Bad input: every scene field rejected with a message naming it (STYLE.md, tests).
+
+Each case mutates a valid base scene and must give
+
+* through the command line, ``bearing-fem solve``: exit code 2, the field name on
+  stderr, no traceback, no output written;
+* through the API, :meth:`Scene.from_dict`: a :class:`SceneError` naming the field.
+
+``test_every_field_has_a_case`` fails when a scene field is added without a case here.
+Sections that the installed ``bearing_fem.scene`` does not (yet) define are skipped.
+"""
+from __future__ import annotations
+
+import copy
+from dataclasses import fields
+
+import pytest
+
+from bearing_fem import cli
+from bearing_fem import scene as scene_module
+from bearing_fem.errors import SceneError
+from bearing_fem.io import scene_to_toml
+from bearing_fem.scene import Scene
+
+DELETE = object()
+
+#: A valid line scene that touches every line-contact section (rigid with a gap: the
+#: positive control solves in a fraction of a second).
+LINE = {
+    "title": "validation base",
+    "contact": {"kind": "line", "rx": 0.01, "length": 0.02},
+    "materials": {"e1": 2.1e11, "nu1": 0.3, "e2": 2.1e11, "nu2": 0.3},
+    "lubricant": {"viscosity": 0.05, "piezo": 2e-8, "viscosity_law": "barus",
+                  "density": "incompressible"},
+    "kinematics": {"u1": 2.0, "u2": 2.0},
+    "load": {"gap": 1e-6},
+    "model": {"elasticity": "rigid", "cavitation": "reynolds", "thermal": "none"},
+    "mesh": {"nodes": 401, "x_range": [-50.0, 5.0]},
+    "solver": {"tolerance": 1e-8, "max_iterations": 50, "continuation": True},
+}
+#: A valid elastic point scene (used for the point-only fields; never solved here).
+POINT = {
+    "contact": {"kind": "point", "rx": 0.0127, "ry": 0.0127},
+    "materials": {"reduced_modulus": 2.3e11},
+    "lubricant": {"viscosity": 0.04, "piezo": 2.2e-8},
+    "kinematics": {"u1": 1.0, "u2": 1.0},
+    "load": {"force": 30.0},
+    "mesh": {"nodes": [65, 65], "x_range": [-4.5, 1.5], "y_range": [-3.0, 3.0]},
+}
+THERMAL = {"oil_temperature": 40.0, "exponent": 2.5}
+TRACTION = {"model": "eyring"}
+
+
+def _line_elastic() -> dict:
+    d = copy.deepcopy(LINE)
+    d["load"] = {"force": 2e5}
+    d["model"]["elasticity"] = "half-space"
+    d.pop("mesh")
+    return d
+
+
+def _case(id_, changes, *expect, base="line"):
+    """A case: ``changes`` maps "section.key" (or "section", or "title") to a value or
+    DELETE; ``expect`` are substrings the message must contain (the field name first)."""
+    return pytest.param(base, changes, expect, id=id_)
+
+
+NAN, INF = float("nan"), float("inf")
+
+CASES = [
+    # --- top level -------------------------------------------------------------------
+    _case("title-type", {"title": 5}, "title"),
+    _case("unknown-section", {"frobnicate": {"a": 1}}, "frobnicate", "known"),
+    _case("unknown-top-key", {"titel": "typo"}, "titel", "known"),
+    *[_case(f"missing-[{s}]", {s: DELETE}, f"[{s}]")
+      for s in ("contact", "lubricant", "kinematics", "load")],
+    _case("section-not-table", {"contact": 5}, "[contact]"),
+    *[_case(f"unknown-key-{s}", {f"{s}.colour": 1}, f"{s}.colour", "known keys")
+      for s in ("contact", "materials", "lubricant", "kinematics", "load", "model", "mesh",
+                "solver")],
+    # --- contact ---------------------------------------------------------------------
+    _case("contact.kind-value", {"contact.kind": "circle"}, "contact.kind", "'line'"),
+    _case("contact.kind-type", {"contact.kind": 5}, "contact.kind"),
+    _case("contact.rx-sign", {"contact.rx": -0.01}, "contact.rx", "-0.01", "m"),
+    _case("contact.rx-zero", {"contact.rx": 0.0}, "contact.rx"),
+    _case("contact.rx-type", {"contact.rx": "ten mm"}, "contact.rx", "ten mm"),
+    _case("contact.rx-bool", {"contact.rx": True}, "contact.rx"),
+    _case("contact.rx-nan", {"contact.rx": NAN}, "contact.rx", "finite"),
+    _case("contact.rx-inf", {"contact.rx": INF}, "contact.rx", "finite"),
+    _case("contact.rx-missing", {"contact.rx": DELETE}, "contact.rx"),
+    _case("contact.ry-on-line", {"contact.ry": 0.01}, "contact.ry", "point"),
+    _case("contact.ry-missing-point", {"contact.ry": DELETE}, "contact.ry", base="point"),
+    _case("contact.ry-sign", {"contact.ry": -1.0}, "contact.ry", "m", base="point"),
+    _case("contact.ry-type", {"contact.ry": "wide"}, "contact.ry", base="point"),
+    _case("contact.length-sign", {"contact.length": -0.02}, "contact.length", "m"),
+    _case("contact.length-type", {"contact.length": "long"}, "contact.length"),
+    _case("contact.length-on-point", {"contact.length": 0.02}, "contact.length",
+          base="point"),
+    # --- materials -------------------------------------------------------------------
+    *[_case(f"materials.{k}-sign", {f"materials.{k}": -2.1e11}, f"materials.{k}", "Pa")
+      for k in ("e1", "e2")],
+    *[_case(f"materials.{k}-type", {f"materials.{k}": "steel"}, f"materials.{k}")
+      for k in ("e1", "e2")],
+    *[_case(f"materials.{k}-missing", {f"materials.{k}": DELETE}, f"materials.{k}")
+      for k in ("e1", "nu1", "e2", "nu2")],
+    *[_case(f"materials.{k}-range-high", {f"materials.{k}": 0.6}, f"materials.{k}", "0.6")
+      for k in ("nu1", "nu2")],
+    *[_case(f"materials.{k}-range-low", {f"materials.{k}": -1.0}, f"materials.{k}")
+      for k in ("nu1", "nu2")],
+    *[_case(f"materials.{k}-type", {f"materials.{k}": "0.3"}, f"materials.{k}")
+      for k in ("nu1", "nu2")],
+    _case("materials.reduced_modulus-and-pair", {"materials.reduced_modulus": 2.3e11},
+          "reduced_modulus"),
+    _case("materials.reduced_modulus-sign", {"materials.reduced_modulus": -1.0},
+          "materials.reduced_modulus", "Pa", base="point"),
+    _case("materials.reduced_modulus-type", {"materials.reduced_modulus": "hard"},
+          "materials.reduced_modulus", base="point"),
+    _case("materials-missing-elastic", {"materials": DELETE}, "materials",
+          base="line-elastic"),
+    # --- lubricant -------------------------------------------------------------------
+    _case("lubricant.viscosity-sign", {"lubricant.viscosity": -0.01},
+          "lubricant.viscosity", "-0.01", "Pa s"),
+    _case("lubricant.viscosity-zero", {"lubricant.viscosity": 0.0}, "lubricant.viscosity"),
+    _case("lubricant.viscosity-type", {"lubricant.viscosity": "thick"},
+          "lubricant.viscosity"),
+    _case("lubricant.viscosity-missing", {"lubricant.viscosity": DELETE},
+          "lubricant.viscosity"),
+    _case("lubricant.viscosity-roelands-range",
+          {"lubricant.viscosity_law": "roelands", "lubricant.viscosity": 1e5},
+          "lubricant.viscosity", "Roelands"),
+    _case("lubricant.piezo-sign", {"lubricant.piezo": -2e-8}, "lubricant.piezo", "1/Pa"),
+    _case("lubricant.piezo-range", {"lubricant.piezo": 2e-5}, "lubricant.piezo", "1/Pa"),
+    _case("lubricant.piezo-type", {"lubricant.piezo": "high"}, "lubricant.piezo"),
+    _case("lubricant.viscosity_law-value", {"lubricant.viscosity_law": "vogel"},
+          "lubricant.viscosity_law", "'barus'"),
+    _case("lubricant.viscosity_law-type", {"lubricant.viscosity_law": 1},
+          "lubricant.viscosity_law"),
+    _case("lubricant.density-value", {"lubricant.density": "tait"}, "lubricant.density",
+          "'dowson-higginson'"),
+    _case("lubricant.density-type", {"lubricant.density": 870.0}, "lubricant.density"),
+    # --- kinematics ------------------------------------------------------------------
+    *[_case(f"kinematics.{k}-type", {f"kinematics.{k}": "fast"}, f"kinematics.{k}", "m/s")
+      for k in ("u1", "u2")],
+    *[_case(f"kinematics.{k}-missing", {f"kinematics.{k}": DELETE}, f"kinematics.{k}")
+      for k in ("u1", "u2")],
+    *[_case(f"kinematics.{k}-nan", {f"kinematics.{k}": NAN}, f"kinematics.{k}")
+      for k in ("u1", "u2")],
+    _case("kinematics-mean-speed-sign", {"kinematics.u1": -1.0, "kinematics.u2": -1.0},
+          "kinematics", "mean speed", "m/s"),
+    # --- load ------------------------------------------------------------------------
+    _case("load.force-sign", {"load.force": -1.0, "load.gap": DELETE}, "load.force", "N"),
+    _case("load.force-type", {"load.force": "heavy", "load.gap": DELETE}, "load.force"),
+    _case("load.gap-sign", {"load.gap": -1e-7}, "load.gap", "m"),
+    _case("load.gap-type", {"load.gap": "thin"}, "load.gap"),
+    _case("load-both", {"load.force": 1e5}, "load.force", "load.gap"),
+    _case("load-neither", {"load.gap": DELETE}, "load.force", "load.gap"),
+    # --- model -----------------------------------------------------------------------
+    _case("model.elasticity-value", {"model.elasticity": "elastic"}, "model.elasticity",
+          "'half-space'"),
+    _case("model.elasticity-type", {"model.elasticity": 1}, "model.elasticity"),
+    _case("model.elasticity-local-needs-force", {"model.elasticity": "local"},
+          "model.elasticity", "load.force"),
+    _case("model.elasticity-local-on-point", {"model.elasticity": "local"},
+          "model.elasticity", base="point"),
+    _case("model.cavitation-value", {"model.cavitation": "jfo"}, "model.cavitation",
+          "'reynolds'"),
+    _case("model.thermal-value", {"model.thermal": "full"}, "model.thermal", "'patch'"),
+    # --- mesh ------------------------------------------------------------------------
+    _case("mesh.nodes-small", {"mesh.nodes": 5}, "mesh.nodes", "9"),
+    _case("mesh.nodes-large", {"mesh.nodes": 30001}, "mesh.nodes", "20001"),
+    _case("mesh.nodes-float", {"mesh.nodes": 400.5}, "mesh.nodes"),
+    _case("mesh.nodes-type", {"mesh.nodes": "many"}, "mesh.nodes"),
+    _case("mesh.nodes-three", {"mesh.nodes": [9, 9, 9]}, "mesh.nodes"),
+    _case("mesh.nodes-two-on-line", {"mesh.nodes": [401, 401]}, "mesh.nodes", "line"),
+    _case("mesh.nodes-one-on-point", {"mesh.nodes": 65}, "mesh.nodes", "point",
+          base="point"),
+    _case("mesh.x_range-order", {"mesh.x_range": [1.0, 2.0]}, "mesh.x_range"),
+    _case("mesh.x_range-length", {"mesh.x_range": [-4.5]}, "mesh.x_range"),
+    _case("mesh.x_range-type", {"mesh.x_range": ["a", 1.5]}, "mesh.x_range"),
+    _case("mesh.x_range-inf", {"mesh.x_range": [-INF, 1.5]}, "mesh.x_range"),
+    _case("mesh.y_range-on-line", {"mesh.y_range": [-3.0, 3.0]}, "mesh.y_range", "point"),
+    _case("mesh.y_range-order", {"mesh.y_range": [0.0, 3.0]}, "mesh.y_range",
+          base="point"),
+    _case("mesh.y_range-type", {"mesh.y_range": "wide"}, "mesh.y_range", base="point"),
+    # --- solver ----------------------------------------------------------------------
+    _case("solver.tolerance-sign", {"solver.tolerance": -1e-8}, "solver.tolerance"),
+    _case("solver.tolerance-zero", {"solver.tolerance": 0.0}, "solver.tolerance"),
+    _case("solver.tolerance-range", {"solver.tolerance": 0.5}, "solver.tolerance", "0.1"),
+    _case("solver.tolerance-type", {"solver.tolerance": "tight"}, "solver.tolerance"),
+    _case("solver.max_iterations-zero", {"solver.max_iterations": 0},
+          "solver.max_iterations"),
+    _case("solver.max_iterations-large", {"solver.max_iterations": 10**6},
+          "solver.max_iterations"),
+    _case("solver.max_iterations-float", {"solver.max_iterations": 10.5},
+          "solver.max_iterations"),
+    _case("solver.max_iterations-bool", {"solver.max_iterations": True},
+          "solver.max_iterations"),
+    _case("solver.continuation-type", {"solver.continuation": "yes"},
+          "solver.continuation"),
+    _case("solver.continuation-int", {"solver.continuation": 1}, "solver.continuation"),
+    # --- thermal (model.thermal = "patch") -------------------------------------------
+    _case("unknown-key-thermal", {"thermal.colour": 1}, "thermal.colour", base="thermal"),
+    *[_case(f"thermal.{k}-missing", {f"thermal.{k}": DELETE}, f"thermal.{k}",
+            base="thermal") for k in ("oil_temperature", "exponent")],
+    _case("thermal.oil_temperature-sign", {"thermal.oil_temperature": -10.0},
+          "thermal.oil_temperature", "deg C", base="thermal"),
+    _case("thermal.oil_temperature-type", {"thermal.oil_temperature": "warm"},
+          "thermal.oil_temperature", base="thermal"),
+    _case("thermal.exponent-sign", {"thermal.exponent": 0.0}, "thermal.exponent",
+          base="thermal"),
+    _case("thermal.temperature_law-value", {"thermal.temperature_law": "vogel"},
+          "thermal.temperature_law", "'prokofiev'", base="thermal"),
+    _case("thermal.reference_temperature-sign", {"thermal.reference_temperature": 0.0},
+          "thermal.reference_temperature", "deg C", base="thermal"),
+    _case("thermal.reference_viscosity-sign", {"thermal.reference_viscosity": -0.1},
+          "thermal.reference_viscosity", "Pa s", base="thermal"),
+    _case("thermal.piezo_temperatures-alone", {"thermal.piezo_temperatures": [40.0]},
+          "thermal.piezo_temperatures", base="thermal"),
+    _case("thermal.piezo_temperatures-order",
+          {"thermal.piezo_temperatures": [80.0, 40.0], "thermal.piezo_values": [1e-8, 2e-8]},
+          "thermal.piezo_temperatures", "ascending", base="thermal"),
+    _case("thermal.piezo_values-alone", {"thermal.piezo_values": [2e-8]},
+          "thermal.piezo_values", base="thermal"),
+    _case("thermal.piezo_values-range",
+          {"thermal.piezo_temperatures": [40.0], "thermal.piezo_values": [2e-5]},
+          "thermal.piezo_values", "1/Pa", base="thermal"),
+    _case("thermal.piezo_values-length",
+          {"thermal.piezo_temperatures": [40.0, 80.0], "thermal.piezo_values": [2e-8]},
+          "thermal.piezo_values", base="thermal"),
+    *[_case(f"thermal.{k}-sign", {f"thermal.{k}": -1.0}, f"thermal.{k}", unit,
+            base="thermal")
+      for k, unit in (("conductivity", "W/(m K)"), ("density", "kg/m^3"),
+                      ("heat_capacity", "J/(kg K)"), ("conductivity2", "W/(m K)"),
+                      ("density2", "kg/m^3"), ("heat_capacity2", "J/(kg K)"))],
+    _case("thermal.conductivity-type", {"thermal.conductivity": "steel"},
+          "thermal.conductivity", base="thermal"),
+    _case("thermal.source_model-value", {"thermal.source_model": "exact"},
+          "thermal.source_model", "'jaeger'", base="thermal"),
+    _case("thermal.contact_temperature-value", {"thermal.contact_temperature": "min"},
+          "thermal.contact_temperature", "'mean'", base="thermal"),
+    _case("thermal.max_iterations-zero", {"thermal.max_iterations": 0},
+          "thermal.max_iterations", base="thermal"),
+    _case("thermal.max_iterations-float", {"thermal.max_iterations": 2.5},
+          "thermal.max_iterations", base="thermal"),
+    _case("thermal.tolerance-sign", {"thermal.tolerance": 0.0}, "thermal.tolerance", "K",
+          base="thermal"),
+    _case("thermal.relaxation-range", {"thermal.relaxation": 1.5}, "thermal.relaxation",
+          base="thermal"),
+    _case("thermal.relaxation-sign", {"thermal.relaxation": -0.5}, "thermal.relaxation",
+          base="thermal"),
+    # --- traction --------------------------------------------------------------------
+    _case("unknown-key-traction", {"traction.colour": 1}, "traction.colour",
+          base="traction"),
+    _case("traction.model-value", {"traction.model": "power"}, "traction.model",
+          "'eyring'", base="traction"),
+    _case("traction.eyring_stress-sign", {"traction.eyring_stress": 0.0},
+          "traction.eyring_stress", "Pa", base="traction"),
+    _case("traction.limiting_shear_stress-sign", {"traction.limiting_shear_stress": -1.0},
+          "traction.limiting_shear_stress", "Pa", base="traction"),
+    _case("traction.limiting_slope-sign", {"traction.limiting_slope": -0.1},
+          "traction.limiting_slope", base="traction"),
+    _case("traction.limiting-both-zero",
+          {"traction.limiting_shear_stress": 0.0, "traction.limiting_slope": 0.0},
+          "limiting_shear_stress", "limiting_slope", base="traction"),
+]
+
+
+def _base(name: str) -> dict:
+    if name == "line":
+        return copy.deepcopy(LINE)
+    if name == "point":
+        return copy.deepcopy(POINT)
+    if name == "line-elastic":
+        return _line_elastic()
+    if name in ("thermal", "traction"):
+        if name not in scene_module._SECTIONS:
+            pytest.skip(f"[{name}] is not a section of the installed bearing_fem.scene")
+        d = _line_elastic()
+        if name == "thermal":
+            d["model"]["thermal"] = "patch"
+            d["thermal"] = dict(THERMAL)
+        else:
+            d["traction"] = dict(TRACTION)
+        return d
+    raise AssertionError(name)
+
+
+def _apply(data: dict, changes: dict) -> dict:
+    for path, value in changes.items():
+        section, _, key = path.partition(".")
+        if not key:
+            if value is DELETE:
+                data.pop(section, None)
+            else:
+                data[section] = value
+        elif value is DELETE:
+            data[section].pop(key, None)
+        else:
+            data.setdefault(section, {})[key] = value
+    return data
+
+
+@pytest.mark.parametrize("base", ["line", "point", "line-elastic", "thermal", "traction"])
+def test_bases_are_valid(base):
+    """Positive control: without a change, every base scene validates."""
+    Scene.from_dict(_base(base))
+
+
+def test_line_base_solves_with_exit_0(tmp_path):
+    """Positive control through the command line (a cheap rigid linear solve)."""
+    path = tmp_path / "ok.toml"
+    path.write_text(scene_to_toml(LINE), encoding="utf-8")
+    assert cli.main(["solve", str(path), "--out", str(tmp_path / "out")]) == 0
+
+
+@pytest.mark.parametrize("base,changes,expect", CASES)
+def test_from_dict_rejects(base, changes, expect):
+    data = _apply(_base(base), changes)
+    with pytest.raises(SceneError) as info:
+        Scene.from_dict(data)
+    for text in expect:
+        assert text in str(info.value), f"{text!r} missing from: {info.value}"
+
+
+@pytest.mark.parametrize("base,changes,expect", CASES)
+def test_cli_rejects_with_exit_2(base, changes, expect, tmp_path, capsys):
+    data = _apply(_base(base), changes)
+    path = tmp_path / "scene.toml"
+    path.write_text(scene_to_toml(data), encoding="utf-8")
+    out = tmp_path / "out"
+    assert cli.main(["solve", str(path), "--out", str(out)]) == 2
+    captured = capsys.readouterr()
+    for text in expect:
+        assert text in captured.err, f"{text!r} missing from stderr: {captured.err}"
+    assert "Traceback" not in captured.err
+    assert not out.exists(), "invalid input must be rejected before any output"
+
+
+@pytest.mark.parametrize("text,expect", [
+    ("[contact\nkind = 'line'\n", "not valid TOML"),
+    ("[contact]\nrx = 0.01\nrx = 0.02\n", "not valid TOML"),
+    ("[lubricant]\nviscosity = \n", "not valid TOML"),
+    ("title = 'unterminated\n", "not valid TOML"),
+], ids=["open-table", "duplicate-key", "missing-value", "open-string"])
+def test_cli_broken_toml(tmp_path, capsys, text, expect):
+    path = tmp_path / "broken.toml"
+    path.write_text(text, encoding="utf-8")
+    assert cli.main(["solve", str(path), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert expect in err and "broken.toml" in err and "Traceback" not in err
+
+
+def test_cli_unreadable_files(tmp_path, capsys):
+    assert cli.main(["solve", str(tmp_path / "missing.toml"), "--out", str(tmp_path)]) == 2
+    assert "missing.toml" in capsys.readouterr().err
+    assert cli.main(["solve", str(tmp_path), "--out", str(tmp_path / "o")]) == 2  # a dir
+    assert "cannot read" in capsys.readouterr().err
+    binary = tmp_path / "binary.toml"
+    binary.write_bytes(b"\xff\xfe\x00garbage")
+    assert cli.main(["solve", str(binary), "--out", str(tmp_path / "o")]) == 2
+    assert "invalid input" in capsys.readouterr().err
+
+
+def test_from_dict_rejects_non_mapping():
+    with pytest.raises(SceneError, match="table"):
+        Scene.from_dict([("contact", {})])
+
+
+def test_every_field_has_a_case():
+    """Every field of every section of the installed scene module has a case above."""
+    covered = set()
+    for case in CASES:
+        _, changes, _ = case.values
+        covered.update(changes)
+    missing = []
+    for section, klass in scene_module._SECTIONS.items():
+        for f in fields(klass):
+            if f.name.startswith("_"):
+                continue
+            if f"{section}.{f.name}" not in covered:
+                missing.append(f"{section}.{f.name}")
+        if f"{section}.colour" not in covered:
+            missing.append(f"{section}.<unknown key>")
+    assert "title" in covered
+    assert not missing, f"no validation case for: {', '.join(missing)}"
+
+
+def test_messages_name_value_and_unit():
+    """A sample of messages carries the offending value and the unit, not just the name."""
+    with pytest.raises(SceneError) as info:
+        Scene.from_dict(_apply(_base("line"), {"lubricant.viscosity": -0.01}))
+    msg = str(info.value)
+    assert "lubricant.viscosity" in msg and "-0.01" in msg and "Pa s" in msg
+    with pytest.raises(SceneError) as info:
+        Scene.from_dict(_apply(_base("line"), {"contact.rx": float("nan")}))
+    assert "contact.rx" in str(info.value) and "nan" in str(info.value)
