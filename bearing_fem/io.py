@@ -13,7 +13,8 @@ Files written by :func:`export`
 ``result.h5``
     Datasets ``x`` [m], ``y`` [m] (point contacts only), ``pressure_Pa``, ``film_m`` and
     every entry of ``result.extra_fields``, each with a ``unit`` attribute. Root
-    attributes ``kind``, ``status``, ``success``, ``message``, ``version``, ``h0`` [m],
+    attributes ``kind``, ``status``, ``success``, ``message``, ``version``, ``title``,
+    ``h0`` [m],
     ``scene`` (the scene as TOML text), ``summary`` (the summary as JSON text). Group
     ``convergence``: dataset ``history`` (scaled residual after each Newton iteration),
     attributes ``newton_iterations``, ``linear_solves``, ``wall_time_s`` and
@@ -256,6 +257,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
         f.attrs["success"] = bool(result.success)
         f.attrs["message"] = str(result.message)
         f.attrs["version"] = __version__
+        f.attrs["title"] = str(getattr(result.scene, "title", "") or "")
         f.attrs["h0"] = float(result.h0)
         f.attrs["scene"] = scene_to_toml(result.scene)
         f.attrs["summary"] = json.dumps(summary, allow_nan=False)
@@ -347,7 +349,7 @@ def read_result(path: str | Path) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``kind``, ``status``, ``success``, ``message``, ``version``, ``h0`` [m];
+        ``kind``, ``status``, ``success``, ``message``, ``version``, ``title``, ``h0`` [m];
         ``x``, ``y`` (None for line contacts) [m]; ``pressure_Pa``, ``film_m``;
         ``fields`` (every nodal dataset by name, including the two above and the extra
         fields); ``units`` (dataset name -> unit); ``scene`` (dict with the TOML
@@ -372,6 +374,7 @@ def read_result(path: str | Path) -> dict[str, Any]:
         out["success"] = bool(a["success"])
         out["message"] = str(a["message"])
         out["version"] = str(a["version"])
+        out["title"] = str(a.get("title", ""))
         out["h0"] = float(a["h0"])
         out["scene_toml"] = str(a["scene"])
         out["scene"] = tomllib.loads(out["scene_toml"])

@@ -146,7 +146,7 @@ def test_export_is_atomic_on_failure(line_result, tmp_path, monkeypatch):
     assert after == before
 
 
-def _point_result(x_axis, y_axis, nodal: bool, shuffle: bool) -> Result:
+def _point_result(x_axis, y_axis, nodal: bool, shuffle: bool, grid2d: bool = False) -> Result:
     scene = Scene.from_dict(RIGID_POINT)
     xx, yy = np.meshgrid(x_axis, y_axis)  # (ny, nx)
     p = 1e8 * np.exp(-(xx / 1e-4) ** 2 - (yy / 2e-4) ** 2)
@@ -158,6 +158,8 @@ def _point_result(x_axis, y_axis, nodal: bool, shuffle: bool) -> Result:
         x, y = xx.ravel()[order], yy.ravel()[order]
         p, h = p.ravel()[order], h.ravel()[order]
         extra = {k: v.ravel()[order] for k, v in extra.items()}
+    elif grid2d:  # the solver's layout: axes and (ny, nx) nodal arrays
+        x, y = x_axis, y_axis
     else:
         x, y, p, h = x_axis, y_axis, p.ravel(), h.ravel()
         extra = {k: v.ravel() for k, v in extra.items()}
@@ -168,19 +170,22 @@ def _point_result(x_axis, y_axis, nodal: bool, shuffle: bool) -> Result:
                   extra_fields=extra)
 
 
-@pytest.mark.parametrize("nodal,shuffle", [(False, False), (True, False), (True, True)],
-                         ids=["grid-axes", "nodal", "nodal-shuffled"])
-def test_point_round_trip(tmp_path, nodal, shuffle):
+@pytest.mark.parametrize("nodal,shuffle,grid2d",
+                         [(False, False, True), (False, False, False), (True, False, False),
+                          (True, True, False)],
+                         ids=["grid-axes-2d", "grid-axes-flat", "nodal", "nodal-shuffled"])
+def test_point_round_trip(tmp_path, nodal, shuffle, grid2d):
     nx, ny = 7, 5
     x_axis = np.linspace(-3e-4, 1e-4, nx)
     y_axis = np.linspace(-2e-4, 2e-4, ny)
-    result = _point_result(x_axis, y_axis, nodal, shuffle)
+    result = _point_result(x_axis, y_axis, nodal, shuffle, grid2d)
     snap = _snapshot(result)
     files = bf.export(result, tmp_path)
     _assert_unchanged(result, snap)
 
     data = io.read_result(files["h5"])
-    assert data["kind"] == "point"
+    assert data["kind"] == "point" and data["title"] == ""
+    assert data["pressure_Pa"].shape == result.pressure.shape
     np.testing.assert_array_equal(data["x"], result.x)
     np.testing.assert_array_equal(data["y"], result.y)
     np.testing.assert_array_equal(data["pressure_Pa"], result.pressure)
