@@ -161,8 +161,9 @@ def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = 
     return _solve_line_newton(scene, setup, bp, t0)
 
 
-def _make_problem(scene: Scene, setup: LineSetup, bp, piezo_scale: float = 1.0) -> LineProblem:
-    flux = FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
+def _make_problem(scene: Scene, setup: LineSetup, bp, piezo_scale: float = 1.0,
+                  speed_scale: float = 1.0) -> LineProblem:
+    flux = FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed * speed_scale,
                                     compliance=setup.stab_compliance, piezo_scale=piezo_scale)
     return LineProblem(setup.disc, flux, scene.contact.rx, setup.compliance,
                        scene.model.cavitation, scene.load.force, scene.load.gap,
@@ -278,12 +279,24 @@ def _attempt(scene: Scene, setup: LineSetup, bp, z0: np.ndarray, max_iterations:
                         max_iterations=min(max_iterations, ATTEMPT_ITERATIONS))
     history = list(out.history)
     steps = [(1.0, out.status, out.iterations)]
-    if out.converged or not sol.continuation or scene.lubricant.effective_piezo == 0.0:
+    if out.converged or not sol.continuation:
         return out.z, out.status, out.iterations, history, steps, problem
-    log.info("direct Newton %s after %d iterations; continuing in alpha", out.status,
-             out.iterations)
     z_start = _initial_guess(scene, setup, problem)
-    cont = continuation(lambda s: _make_problem(scene, setup, bp, piezo_scale=s), z_start,
+    if scene.lubricant.effective_piezo > 0.0:
+        log.info("direct Newton %s after %d iterations; continuing in alpha", out.status,
+                 out.iterations)
+
+        def family(s: float) -> LineProblem:
+            return _make_problem(scene, setup, bp, piezo_scale=s)
+    else:
+        # isoviscous: continue in the entrainment speed from 100x faster (thicker film,
+        # lower Moes M) down to the target
+        log.info("direct Newton %s after %d iterations; continuing in speed", out.status,
+                 out.iterations)
+
+        def family(s: float) -> LineProblem:
+            return _make_problem(scene, setup, bp, speed_scale=10.0 ** (2.0 * (1.0 - s)))
+    cont = continuation(family, z_start,
                         tol=sol.tolerance,
                         max_iterations=min(max_iterations, ATTEMPT_ITERATIONS))
     iterations = out.iterations + cont.iterations
@@ -356,7 +369,8 @@ def _solve_line_newton(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
     resid = float(np.max(np.abs(problem.residual(z))))
     n_cont = sum(1 for s in steps if s[0] < 1.0)
     if status == "converged":
-        cont_note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
+        what = "alpha" if scene.lubricant.effective_piezo > 0 else "speed"
+        cont_note = f", continuation in {what} ({n_cont} steps)" if n_cont else ""
         msg = (f"converged in {iterations} Newton iterations (grids {levels}{cont_note}); "
                f"residual {resid:.2e} <= tol {sol.tolerance:.1e}")
     else:
