@@ -165,6 +165,8 @@ CASES = [
     _case("model.cavitation-value", {"model.cavitation": "jfo"}, "model.cavitation",
           "'reynolds'"),
     _case("model.thermal-value", {"model.thermal": "full"}, "model.thermal", "'patch'"),
+    _case("model.thermal-patch-needs-section", {"model.thermal": "patch"}, "model.thermal",
+          "[thermal]", base="line-elastic"),
     # --- mesh ------------------------------------------------------------------------
     _case("mesh.nodes-small", {"mesh.nodes": 5}, "mesh.nodes", "9"),
     _case("mesh.nodes-large", {"mesh.nodes": 30001}, "mesh.nodes", "20001"),
