@@ -163,7 +163,8 @@ class KodnirProblem:
 
     Unknowns: k at the interior nodes (k = 0 at z_min and z_b) and H_off.
     Rows: Fischer-Burmeister(k_i, R_i s_i) at interior nodes, s_i a frozen row scale
-    (1/|dR_i/dk_i|, so the residual is in units of k); last row Q - 1 = R_N - 1.
+    (1/|dR_i/dk_i|, so the residual is in units of k); last row (Q - 1)/(1 + z_b^2),
+    Q = R_N.
     """
 
     def __init__(self, grid: _Grid, C: float, b_alpha: float) -> None:
@@ -175,6 +176,9 @@ class KodnirProblem:
         self.free = np.arange(1, n - 1)
         self.n_unknowns = self.free.size + 1
         self._scale: np.ndarray | None = None
+        # the inlet flux sums terms of size H(z_b) ~ z_b^2 that cancel to 1: the flux row is
+        # divided by that size so that its rounding noise stays below the Newton tolerance
+        self._flux_scale = 1.0 / (1.0 + grid.z[-1] ** 2)
 
     # fields -----------------------------------------------------------------------------
     def unpack(self, u: np.ndarray) -> tuple[np.ndarray, float]:
@@ -231,7 +235,7 @@ class KodnirProblem:
         with np.errstate(over="ignore", invalid="ignore"):
             r = self.nodal_residual(k, h_off)
         phi, _, _ = fischer_burmeister(k[self.free], r[self.free] * self._scale)
-        return np.append(phi, r[-1] - 1.0)
+        return np.append(phi, (r[-1] - 1.0) * self._flux_scale)
 
     def jacobian(self, u: np.ndarray) -> sp.csc_matrix:
         k, h_off = self.unpack(u)
@@ -246,8 +250,8 @@ class KodnirProblem:
         _, da, db = fischer_burmeister(k[fr], r[fr] * s)
         jk = sp.diags(db * s) @ a[fr][:, fr] + sp.diags(da)
         jh = (db * s * col_h[fr])[:, None]
-        last_k = a[self.n - 1][:, fr]
-        last_h = np.array([[col_h[self.n - 1]]])
+        last_k = a[self.n - 1][:, fr] * self._flux_scale
+        last_h = np.array([[col_h[self.n - 1] * self._flux_scale]])
         return sp.bmat([[jk, sp.csr_matrix(jh)], [last_k, sp.csr_matrix(last_h)]], format="csc")
 
     def newton_step(self, u: np.ndarray, shift: float = 0.0) -> np.ndarray:
@@ -492,17 +496,25 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
         return None, total, f"no convergence at C={start[0]:.4g}, b_alpha={start[1]:.4g}"
     u = out.z
     for a, b in zip(path[:-1], path[1:]):
-        s, ds = 0.0, 1.0
+        s, ds = 0.0, 1.0 if a == start else 0.5
+        prev: tuple[float, np.ndarray] | None = None   # last converged (s, u): secant
         while s < 1.0:
             st = min(1.0, s + ds)
             pc = (a[0] + st * (b[0] - a[0]), a[1] + st * (b[1] - a[1]))
             prob = KodnirProblem(grid, *pc)
-            out = damped_newton(prob, u, tol=tol, max_iterations=max_iterations)
+            guess = u
+            if prev is not None and s > prev[0]:
+                cand = u + (st - s) / (s - prev[0]) * (u - prev[1])
+                if prob.admissible(cand):
+                    guess = cand
+            out = damped_newton(prob, guess, tol=tol, max_iterations=max_iterations)
             total += out.iterations
             record.append((pc[0], pc[1], out.status, out.iterations))
             if out.converged:
+                prev = (s, u)
                 s, u = st, out.z
-                ds = min(1.0, 1.5 * ds)
+                ds = min(1.0 - s if s < 1.0 else 1.0, 1.5 * ds) if out.iterations < 12 else ds
+                ds = max(ds, min_increment)
             else:
                 ds *= 0.5
                 if ds < min_increment:
@@ -562,29 +574,40 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 4001,
                        b_alpha=b_alpha, z_b=z_b)
     record: list = []
     total = 0
-    zlo = -3.0 if z_min is None else float(z_min)
+    if C == 0.0 and b_alpha > 0.0:
+        # rigid piezo-viscous: by the Barus (Kapitsa) transform the reduced pressure
+        # q = (1 - exp(-b_alpha k))/b_alpha is the isoviscous solution (same outlet), so a
+        # solution exists only while b_alpha q_max < 1 (PHYSICS.md 5.1)
+        iso = solve(0.0, 0.0, z_b, nodes=coarse_nodes, coarse_nodes=coarse_nodes,
+                    z_min=z_min, tol=tol, max_iterations=max_iterations)
+        if iso.success and b_alpha * iso.k_max >= 1.0:
+            res.status = "no_solution"
+            res.iterations = iso.iterations
+            res.message = (f"no solution: rigid (C = 0) piezo-viscous problem needs "
+                           f"b_alpha * q_max < 1, here {b_alpha} * {iso.k_max:.6g} = "
+                           f"{b_alpha * iso.k_max:.4g} (Kapitsa transform, PHYSICS.md 5.1)")
+            return res
+    # heuristic first left end (widened below if the outlet comes close to it)
+    zlo = -(2.0 + 0.1 * C + 0.2 * b_alpha) if z_min is None else float(z_min)
     u = None
+    msg = ""
+    path = [(0.0, 0.0), (C, 0.0), (C, b_alpha)] if C > 0 else [(0.0, 0.0), (0.0, b_alpha)]
     for _attempt in range(4):
         zf = min(0.5 * z_b, max(2.0, -zlo))
         grid = _Grid.from_nodes(graded_grid(zlo, zf, z_b, coarse_nodes))
-        prob0 = KodnirProblem(grid, C, 0.0)
-        u0 = _initial_guess(prob0)
-        u, it, msg = _march(grid, u0, [(C, 0.0), (C, b_alpha)], record, tol, max_iterations)
+        coarse = KodnirProblem(grid, C, b_alpha)
+        u, it, msg = _march(grid, _initial_guess(coarse), path, record, tol, max_iterations)
         total += it
         if u is None:
-            u, it, msg = _march(grid, u0, [(0.0, 0.0), (C, 0.0), (C, b_alpha)], record, tol,
-                                max_iterations)
-            total += it
-        if u is None:
             break
-        coarse = KodnirProblem(grid, C, b_alpha)
         k, h_off = coarse.unpack(u)
         za = -math.sqrt(max(1.0 - h_off, 0.0))
         pos = np.nonzero(k > 0)[0]
-        if pos.size and pos[0] > 3 and za - zlo > 0.3 * max(1.0, abs(za)):
+        if pos.size and pos[0] > 3 and za - zlo > 0.2 * max(1.0, abs(za)):
             break
-        zlo = 2.0 * min(za, zlo) - 1.0   # outlet too close to the left end: widen
+        zlo = 1.5 * min(za, zlo) - 1.0   # outlet too close to the left end: widen
         u = None
+        msg = "outlet outside the grid"
     res.iterations = total
     res.continuation = record
     if u is None:
@@ -597,13 +620,13 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 4001,
     grid_f = _Grid.from_nodes(z_final)
     prob = KodnirProblem(grid_f, C, b_alpha)
     uf = _transfer(u, coarse, prob)
-    out: NewtonOutcome = damped_newton(prob, uf, tol=tol, max_iterations=max_iterations)
+    out: NewtonOutcome = damped_newton(prob, uf, tol=tol, max_iterations=20)
     total += out.iterations
     record.append((C, b_alpha, out.status + " (final grid)", out.iterations))
     ufin = out.z if out.converged else None
     if ufin is None:
-        ufin, it, msg = _march(grid_f, _transfer(u, coarse, KodnirProblem(grid_f, C, 0.0)),
-                               [(C, 0.0), (C, b_alpha)], record, tol, max_iterations)
+        ufin, it, msg = _march(grid_f, _initial_guess(prob), path, record, tol,
+                               max_iterations)
         total += it
     res.iterations = total
     if ufin is None:
