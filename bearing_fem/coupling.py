@@ -226,6 +226,17 @@ def solve_thermal(scene: Scene) -> Result:
             "peclet_min": float(peclet),
             "thermal_iterations": float(it),
         }
+        if rise > th.max_temperature_rise:
+            status = "diverged"
+            msg = (f"diverged: computed contact temperature rise {rise:.4g} K exceeds "
+                   f"thermal.max_temperature_rise = {th.max_temperature_rise:.4g} K at thermal "
+                   f"iteration {it} (heat power {hf.heat_power:.4g} W/m, of which Couette "
+                   f"{hf.heat_power_couette:.4g} W/m, traction model "
+                   f"{tr_kw['model']!r}); no physical fixed point"
+                   + (" - Newtonian Barus traction is unphysical under sliding, use "
+                      "traction.model = 'eyring' or 'limiting'" if tr_kw["model"] == "newtonian"
+                      else ""))
+            break
         if abs(delta) < th.tolerance:
             status, converged = "converged", True
             break
@@ -234,7 +245,7 @@ def solve_thermal(scene: Scene) -> Result:
             T = 0.5 * t_oil
     if res is None:  # pragma: no cover - max_iterations >= 1
         raise RuntimeError("no thermal iteration ran")
-    if res.success:
+    if res.success and status != "diverged":
         if converged:
             msg = (f"converged: contact temperature {T:.4g} deg C (rise {T - t_oil:.4g} K over "
                    f"oil {t_oil:.4g} deg C) after {len(history)} thermal iteration(s), "
@@ -249,6 +260,11 @@ def solve_thermal(scene: Scene) -> Result:
             msg += (f"; warning: Peclet number {info['peclet_min']:.3g} < 5, the high-Pe "
                     "Jaeger formula overestimates; use thermal.source_model = 'fe'")
     quantities = _zero_like_quantities(res)
+    quantities.update({"contact_temperature": float(T),
+                       "contact_temperature_rise": float(T - t_oil),
+                       "contact_viscosity": contact_viscosity(scene, T),
+                       "contact_piezo": contact_piezo(scene, T),
+                       "thermal_iterations": float(len(history) or 1)})
     quantities.update({k: float(v) for k, v in info.items() if np.isfinite(v)})
     extra = dict(res.extra_fields)
     if info and res.success:

@@ -383,6 +383,9 @@ class Thermal:
         Stop when the contact temperature changes by less than this [K].
     relaxation : float
         Under-relaxation factor omega in (0, 1] of the temperature update [-].
+    max_temperature_rise : float
+        A computed contact temperature rise above this [K] stops the loop with status
+        ``diverged`` (e.g. Newtonian Barus traction under sliding: no physical fixed point).
     """
 
     _section = "thermal"
@@ -404,6 +407,7 @@ class Thermal:
     max_iterations: int = 30
     tolerance: float = 0.05
     relaxation: float = 0.7
+    max_temperature_rise: float = 300.0
 
     def __post_init__(self) -> None:
         _positive(self, "oil_temperature", "deg C (Prokofiev law needs t > 0 deg C)")
@@ -446,6 +450,7 @@ class Thermal:
         r = _positive(self, "relaxation", "(dimensionless)")
         if r > 1.0:
             raise SceneError(f"thermal.relaxation must lie in (0, 1] (dimensionless), got {r!r}")
+        _positive(self, "max_temperature_rise", "K")
 
 
 @dataclass(frozen=True, kw_only=True)

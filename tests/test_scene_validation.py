@@ -248,6 +248,8 @@ CASES = [
           base="thermal"),
     _case("thermal.relaxation-range", {"thermal.relaxation": 1.5}, "thermal.relaxation",
           base="thermal"),
+    _case("thermal.max_temperature_rise-sign", {"thermal.max_temperature_rise": 0.0},
+          "thermal.max_temperature_rise", "K", base="thermal"),
     _case("thermal.relaxation-sign", {"thermal.relaxation": -0.5}, "thermal.relaxation",
           base="thermal"),
     # --- traction --------------------------------------------------------------------

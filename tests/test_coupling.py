@@ -1,0 +1,161 @@
+"""Thermal coupling (coupling.solve_thermal), flash temperature and the new scene sections."""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+import bearing_fem as bf
+from bearing_fem import coupling, thermal
+from bearing_fem.errors import SceneError
+from bearing_fem.rheology import prokofiev
+from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model,
+                               Scene, Thermal, Traction)
+
+STEEL = dict(conductivity=46.0, density=7850.0, heat_capacity=470.0)
+
+
+def _scene(*, u1=2.2, u2=1.8, traction="eyring", nodes=401, **th) -> Scene:
+    """Small local-compliance (Kodnir) roller: fast line solves (~0.2 s each)."""
+    kw = dict(oil_temperature=60.0, exponent=2.93)
+    kw.update(th)
+    return Scene(contact=Contact(kind="line", rx=0.01, length=0.02),
+                 materials=Materials(e1=2.1e11, nu1=0.3, e2=2.1e11, nu2=0.3),
+                 lubricant=Lubricant(viscosity=0.05, piezo=2e-8),
+                 kinematics=Kinematics(u1=u1, u2=u2), load=Load(force=2e5),
+                 model=Model(elasticity="local", thermal="patch"), mesh=MeshSpec(nodes=nodes),
+                 thermal=Thermal(**kw), traction=Traction(model=traction))
+
+
+# ----------------------------------------------------------------------------- scene
+def test_thermal_section_required_and_validated():
+    s = _scene()
+    with pytest.raises(SceneError, match=r"\[thermal\]"):
+        replace(s, thermal=None)
+    with pytest.raises(SceneError, match=r"thermal.oil_temperature.*deg C.*-5"):
+        Thermal(oil_temperature=-5.0, exponent=2.9)
+    with pytest.raises(SceneError, match=r"thermal.relaxation.*1.5"):
+        Thermal(oil_temperature=50.0, exponent=2.9, relaxation=1.5)
+    with pytest.raises(SceneError, match=r"piezo_temperatures.*ascending"):
+        Thermal(oil_temperature=50.0, exponent=2.9, piezo_temperatures=[150, 30],
+                piezo_values=[0.65e-8, 1.6e-8])
+    with pytest.raises(SceneError, match=r"traction.eyring_stress.*Pa"):
+        Traction(model="eyring", eyring_stress=0.0)
+    with pytest.raises(SceneError, match=r"traction.model"):
+        Traction(model="bingham")
+
+
+def test_scene_round_trip_and_unknown_key():
+    s = _scene(piezo_temperatures=[30.0, 150.0], piezo_values=[1.6e-8, 0.65e-8])
+    d = s.to_dict()
+    assert Scene.from_dict(d) == s, "to_dict/from_dict round-trips the new sections"
+    d["thermal"]["colour"] = "red"
+    with pytest.raises(SceneError, match=r"thermal.colour.*known keys"):
+        Scene.from_dict(d)
+    plain = Scene.from_dict({k: v for k, v in s.to_dict().items()
+                             if k not in ("thermal", "traction", "model")})
+    assert plain.thermal is None and plain.traction.model == "newtonian", \
+        "both sections are optional for isothermal scenes (Newtonian default)"
+
+
+def test_piezo_table_is_log_linear():
+    s = _scene(piezo_temperatures=[30.0, 150.0], piezo_values=[1.6e-8, 0.65e-8])
+    np.testing.assert_allclose(coupling.contact_piezo(s, 30.0), 1.6e-8, rtol=1e-12,
+                               err_msg="table node")
+    mid = coupling.contact_piezo(s, 90.0)
+    np.testing.assert_allclose(mid, math.sqrt(1.6e-8 * 0.65e-8), rtol=1e-12,
+                               err_msg="ln alpha linear in t: geometric mean at the midpoint")
+    assert coupling.contact_piezo(s, 20.0) > 1.6e-8, "extrapolates below the table"
+
+
+# ------------------------------------------------------------------ flash temperature
+def test_jaeger_uniform_band_maximum():
+    lam, rho, c, V, b, q = 46.0, 7850.0, 470.0, 3.0, 2e-4, 1e8
+    x = np.linspace(-b, b, 401)
+    T = coupling.jaeger_surface_temperature(x, np.full(400, q), x, lam, rho, c, V)
+    expected = 2.0 * math.sqrt(2.0 / math.pi) * q * math.sqrt(b) / math.sqrt(lam * rho * c * V)
+    np.testing.assert_allclose(T.max(), expected, rtol=1e-12,
+                               err_msg="uniform band: T_max = 2 sqrt(2/pi) q sqrt(b)/sqrt(K rho c V)"
+                                       " (= 1.596..., PHYSICS.md 5.4) at the trailing edge")
+    assert np.argmax(T) == x.size - 1
+
+
+def test_jaeger_agrees_with_fe_moving_source_at_high_peclet():
+    lam, rho, c, V, b = 46.0, 7850.0, 470.0, 4.0, 3e-4
+    pe = V * b * rho * c / (2 * lam)
+    assert pe > 40, "high-Peclet regime of the closed form"
+    x = np.linspace(-b, b, 201)
+    xm = 0.5 * (x[1:] + x[:-1])
+    q = 1e8 * np.sqrt(1 - (xm / b) ** 2)
+    tj = coupling.flash_temperature(x, q, x, lam, rho, c, V, source_model="jaeger")
+    tf = coupling.flash_temperature(x, q, x, lam, rho, c, V, source_model="fe")
+    # finite-Pe conduction along x lowers the FE maximum by O(Pe^-1/2)
+    np.testing.assert_allclose(tf.max(), tj.max(), rtol=0.05,
+                               err_msg="FE moving source vs Jaeger high-Pe integral")
+
+
+# ------------------------------------------------------------------ coupled solve
+@pytest.fixture(scope="module")
+def eyring_result():
+    return bf.solve(_scene())
+
+
+def test_coupled_solve_converges_to_a_fixed_point(eyring_result):
+    r = eyring_result
+    q = r.quantities
+    assert r.status == "converged" and r.success, r.message
+    assert all(np.isfinite(v) for v in q.values()), "no NaN in the quantities"
+    th = r.scene.thermal
+    assert abs(q["contact_temperature_rise_computed"] - q["contact_temperature_rise"]) < th.tolerance, \
+        "fixed point: the temperature used equals the one computed from it"
+    np.testing.assert_allclose(q["contact_temperature"], th.oil_temperature
+                               + q["contact_temperature_rise"], rtol=1e-12, err_msg="datum")
+    np.testing.assert_allclose(q["contact_viscosity"],
+                               prokofiev(q["contact_temperature"], 0.05, 40.0, 2.93),
+                               rtol=1e-12, err_msg="eta0 from the Prokofiev law at T_contact")
+    assert 0 < q["contact_temperature_rise"] < q["contact_temperature_rise_max"]
+    assert q["peclet_min"] > 5, "high-Peclet regime (Jaeger formula valid)"
+
+
+def test_energy_heat_into_bodies_equals_heat_power(eyring_result):
+    q = eyring_result.quantities
+    np.testing.assert_allclose(q["heat_flux_body1"] + q["heat_flux_body2"], q["heat_power"],
+                               rtol=1e-2, err_msg="energy: both patches receive the EHL heat")
+    f1 = thermal.heat_partition((46.0, 46.0), (7850.0, 7850.0), (470.0, 470.0), (2.2, 1.8)).fraction_1
+    np.testing.assert_allclose(q["heat_flux_body1"] / q["heat_power"], f1, rtol=1e-12,
+                               err_msg="Blok partition: the faster body takes more heat")
+    np.testing.assert_allclose(q["heat_power_couette"], q["sliding_friction"] * 0.4, rtol=1e-12,
+                               err_msg="Couette heat = traction x sliding speed")
+    np.testing.assert_allclose(q["heat_power_poiseuille"], q["heat_power_direct_poiseuille"],
+                               rtol=2e-2, err_msg="conservative vs direct Poiseuille heat "
+                                                  "(resolved local-compliance film)")
+
+
+def test_pure_rolling_newtonian_heat_matches_post():
+    r = bf.solve(_scene(u1=2.0, u2=2.0, traction="newtonian"))
+    q = r.quantities
+    assert r.success, r.message
+    np.testing.assert_allclose(q["heat_flux_body1"] + q["heat_flux_body2"], q["heat_power_direct"],
+                               rtol=1e-2, err_msg="heat into the patches = post's EHL heat power")
+
+
+def test_newtonian_sliding_reports_divergence_not_nan():
+    r = bf.solve(_scene(traction="newtonian"))
+    assert r.status == "diverged" and not r.success, r.message
+    assert "eyring" in r.message
+    assert all(np.isfinite(v) for v in r.quantities.values())
+
+
+def test_max_iterations_status():
+    r = bf.solve(_scene(max_iterations=1))
+    assert r.status == "max_iterations" and not r.success, r.message
+    assert all(np.isfinite(v) for v in r.quantities.values())
+
+
+def test_point_contact_rejected():
+    s = _scene()
+    with pytest.raises(SceneError, match="line contacts only"):
+        coupling.solve_thermal(replace(s, contact=Contact(kind="point", rx=0.01, ry=0.01),
+                                       mesh=MeshSpec()))
