@@ -13,6 +13,7 @@ Loop (``model.thermal = "patch"``, see ``docs/coupling.md``)::
             at its surface speed u_i under the fixed source q_i)
         dT = pressure-weighted mean (or max) surface temperature rise, averaged over bodies
         G(T) = t_oil + dT;  stop when |G(T) - T| < tol;  T <- T + omega (G(T) - T)
+        (from the second iteration a safeguarded secant step on G(T) - T replaces it)
 
 Why the rolling plane and not Korovchinsky's: the Korovchinsky strip (thermal.strip_source)
 is the steady conduction field across the track, where the source is stationary relative
@@ -169,6 +170,7 @@ def solve_thermal(scene: Scene) -> Result:
     res = None
     status, converged = "max_iterations", False
     info: dict[str, float] = {}
+    prev: tuple[float, float] | None = None     # (T, G(T) - T) of the previous iteration
     for it in range(1, th.max_iterations + 1):
         eta0 = contact_viscosity(scene, T)
         alpha = contact_piezo(scene, T)
@@ -240,7 +242,15 @@ def solve_thermal(scene: Scene) -> Result:
         if abs(delta) < th.tolerance:
             status, converged = "converged", True
             break
-        T = T + th.relaxation * delta
+        step = th.relaxation * delta
+        if prev is not None and delta != prev[1]:
+            # secant on the residual d(T) = G(T) - T, safeguarded: used only when it points
+            # the same way as the relaxed step and is at most 3x longer
+            secant = -delta * (T - prev[0]) / (delta - prev[1])
+            if secant * delta > 0 and abs(secant) <= 3.0 * abs(delta):
+                step = secant
+        prev = (T, delta)
+        T = T + step
         if T <= 0.0:  # keep the Prokofiev law defined (t > 0 deg C)
             T = 0.5 * t_oil
     if res is None:  # pragma: no cover - max_iterations >= 1
