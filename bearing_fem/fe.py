@@ -87,7 +87,7 @@ def quadrature_operators(basis: CellBasis) -> QuadratureOperators:
         phi = basis.basis[k][0]
         rr.append(rows.ravel())
         cc.append(np.repeat(dofs[k], nq))
-        vals.append(np.asarray(phi.value).ravel())
+        vals.append(np.asarray(phi).ravel())  # DiscreteField is array-like (its values)
         for d in range(dim):
             grads[d].append(np.asarray(phi.grad[d]).ravel())
     rr = np.concatenate(rr)
