@@ -33,7 +33,8 @@ import numpy as np
 TractionModel = Literal["newtonian", "eyring", "limiting"]
 
 __all__ = ["newtonian_stress", "eyring_stress", "limiting_stress", "shear_stress",
-           "couette_line", "couette_2d", "LineHeatFlux", "heat_flux_line"]
+           "couette_line", "couette_2d", "LineHeatFlux", "heat_flux_line",
+           "friction_and_heat_line"]
 
 
 def _check_positive(name: str, value: float, unit: str) -> float:
@@ -274,3 +275,30 @@ def heat_flux_line(x: np.ndarray, p: np.ndarray, h: np.ndarray, eta: np.ndarray,
         heat_power_direct_poiseuille=float(w @ (hm**3 * px**2 / (12.0 * em))),
         rolling_resistance=f_p, sliding_friction=f_c, friction_force=f_p + f_c,
         h_star=h_star, outlet=outlet)
+
+
+def friction_and_heat_line(x: np.ndarray, p: np.ndarray, h: np.ndarray, eta: np.ndarray,
+                           mean_speed: float, sliding_speed: float, load: float, *,
+                           cavitation: str = "reynolds", traction=None) -> dict[str, float]:
+    """Drop-in for ``post.friction_and_heat`` of a line solution, from NODAL fields.
+
+    Same keys (rolling_resistance, sliding_friction, friction_force,
+    friction_force_surface2, friction_coefficient [N/m, -], heat_power,
+    heat_power_couette, heat_power_poiseuille [W/m]) plus heat_power_direct_poiseuille;
+    the Couette stress follows ``traction`` (a scene ``Traction`` section, or None for
+    Newtonian) and the Poiseuille heat is the conservative form (module docstring).
+    ``load`` [N/m] (> 0 for a friction coefficient).
+    """
+    hf = heat_flux_line(x, p, h, eta, mean_speed, sliding_speed, cavitation=cavitation,
+                        **_model_kwargs(traction))
+    return {
+        "rolling_resistance": hf.rolling_resistance,
+        "sliding_friction": hf.sliding_friction,
+        "friction_force": hf.friction_force,
+        "friction_force_surface2": hf.rolling_resistance - hf.sliding_friction,
+        "friction_coefficient": hf.friction_force / load if load > 0 else 0.0,
+        "heat_power": hf.heat_power,
+        "heat_power_couette": hf.heat_power_couette,
+        "heat_power_poiseuille": hf.heat_power_poiseuille,
+        "heat_power_direct_poiseuille": hf.heat_power_direct_poiseuille,
+    }

@@ -87,14 +87,21 @@ def palmgren(t_oil: float) -> float:
                                        f0=F0, f_pr=F_PR)
 
 
-def main(outdir: str | Path = "out/seed000_nncf5040", quick: bool = False) -> dict:
-    """Run the study; write ``results.json`` and ``table.md`` to outdir; return the results."""
+def main(outdir: str | Path = "out/seed000_nncf5040", quick: bool = False,
+         models: tuple[str, ...] = ("local", "half-space"),
+         temperatures: tuple[float, ...] | None = None) -> dict:
+    """Run the study; write ``results.json`` and ``table.md`` to outdir; return the results.
+
+    quick: 801 nodes and t_oil = 20, 50, 100 C (else 1201 nodes, 20..100 C in 10 K steps);
+    models: elasticity models to run; temperatures: override the oil temperatures [deg C].
+    """
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     geo = bearing_geometry()
     nodes = 801 if quick else 1201
     temps = [20.0, 50.0, 100.0] if quick else [20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0, 100.0]
-    models = ["local", "half-space"]
+    if temperatures is not None:
+        temps = [float(t) for t in temperatures]
     rows = []
     for model in models:
         for t in temps:
@@ -128,7 +135,8 @@ def main(outdir: str | Path = "out/seed000_nncf5040", quick: bool = False) -> di
                                            if ok else None)
             row["palmgren_heat_power_W"] = palmgren(t)
             rows.append(row)
-    results = {"geometry": geo, "nodes": nodes, "quick": quick, "rows": rows}
+    results = {"geometry": geo, "nodes": nodes, "quick": quick, "models": list(models),
+               "rows": rows}
     (out / "results.json").write_text(json.dumps(results, indent=2))
     lines = ["| elasticity | t_oil C | status in/out | dT in K | Q' in W/m | Q contact in W | f in "
              "| Q bearing W | Palmgren W |", "|---|---|---|---|---|---|---|---|---|"]

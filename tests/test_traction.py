@@ -110,3 +110,27 @@ def test_poiseuille_conservative_form_on_exact_rigid_film():
     expected = 2 * u_m * hf.rolling_resistance - u_m * hf.h_star * (p[-1] - p[0])
     np.testing.assert_allclose(hf.heat_power_poiseuille, expected, rtol=1e-10,
                                err_msg="identity Q_P = 2 u_m F_P (+ end term) holds exactly")
+
+
+def test_drop_in_matches_post_keys_on_a_solved_film():
+    """friction_and_heat_line has post.friction_and_heat's keys and agrees with it on a
+    resolved (local-compliance) Newtonian film with sliding."""
+    import bearing_fem as bf
+    from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
+                                   Model, Scene, Traction)
+
+    s = Scene(contact=Contact(kind="line", rx=0.01), lubricant=Lubricant(viscosity=0.05,
+              piezo=1e-8), materials=Materials(reduced_modulus=2.3e11),
+              kinematics=Kinematics(u1=2.1, u2=1.9), load=Load(force=1e5),
+              model=Model(elasticity="local"), mesh=MeshSpec(nodes=801))
+    r = bf.solve(s)
+    assert r.success, r.message
+    d = traction.friction_and_heat_line(r.x, r.pressure, r.film, r.extra_fields["viscosity_Pa_s"],
+                                        2.0, 0.2, r.quantities["load"])
+    for key in ("rolling_resistance", "sliding_friction", "friction_force", "heat_power"):
+        np.testing.assert_allclose(d[key], r.quantities[key], rtol=2e-2,
+                                   err_msg=f"{key}: nodal midpoint rule vs post's quadrature")
+    e = traction.friction_and_heat_line(r.x, r.pressure, r.film, r.extra_fields["viscosity_Pa_s"],
+                                        2.0, 0.2, r.quantities["load"],
+                                        traction=Traction(model="eyring"))
+    assert e["sliding_friction"] < d["sliding_friction"], "Eyring routed through the section"
