@@ -43,7 +43,7 @@ from __future__ import annotations
 import logging
 import math
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
@@ -56,7 +56,7 @@ from .fe import QuadratureOperators, quadrature_operators
 from .line import fischer_burmeister
 from .newton import continuation, damped_newton
 from .result import Result
-from .reynolds import FluxModel
+from .reynolds import FluxModel, _coth_minus_inverse
 
 log = logging.getLogger(__name__)
 
@@ -72,7 +72,13 @@ ELASTIC_RANGE = ((-4.5, 1.5), (-3.0, 3.0))
 #: Grid sequencing: coarsest grid (nodes per direction) of the elastic Newton solve.
 COARSEST_NODES = 65
 #: Near-field radius (cells) of the compliance block in the preconditioner.
-NEAR_FIELD_CELLS = 2
+NEAR_FIELD_CELLS = 0
+#: Upwinding of the wedge term fades as xi(Pe) = coth(Pe) - 1/Pe with
+#: Pe = u_m c dx/(2 eps), c = factor * 4 a_x/(pi E') (0: full first-order upwind everywhere).
+UPWIND_COMPLIANCE_FACTOR = 1.0
+#: GMRES relative tolerance and restart length of the elastic Newton steps.
+GMRES_RTOL = 1e-9
+GMRES_MAX_ITERATIONS = 150
 
 
 # ---------------------------------------------------------------------------------------
@@ -230,9 +236,9 @@ def point_setup(scene, nodes: tuple[int, int] | None = None) -> PointSetup:
                                        lub.effective_piezo)
         x_unit, y_unit = hz.a_x, hz.a_y
         p_ref, h_ref = hz.p_h, h_est
-        # fully flooded inlet: 4.5 a, or 12 hydrodynamic lengths sqrt(2 rx h) at low load
-        inlet = max(4.5, 12.0 * math.sqrt(2 * rx * h_est) / hz.a_x)
-        side = max(3.0, 0.5 * inlet + 0.75)
+        # fully flooded inlet: 4.5 a, or 8 hydrodynamic lengths sqrt(2 rx h) at low load
+        inlet = max(4.5, 8.0 * math.sqrt(2 * rx * h_est) / hz.a_x)
+        side = max(3.0, 0.5 * inlet)
         xr = scene.mesh.x_range or (-inlet, 1.5)
         yr = scene.mesh.y_range or (-side, side)
         nxy = nodes or _nodes(scene, ELASTIC_NODES)
@@ -590,52 +596,140 @@ class PointProblem:
         f = self.residual(z)
         npf = self.free.size
         a_p, a_h, drdh0, row_factor, da = self._blocks(z)
-        dshift = np.zeros(self.n_unknowns)
-        dshift[:npf] = shift
-        pre = self._assemble(a_p, a_h, drdh0, row_factor, da, near=True)
-        if shift:
-            pre = (pre + sp.diags(dshift)).tocsc()
-        if self.compliance is None:
-            return spla.spsolve(pre, -f)
-        lu = spla.splu(pre, permc_spec="COLAMD")
         rows = self.free
-        n = self.grid.size
-        comp = self.compliance
         scale = row_factor * self.p_ref
         col = drdh0[rows] * row_factor * self.h_ref
         load_row = self.mass[rows] * self.p_ref / self.load if self.has_h0 else None
+        m = a_p
+        if self.compliance is not None:
+            m = a_p + a_h @ self.compliance.near_field(self.near_field_cells)
+        jpp = sp.diags(scale) @ m.tocsr()[rows][:, rows]
+        diag = (da if da is not None else 0.0) + shift
+        jpp = (jpp + sp.diags(np.broadcast_to(diag, (npf,)))).tocsc()
+        lu = spla.splu(jpp, permc_spec="COLAMD")
+        if self.has_h0:  # bordered system by the Schur complement of the (h0, load) pair
+            w = lu.solve(col)
+            schur = float(load_row @ w)
+
+        def precond(r: np.ndarray) -> np.ndarray:
+            r = np.ravel(r)
+            y = lu.solve(r[:npf])
+            if not self.has_h0:
+                return y
+            xh = (float(load_row @ y) - r[npf]) / schur
+            return np.append(y - w * xh, xh)
+
+        if self.compliance is None:
+            return precond(-f)
+        n = self.grid.size
+        comp = self.compliance
 
         def matvec(u: np.ndarray) -> np.ndarray:
             u = np.ravel(u)
             full = np.zeros(n)
             full[rows] = u[:npf]
             v = a_p @ full + a_h @ comp.apply(full)
-            out = scale * v[rows]
-            if da is not None:
-                out = out + da * u[:npf]
-            out = out + shift * u[:npf]
+            out = scale * v[rows] + diag * u[:npf]
             if self.has_h0:
                 out = out + col * u[npf]
                 return np.append(out, load_row @ u[:npf])
             return out
 
-        op = spla.LinearOperator((self.n_unknowns, self.n_unknowns), matvec=matvec)
-        prec = spla.LinearOperator((self.n_unknowns, self.n_unknowns), matvec=lu.solve)
-        count = [0]
-
-        def cb(_):
-            count[0] += 1
-
-        x0 = lu.solve(-f)
-        dz, info = spla.gmres(op, -f, x0=x0, M=prec, rtol=1e-8, atol=0.0, restart=60,
-                              maxiter=4, callback=cb, callback_type="pr_norm")
-        self.linear_iterations += count[0]
-        if info < 0:
-            raise RuntimeError(f"gmres failed (info={info})")
+        dz, its, rel = gmres_right(matvec, precond, -f, rtol=GMRES_RTOL,
+                                   max_iterations=GMRES_MAX_ITERATIONS)
+        self.linear_iterations += its
+        log.debug("gmres: %d iterations, relative residual %.2e", its, rel)
+        if not np.all(np.isfinite(dz)):
+            raise RuntimeError("gmres produced non-finite values")
         return dz
 
 
+@dataclass(frozen=True)
+class UpwindFluxModel(FluxModel):
+    """Reynolds flux with a first-order upwinded wedge term (elastic 2D scenes).
+
+    F_x = eps dp/dx - u_m rho h + (dx/2) u_m d(rho h)/dx: the added streamline
+    diffusion turns the Galerkin (central) wedge term into the first-order upwind
+    difference (rho h)_i - (rho h)_(i-1) that Venner & Lubrecht use for EHL on coarse
+    grids; consistent to O(dx). Without it, bilinear Galerkin elements give odd-even
+    (checkerboard) pressures at the outlet of an elastic point contact and Newton
+    stagnates. ``compliance`` is ignored (no coth-SUPG on top).
+    """
+
+    upwind: float = 1.0
+    upwind_compliance: float = 0.0
+
+    def flux(self, p, h, gp, gh, dx):
+        base = FluxModel.flux(replace(self, compliance=0.0), p, h, gp, gh, dx) \
+            if self.compliance else FluxModel.flux(self, p, h, gp, gh, dx)
+        rho = self.density(p)
+        dp = 1e3  # Pa; smooth density laws
+        drho = (self.density(p + dp) - self.density(p - dp)) / (2 * dp)
+        wedge_x = rho * gh[0] + h * drho * gp[0]
+        out = list(base)
+        xi = 1.0
+        if self.upwind_compliance > 0.0:  # fade out where Poiseuille flow dominates
+            eps = rho * h**3 / (12.0 * self.viscosity(p))
+            xi = _coth_minus_inverse(self.mean_speed * rho * self.upwind_compliance * dx
+                                     / (2.0 * eps))
+        out[0] = out[0] + 0.5 * self.upwind * xi * dx * self.mean_speed * wedge_x
+        return tuple(out)
+
+
+def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
+                precond: Callable[[np.ndarray], np.ndarray], b: np.ndarray, *,
+                rtol: float = 1e-9, max_iterations: int = 150
+                ) -> tuple[np.ndarray, int, float]:
+    """Right-preconditioned GMRES (no restart) from x0 = M^-1 b.
+
+    Arnoldi with classical Gram-Schmidt applied twice (numpy matrix products), the
+    small least-squares problem solved each iteration. Stops when the true-residual
+    estimate |b - A x| <= rtol |b| or after ``max_iterations``.
+
+    Returns
+    -------
+    x : ndarray; iterations : int; relative residual estimate : float
+    """
+    bnorm = float(np.linalg.norm(b))
+    if bnorm == 0.0:
+        return np.zeros_like(b), 0, 0.0
+    x0 = precond(b)
+    r0 = b - matvec(x0)
+    beta = float(np.linalg.norm(r0))
+    if beta <= rtol * bnorm:
+        return x0, 0, beta / bnorm
+    m = max_iterations
+    V = np.zeros((m + 1, b.size))
+    Z = np.zeros((m, b.size))
+    H = np.zeros((m + 1, m))
+    V[0] = r0 / beta
+    e1 = np.zeros(m + 1)
+    e1[0] = beta
+    y = np.zeros(0)
+    rel = 1.0
+    k = 0
+    for k in range(m):
+        Z[k] = precond(V[k])
+        w = matvec(Z[k])
+        for _ in range(2):  # CGS2
+            h = V[:k + 1] @ w
+            w = w - V[:k + 1].T @ h
+            H[:k + 1, k] += h
+        H[k + 1, k] = np.linalg.norm(w)
+        if H[k + 1, k] > 0.0:
+            V[k + 1] = w / H[k + 1, k]
+        y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
+        rel = float(np.linalg.norm(e1[:k + 2] - H[:k + 2, :k + 1] @ y)) / bnorm
+        if rel <= rtol or H[k + 1, k] == 0.0:
+            break
+    return x0 + Z[:k + 1].T @ y, k + 1, rel
+
+
 def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
+    if setup.compliance is not None:
+        base = UpwindFluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
+                                              compliance=0.0, piezo_scale=piezo_scale)
+        return replace(base, upwind_compliance=UPWIND_COMPLIANCE_FACTOR * setup.stab_compliance)
     return FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
                                     compliance=setup.stab_compliance, piezo_scale=piezo_scale)
 
@@ -811,6 +905,146 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
         return _solve_linear(scene, setup, _boundary_values(setup.grid, boundary_pressure),
                              sq, t0)
     return _solve_newton(scene, setup, boundary_pressure, sq, t0, max_iterations)
+
+
+@dataclass
+class SqueezeSeries:
+    """Rigid transient squeeze series h0(t) = h0 (1 + eps cos(omega t)) (PHYSICS.md 2, 5.1).
+
+    Attributes
+    ----------
+    times : ndarray
+        t [s].
+    gap : ndarray
+        h0(t) [m].
+    squeeze_velocity : ndarray
+        dh0/dt = -h0 eps omega sin(omega t) [m/s].
+    p_max : ndarray
+        Maximum pressure of each step [Pa] (``inf`` for a step without solution).
+    results : list of Result
+        One quasi-steady solve per step, all on the same grid.
+    """
+
+    times: np.ndarray
+    gap: np.ndarray
+    squeeze_velocity: np.ndarray
+    p_max: np.ndarray
+    results: list
+
+    @property
+    def statuses(self) -> list[str]:
+        return [r.status for r in self.results]
+
+    def export(self, directory, name: str = "squeeze") -> dict[str, str]:
+        """Write the series as VTU files + a PVD index and as one XDMF/HDF5 time series.
+
+        Fields per node: ``pressure_Pa``, ``film_m``. Returns the written paths
+        (``pvd``, ``xdmf``). Uses meshio (imported here only).
+        """
+        import os
+        from pathlib import Path
+
+        import meshio
+
+        out = Path(directory)
+        out.mkdir(parents=True, exist_ok=True)
+        r0 = self.results[0]
+        grid = PointGrid.tensor(r0.x, r0.y)
+        X, Y = grid.node_coordinates()
+        points = np.column_stack([X, Y, np.zeros_like(X)])
+        cells = [("quad", np.ascontiguousarray(grid.mesh.t.T))]
+        entries = []
+        for k, (t, r) in enumerate(zip(self.times, self.results)):
+            fname = f"{name}_{k:04d}.vtu"
+            meshio.write(out / fname, meshio.Mesh(points, cells, point_data={
+                "pressure_Pa": r.pressure.ravel(), "film_m": r.film.ravel()}))
+            entries.append(f'    <DataSet timestep="{t:.9g}" part="0" file="{fname}"/>')
+        pvd = out / f"{name}.pvd"
+        pvd.write_text('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
+                       "  <Collection>\n" + "\n".join(entries) + "\n  </Collection>\n"
+                       "</VTKFile>\n", encoding="utf-8")
+        xdmf = out / f"{name}.xdmf"
+        cwd = os.getcwd()
+        try:  # meshio writes the .h5 next to the .xdmf with a relative reference
+            os.chdir(out)
+            with meshio.xdmf.TimeSeriesWriter(xdmf.name) as w:
+                w.write_points_cells(points, cells)
+                for t, r in zip(self.times, self.results):
+                    w.write_data(float(t), point_data={"pressure_Pa": r.pressure.ravel(),
+                                                       "film_m": r.film.ravel()})
+        finally:
+            os.chdir(cwd)
+        return {"pvd": str(pvd), "xdmf": str(xdmf)}
+
+
+def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
+                         times: np.ndarray | None = None, n_steps: int = 16, *,
+                         boundary_pressure: Callable | None = None) -> SqueezeSeries:
+    """Quasi-steady rigid series for h0(t) = h0 (1 + eps cos(omega t)).
+
+    Each step solves the rigid wedge + squeeze problem with the gap h0(t) and the
+    squeeze source dh0/dt = -h0 eps omega sin(omega t) (the film has no memory in the
+    rigid incompressible Reynolds equation, so the steps are independent). All steps use
+    the grid of the mean gap h0, so the series exports on one mesh.
+
+    Parameters
+    ----------
+    scene : Scene
+        Rigid point scene with a prescribed gap (``load.gap`` = h0, the mean) and a
+        linear lubricant law (constant or Barus, incompressible).
+    eps : float
+        Relative amplitude [-], 0 <= eps < 1.
+    omega : float, optional
+        Angular frequency [rad/s]; default u_m / sqrt(2 rx h0) (one hydrodynamic length
+        per period/(2 pi)).
+    times : array, optional
+        Instants [s]; default ``n_steps`` instants over one period.
+    n_steps : int
+        Used when ``times`` is None.
+    boundary_pressure : callable, optional
+        ``(x, y, t) -> p`` Dirichlet data [Pa] (default 0).
+
+    Returns
+    -------
+    SqueezeSeries
+    """
+    from dataclasses import replace as dc_replace
+
+    if scene.contact.kind != "point":
+        raise SceneError(f"solve_squeeze_series needs contact.kind = 'point', got "
+                         f"{scene.contact.kind!r}")
+    if not _is_linear(scene):
+        raise SceneError("solve_squeeze_series needs a rigid, incompressible scene with "
+                         "load.gap (m) and a constant or Barus viscosity law")
+    eps = float(eps)
+    if not 0.0 <= eps < 1.0:
+        raise ValueError(f"eps must lie in [0, 1) (dimensionless), got {eps!r}")
+    h0 = scene.load.gap
+    if omega is None:
+        omega = scene.kinematics.mean_speed / math.sqrt(2 * scene.contact.rx * h0)
+    omega = float(omega)
+    if not (math.isfinite(omega) and omega > 0.0):
+        raise ValueError(f"omega must be > 0 rad/s, got {omega!r}")
+    if times is None:
+        if not isinstance(n_steps, int) or n_steps < 1:
+            raise ValueError(f"n_steps must be a positive integer, got {n_steps!r}")
+        times = np.arange(n_steps) * (2 * math.pi / omega) / n_steps
+    times = np.asarray(times, dtype=float).ravel()
+    setup = point_setup(scene)
+    gaps = h0 * (1.0 + eps * np.cos(omega * times))
+    rates = -h0 * eps * omega * np.sin(omega * times)
+    results = []
+    for t, g, r in zip(times, gaps, rates):
+        sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
+        bp = None if boundary_pressure is None else (
+            lambda x, y, _t=t: boundary_pressure(x, y, _t))
+        t0 = time.perf_counter()
+        res = _solve_linear(sc, dc_replace(setup, h_ref=float(g)),
+                            _boundary_values(setup.grid, bp), float(r), t0)
+        results.append(res)
+    p_max = np.array([r.quantities.get("p_max", np.inf) if r.success else np.inf
+                      for r in results])
+    return SqueezeSeries(times, gaps, rates, p_max, results)
 
 
 def _finish(scene, setup: PointSetup, problem: PointProblem, p: np.ndarray, h0: float,

@@ -120,3 +120,105 @@ def test_bad_input():
         solve_point(scene, squeeze_velocity=float("nan"))
     with pytest.raises(ValueError, match="boundary_pressure"):
         solve_point(scene, boundary_pressure=np.zeros(7))
+
+
+def test_squeeze_series_matches_kapitsa(tmp_path):
+    from bearing_fem.point import solve_squeeze_series
+
+    rx, ry = 0.01, 0.02
+    eps = 0.3
+    scene = rigid_scene(rx, ry, nodes=(121, 121))
+    omega = 2.0 * U_M / math.sqrt(2 * rx * H0)  # squeeze comparable to the wedge
+    series = solve_squeeze_series(scene, eps=eps, omega=omega, n_steps=8)
+    assert all(s == "linear" for s in series.statuses)
+    a, b = 1 / (2 * rx), 1 / (2 * ry)
+    for g, rate, pm in zip(series.gap, series.squeeze_velocity, series.p_max):
+        exact = float(an.kapitsa_point_max_reduced(g, a, b, ETA0, U_M, rate))
+        np.testing.assert_allclose(pm, exact, rtol=1e-2,
+                                   err_msg="each step within 1% of Kapitsa (issue acceptance; "
+                                           "zero boundary data on +-30 contact lengths "
+                                           "truncates the 1/r^3 far field)")
+    np.testing.assert_allclose(series.gap, H0 * (1 + eps * np.cos(omega * series.times)))
+    paths = series.export(tmp_path / "series")
+    import meshio
+
+    assert "DataSet" in open(paths["pvd"]).read()
+    first = meshio.read(tmp_path / "series" / "squeeze_0000.vtu")
+    np.testing.assert_allclose(first.point_data["pressure_Pa"],
+                               series.results[0].pressure.ravel())
+    with meshio.xdmf.TimeSeriesReader(paths["xdmf"]) as reader:
+        reader.read_points_cells()
+        t, pdata, _ = reader.read_data(3)
+    np.testing.assert_allclose(t, series.times[3])
+    np.testing.assert_allclose(pdata["pressure_Pa"], series.results[3].pressure.ravel())
+
+
+# ---------------------------------------------------------------------------------------
+# elastic (half-space) point EHL
+# ---------------------------------------------------------------------------------------
+def _moes_scene(M, L, nodes, ry_over_rx=1.0, max_iterations=30):
+    from bearing_fem.units import point_scene_parameters_from_moes
+
+    d = point_scene_parameters_from_moes(M, L, rx=0.01, ry=0.01 * ry_over_rx)
+    u = d["mean_speed"]
+    return Scene(contact=Contact(kind="point", rx=d["rx"], ry=d["ry"]),
+                 materials=Materials(reduced_modulus=d["e_prime"]),
+                 lubricant=Lubricant(viscosity=d["viscosity"], piezo=d["piezo"]),
+                 kinematics=Kinematics(u1=u, u2=u), load=Load(force=d["force"]),
+                 mesh=MeshSpec(nodes=(nodes, nodes)),
+                 solver=SolverSpec(max_iterations=max_iterations))
+
+
+@pytest.mark.parametrize("M, L, ry_over_rx", [(100, 10, 1.0), (20, 10, 1.0), (50, 5, 3.0)])
+def test_elastic_point_converges_near_nvm(M, L, ry_over_rx):
+    from bearing_fem.formulas import point_central_film_nvm
+
+    scene = _moes_scene(M, L, 65, ry_over_rx)
+    res = solve_point(scene)
+    assert res.status == "converged", res.message
+    assert res.newton_iterations < 40, f"cost cap: {res.newton_iterations} Newton iterations"
+    c, lub = scene.contact, scene.lubricant
+    hc = point_central_film_nvm(scene.load.force, c.rx, c.ry, scene.e_prime, lub.viscosity,
+                                scene.kinematics.mean_speed, lub.piezo)
+    np.testing.assert_allclose(res.quantities["h_central"], hc, rtol=0.10,
+                               err_msg="central film within 10% of Nijenbanning-Venner-Moes "
+                                       "(issue acceptance; 65^2 grid, first-order upwind "
+                                       "wedge in the Hertz zone, NVM itself is a fit)")
+    np.testing.assert_allclose(res.quantities["load"], scene.load.force, rtol=1e-6,
+                               err_msg="load row satisfied to the Newton tolerance")
+    assert np.min(res.pressure) >= 0.0
+    assert np.all(np.isfinite(res.film)) and res.quantities["h_min"] > 0.0
+    assert res.quantities["h_min"] < res.quantities["h_central"]
+    assert res.pressure.shape == (res.y.size, res.x.size)
+
+
+def test_elastic_squeeze_thickens_film_at_fixed_load():
+    # An approaching surface (dh0/dt < 0) builds squeeze pressure that carries part of
+    # the load, so at a fixed load the wedge needs less pressure: the film is thicker.
+    from bearing_fem.formulas import point_central_film_nvm
+    from bearing_fem.units import hertz_point
+
+    scene = _moes_scene(100, 5, 65)
+    c, lub, u = scene.contact, scene.lubricant, scene.kinematics.mean_speed
+    hc = point_central_film_nvm(scene.load.force, c.rx, c.ry, scene.e_prime, lub.viscosity,
+                                u, lub.piezo)
+    a = hertz_point(scene.load.force, c.rx, c.ry, scene.e_prime).a_x
+    steady = solve_point(scene)
+    squeezed = solve_point(scene, squeeze_velocity=-0.2 * u * hc / a)
+    assert steady.status == squeezed.status == "converged", squeezed.message
+    assert squeezed.quantities["h_central"] > steady.quantities["h_central"]
+
+
+@pytest.mark.slow
+def test_point_ehl_map_study(tmp_path):
+    import importlib.util
+    import pathlib
+
+    path = pathlib.Path(__file__).resolve().parents[1] / "studies" / "point_ehl_map.py"
+    spec = importlib.util.spec_from_file_location("point_ehl_map", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    out = mod.main(tmp_path, quick=False, nodes=65, plot=False)
+    solved = [r for r in out["cases"] if r["status"] != "skipped"]
+    assert all(r["status"] == "converged" for r in solved), [r["message"] for r in solved]
+    assert out["max_abs_hc_deviation"] < 0.15, "65^2: within 15% of NVM over the map"

@@ -1,0 +1,91 @@
+"""Cost of the elastic point-contact solver versus grid size.
+
+Question
+--------
+How do wall time, Newton iterations, time per Newton iteration and peak memory of
+:func:`bearing_fem.point.solve_point` grow from 65^2 to 513^2 nodes?
+
+Scene
+-----
+Circular contact at Moes M = 100, L = 10 (alpha p_h = 16.9), built as in
+``studies/point_ehl_map.py``. Each grid n is solved from scratch with the solver's grid
+sequencing (65 -> 129 -> ... -> n), so T(n) - T(n_prev) is the cost of the finest level
+alone, and the time per Newton iteration on the finest level is that difference over the
+finest-level iteration count. The growth exponent is the slope of log(time per
+iteration) against log(unknowns): ~1 for an O(N log N) FFT + sparse LU of the
+near-field preconditioner, plus the GMRES iteration growth.
+
+Expected outcome
+----------------
+A few Newton iterations per fine level, exponent ~1.0-1.3, peak memory well below 4 GB
+at 513^2 (the dense 2D compliance is never formed).
+"""
+from __future__ import annotations
+
+import json
+import resource
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from bearing_fem.point import solve_point
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from point_ehl_map import moes_scene  # noqa: E402
+
+
+def _finest_iterations(res, n: int) -> int:
+    tag = f"({n}x{n} nodes)"
+    return int(sum(its for _, status, its in res.continuation if tag in status))
+
+
+def main(outdir, quick: bool = False, *, M: float = 100.0, L: float = 10.0) -> dict:
+    """Run the benchmark; write ``point_benchmark.json``/``.txt``; return the numbers.
+
+    quick: grids 65, 129, 257 (513 skipped).
+    """
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    grids = (65, 129, 257) if quick else (65, 129, 257, 513)
+    rows = []
+    prev_time = 0.0
+    for n in grids:
+        scene = moes_scene(M, L, n)
+        t0 = time.perf_counter()
+        res = solve_point(scene)
+        wall = time.perf_counter() - t0
+        its = _finest_iterations(res, n)
+        level_time = wall - prev_time if n != grids[0] else wall
+        prev_time = wall
+        rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+        rows.append({"nodes": n, "unknowns": n * n, "status": res.status,
+                     "wall_time_s": wall, "newton_iterations_total": res.newton_iterations,
+                     "newton_iterations_finest": its,
+                     "time_per_iteration_s": level_time / max(its, 1),
+                     "gmres_iterations_total": res.quantities.get("gmres_iterations"),
+                     "h_central_m": res.quantities.get("h_central"),
+                     "peak_rss_mb": rss_mb})
+    n_arr = np.array([r["unknowns"] for r in rows], dtype=float)
+    t_arr = np.array([r["time_per_iteration_s"] for r in rows])
+    exponent = float(np.polyfit(np.log(n_arr), np.log(t_arr), 1)[0]) if len(rows) > 1 \
+        else float("nan")
+    lines = [f"{'grid':>8} {'status':>10} {'time s':>8} {'its(fine)':>9} {'s/it':>7} "
+             f"{'gmres':>6} {'peak MB':>8}"]
+    for r in rows:
+        lines.append(f"{r['nodes']:>4}^2    {r['status']:>10} {r['wall_time_s']:8.1f} "
+                     f"{r['newton_iterations_finest']:9d} {r['time_per_iteration_s']:7.2f} "
+                     f"{r['gmres_iterations_total']:6.0f} {r['peak_rss_mb']:8.0f}")
+    lines.append(f"growth exponent of time per Newton iteration vs unknowns: {exponent:.2f}")
+    table = "\n".join(lines)
+    print(table)
+    (outdir / "point_benchmark.txt").write_text(table + "\n")
+    out = {"M": M, "L": L, "rows": rows, "growth_exponent": exponent}
+    (outdir / "point_benchmark.json").write_text(json.dumps(out, indent=1))
+    return out
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "out_point_benchmark",
+         quick="--quick" in sys.argv)
