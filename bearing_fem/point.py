@@ -250,13 +250,11 @@ def point_setup(scene, nodes: tuple[int, int] | None = None) -> PointSetup:
     if scene.load.gap is not None:
         h0 = scene.load.gap
     else:
-        # rigid under load: Kapitsa's full-Sommerfeld wedge has zero load; estimate h0 from
-        # the pressure scale eta0 u_m L/h0^2 acting on an area ~ 2 L^2 (start only)
-        a = 1 / (2 * rx)
-        lx = math.sqrt(2 * rx)
-        # F ~ 2 eta0 u_m lx^3 h0^(-1/2)  ->  h0
-        h0 = (2.0 * lub.viscosity * u_m * lx**3 / scene.load.force) ** 2
-        del a
+        # rigid under load (start only): pressure scale eta0 u_m Lx/h0^2 on an area
+        # Lx Ly, Lx = sqrt(2 rx h0), Ly = sqrt(2 ry h0)  ->  F ~ 2 sqrt(2) eta0 u_m rx
+        # sqrt(ry) / sqrt(h0)
+        k = 2.0 * math.sqrt(2.0) * lub.viscosity * u_m * rx * math.sqrt(ry)
+        h0 = (k / scene.load.force) ** 2
     x_unit, y_unit = math.sqrt(2 * rx * h0), math.sqrt(2 * ry * h0)
     p_ref = lub.viscosity * u_m * x_unit / h0**2
     rng = RIGID_RANGE_FS if model.cavitation == "none" else RIGID_RANGE_REYNOLDS
@@ -1075,10 +1073,11 @@ def _finish(scene, setup: PointSetup, problem: PointProblem, p: np.ndarray, h0: 
             ind = (ops.value @ full.astype(float) >= 0.5).astype(float)
         else:
             ind = np.ones_like(h_q)
-        eta_q = problem.flux.viscosity(pq)
-        quantities.update(pp.friction_and_heat(ops, h_q, gp, eta_q,
-                                               scene.kinematics.sliding_speed, ind, load))
-        extra["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
+        with np.errstate(all="ignore"):  # unconverged iterates may overflow exp(alpha p)
+            eta_q = problem.flux.viscosity(pq)
+            quantities.update(pp.friction_and_heat(ops, h_q, gp, eta_q,
+                                                   scene.kinematics.sliding_speed, ind, load))
+            extra["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
     success = status in ("converged", "linear")
     return Result(success=success, status=status, message=message, scene=scene, x=grid.x,
                   y=grid.y, pressure=np.asarray(p).reshape(grid.shape),
