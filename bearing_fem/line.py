@@ -55,9 +55,18 @@ class LineDiscretisation:
         return float(self.x[1] - self.x[0])
 
 
-def fischer_burmeister(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """phi = a + b - sqrt(a^2 + b^2) and its partial derivatives (generalised at 0)."""
-    r = np.hypot(a, b)
+#: Smoothing of the Fischer-Burmeister function (scaled units). A degenerate node with
+#: p = R = 0 (the discrete free boundary) makes the plain FB Jacobian singular and lets
+#: the semismooth Newton cycle between two active sets; with mu > 0 the function is
+#: smooth and its root satisfies p >= 0, R >= 0, p R = mu^2 / 2, i.e. complementarity
+#: to 5e-21 in scaled units (p/p_ref times the scaled residual).
+FB_SMOOTHING = 1e-10
+
+
+def fischer_burmeister(a: np.ndarray, b: np.ndarray,
+                       mu: float = FB_SMOOTHING) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Smoothed FB function phi = a + b - sqrt(a^2 + b^2 + 2 mu^2) and its derivatives."""
+    r = np.sqrt(a * a + b * b + 2.0 * mu * mu)
     phi = a + b - r
     zero = r < 1e-300
     rs = np.where(zero, 1.0, r)
