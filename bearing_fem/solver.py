@@ -430,9 +430,28 @@ def _finish(scene: Scene, setup: LineSetup, problem: LineProblem, p: np.ndarray,
             quantities["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
         nodes_eta = problem.flux.viscosity(p)
         extra["viscosity_Pa_s"] = nodes_eta
+        if scene.traction.model != "newtonian":
+            _non_newtonian_couette(scene, disc.x, p, h_nodes, nodes_eta, outlet, quantities)
     success = status in ("converged", "linear")
     return Result(success=success, status=status, message=message, scene=scene, x=disc.x,
                   pressure=p, film=h_nodes, h0=float(h0), quantities=quantities,
                   history=list(history or []), newton_iterations=iterations,
                   linear_solves=linear_solves, wall_time_s=time.perf_counter() - t0,
                   continuation=list(continuation_steps or []), extra_fields=extra)
+
+
+def _non_newtonian_couette(scene: Scene, x: np.ndarray, p: np.ndarray, h: np.ndarray,
+                           eta: np.ndarray, outlet: float | None, q: dict) -> None:
+    """Replace the Newtonian Couette friction and heat by the scene's traction model
+    (Eyring or limiting shear stress, :mod:`bearing_fem.traction`); the Poiseuille parts
+    stay as computed."""
+    from .traction import _model_kwargs, couette_line
+
+    xm = 0.5 * (x[1:] + x[:-1])
+    ind = np.ones_like(xm) if outlet is None else (xm <= outlet).astype(float)
+    f_c, q_c = couette_line(x, p, h, eta, scene.kinematics.sliding_speed, indicator=ind,
+                            **_model_kwargs(scene.traction))
+    f_p = q["rolling_resistance"]
+    q.update(sliding_friction=f_c, friction_force=f_p + f_c, friction_force_surface2=f_p - f_c,
+             friction_coefficient=(f_p + f_c) / q["load"] if q["load"] > 0 else 0.0,
+             heat_power_couette=q_c, heat_power=q_c + q["heat_power_poiseuille"])
