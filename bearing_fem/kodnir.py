@@ -234,7 +234,7 @@ class KodnirProblem:
         k, h_off = self.unpack(u)
         with np.errstate(over="ignore", invalid="ignore"):
             r = self.nodal_residual(k, h_off)
-        phi, _, _ = fischer_burmeister(k[self.free], r[self.free] * self._scale)
+        phi, _, _ = fischer_burmeister(k[self.free], r[self.free] * self._scale, mu=0.0)
         return np.append(phi, (r[-1] - 1.0) * self._flux_scale)
 
     def jacobian(self, u: np.ndarray) -> sp.csc_matrix:
@@ -247,7 +247,7 @@ class KodnirProblem:
         col_h = np.asarray(ops.grad[0].T @ (ops.weights * d[1])).ravel()
         fr = self.free
         s = self._scale
-        _, da, db = fischer_burmeister(k[fr], r[fr] * s)
+        _, da, db = fischer_burmeister(k[fr], r[fr] * s, mu=0.0)
         jk = sp.diags(db * s) @ a[fr][:, fr] + sp.diags(da)
         jh = (db * s * col_h[fr])[:, None]
         last_k = a[self.n - 1][:, fr] * self._flux_scale
@@ -489,7 +489,7 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
     total = 0
     start = path[0]
     prob = KodnirProblem(grid, *start)
-    out = damped_newton(prob, u, tol=tol, max_iterations=max_iterations)
+    out = damped_newton(prob, u, tol=tol, max_iterations=max_iterations, memory=1)
     total += out.iterations
     record.append((start[0], start[1], out.status, out.iterations))
     if not out.converged:
@@ -507,7 +507,8 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
                 cand = u + (st - s) / (s - prev[0]) * (u - prev[1])
                 if prob.admissible(cand):
                     guess = cand
-            out = damped_newton(prob, guess, tol=tol, max_iterations=max_iterations)
+            out = damped_newton(prob, guess, tol=tol, max_iterations=max_iterations,
+                                   memory=1)
             total += out.iterations
             record.append((pc[0], pc[1], out.status, out.iterations))
             if out.converged:
@@ -620,7 +621,7 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 4001,
     grid_f = _Grid.from_nodes(z_final)
     prob = KodnirProblem(grid_f, C, b_alpha)
     uf = _transfer(u, coarse, prob)
-    out: NewtonOutcome = damped_newton(prob, uf, tol=tol, max_iterations=20)
+    out: NewtonOutcome = damped_newton(prob, uf, tol=tol, max_iterations=20, memory=1)
     total += out.iterations
     record.append((C, b_alpha, out.status + " (final grid)", out.iterations))
     ufin = out.z if out.converged else None

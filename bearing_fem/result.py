@@ -16,6 +16,13 @@ _UNITS_POINT = {
     "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
     "heat_power_couette": "W", "heat_power_poiseuille": "W", "outlet_position": "m",
     "h_outlet": "m",
+    # thermal coupling (bearing_fem.coupling)
+    "contact_temperature": "degC", "contact_temperature_rise": "K",
+    "contact_temperature_rise_computed": "K", "contact_temperature_rise_mean": "K",
+    "contact_temperature_rise_max": "K", "heat_power_direct": "W",
+    "heat_power_direct_poiseuille": "W", "heat_flux_body1": "W", "heat_flux_body2": "W",
+    "heat_fraction_body1": "1", "peclet_min": "1", "thermal_iterations": "1",
+    "contact_viscosity": "Pa s", "contact_piezo": "1/Pa", "gmres_iterations": "1",
     "wall_time_s": "s",
 }
 
