@@ -384,10 +384,9 @@ def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: 
                            None, scene.model.cavitation, None, h0, setup.p_ref, setup.h_ref,
                            lub.viscosity, p_bc, squeeze_velocity)
     if ratio >= 1.0:
-        msg = (f"no solution: rigid piezo-viscous (Barus) pressure does not exist since "
-               f"alpha*q_max = {ratio:.4g} >= 1 (Kapitsa transform, PHYSICS.md 5.1; "
-               f"alpha = {alpha:.3g} 1/Pa, q_max = {np.max(q):.4g} Pa). The pressure field "
-               "holds the isoviscous reduced pressure q instead.")
+        from .solver import no_solution_message
+
+        msg = no_solution_message(alpha, float(np.max(q)))
         return _finish(scene, setup, problem, q, h0, "no_solution", msg, t0,
                        linear_solves=solves, post=False)
     p = barus_from_reduced(q, alpha) if alpha > 0 else q

@@ -211,6 +211,14 @@ def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
     return q, solves
 
 
+def no_solution_message(alpha: float, q_max: float) -> str:
+    """Status message of a rigid Barus scene beyond Kapitsa's existence limit."""
+    return (f"no solution: rigid piezo-viscous (Barus) pressure does not exist since "
+            f"alpha*q_max = {alpha * q_max:.4g} >= 1 (Kapitsa transform, PHYSICS.md 5.1; "
+            f"alpha = {alpha:.3g} 1/Pa, q_max = {q_max:.4g} Pa). The pressure field "
+            "holds the isoviscous reduced pressure q instead.")
+
+
 def _solve_line_linear(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
     from .analytic import barus_from_reduced, reduced_from_barus
 
@@ -224,10 +232,7 @@ def _solve_line_linear(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
                                          lub.viscosity, scene.model.cavitation)
     ratio = alpha * float(np.max(q))
     if ratio >= 1.0:
-        msg = (f"no solution: rigid piezo-viscous (Barus) pressure does not exist since "
-               f"alpha*q_max = {ratio:.4g} >= 1 (Kapitsa transform, PHYSICS.md 5.1; "
-               f"alpha = {alpha:.3g} 1/Pa, q_max = {np.max(q):.4g} Pa). The pressure field "
-               "holds the isoviscous reduced pressure q instead.")
+        msg = no_solution_message(alpha, float(np.max(q)))
         return _finish(scene, setup, problem, q, h0, "no_solution", msg, t0,
                        linear_solves=solves, post=False)
     p = barus_from_reduced(q, alpha) if alpha > 0 else q
