@@ -88,11 +88,11 @@ def run_case(M: float, L: float, nodes: int) -> dict:
 
 
 def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: int = 1201,
-         max_alpha_ph: float = 100.0) -> dict:
+         max_alpha_ph: float = 100.0, l_values: tuple[float, ...] = L_VALUES) -> dict:
     """Run the map; write ``line_ehl_map.json`` and ``line_ehl_map.md``; return the rows."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
-    cases = [(M, L) for L in L_VALUES for M in M_VALUES]
+    cases = [(M, L) for L in l_values for M in M_VALUES]
     if quick:
         cases = [(20, 5), (100, 10)]
     rows = []
@@ -144,4 +144,8 @@ def _row_md(r: dict) -> str:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "out/line_ehl_map")
+    # python studies/line_ehl_map.py [outdir] [nodes] [L values, comma-separated]
+    main(sys.argv[1] if len(sys.argv) > 1 else "out/line_ehl_map",
+         nodes=int(sys.argv[2]) if len(sys.argv) > 2 else 1201,
+         l_values=tuple(float(v) for v in sys.argv[3].split(",")) if len(sys.argv) > 3
+         else L_VALUES)
