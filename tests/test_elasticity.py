@@ -52,13 +52,9 @@ def _hertz_point_displacement_local(r, a, p_h, e_prime):
     return out
 
 
-try:  # analytic.py is written concurrently; prefer it, fall back to the same closed forms
-    from bearing_fem.analytic import hertz_line_gap_outside, hertz_point_displacement
-    HAVE_ANALYTIC = True
-except ImportError:
-    hertz_line_gap_outside = _hertz_line_gap_outside_local
-    hertz_point_displacement = _hertz_point_displacement_local
-    HAVE_ANALYTIC = False
+# The oracles come from bearing_fem.analytic; the local transcriptions above only
+# cross-check them (test_analytic_hertz_oracles_agree_with_physics_md).
+from bearing_fem.analytic import hertz_line_gap_outside, hertz_point_displacement  # noqa: E402
 
 
 E_PRIME = 2.2e11      # Pa, steel on steel (E = 2.0e11 Pa, nu = 0.3 gives 2.198e11)
@@ -162,7 +158,6 @@ def test_line_hertz_convergence_order():
         f"[1.1, 2.2]: expected ~1.3-1.5 for a pressure with a square-root edge")
 
 
-@pytest.mark.skipif(not HAVE_ANALYTIC, reason="bearing_fem.analytic Hertz oracles not present")
 def test_analytic_hertz_oracles_agree_with_physics_md():
     x = np.linspace(1.0, 5.0, 41) * 1e-4
     np.testing.assert_allclose(hertz_line_gap_outside(x, 1e-4, 0.01),
