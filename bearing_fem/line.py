@@ -75,7 +75,23 @@ def fischer_burmeister(a: np.ndarray, b: np.ndarray,
     return phi, da, db
 
 
-class LineProblem:
+class ScaledResidual:
+    """The scaled residual shared by the line and point problems: Reynolds rows (or their
+    Fischer-Burmeister functions) at the free nodes, then the load row. Needs
+    ``unpack``, ``reynolds_residual``, ``free``, ``_row_scale``, ``cavitation``,
+    ``p_ref``, ``has_h0``, ``mass`` and ``load``."""
+
+    def residual(self, z: np.ndarray) -> np.ndarray:
+        p, h0 = self.unpack(z)
+        r = self.reynolds_residual(p, h0)[self.free] * self._row_scale
+        if self.cavitation == "reynolds":
+            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
+        if self.has_h0:
+            r = np.append(r, (self.mass @ p - self.load) / self.load)
+        return r
+
+
+class LineProblem(ScaledResidual):
     """Scaled nonlinear system of one line-contact scene (implements NonlinearProblem).
 
     Parameters
@@ -177,15 +193,6 @@ class LineProblem:
         pq, h, px, hx = self.fields_q(p, h0)
         (fx,) = self.flux.flux(pq, h, (px,), (hx,), self.disc.ops.element_size)
         return self.disc.ops.weak_divergence(fx)
-
-    def residual(self, z: np.ndarray) -> np.ndarray:
-        p, h0 = self.unpack(z)
-        r = self.reynolds_residual(p, h0)[self.free] * self._row_scale
-        if self.cavitation == "reynolds":
-            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
-        if self.has_h0:
-            r = np.append(r, (self.mass @ p - self.load) / self.load)
-        return r
 
     def jacobian(self, z: np.ndarray):
         """Scaled Jacobian dF/dz (dense ndarray for the half-space, sparse otherwise)."""

@@ -53,7 +53,7 @@ from skfem import CellBasis, ElementQuad1, MeshQuad
 
 from .errors import SceneError
 from .fe import QuadratureOperators, quadrature_operators
-from .line import fischer_burmeister
+from .line import ScaledResidual, fischer_burmeister
 from .newton import continuation, damped_newton
 from .result import Result
 from .reynolds import FluxModel, _coth_minus_inverse
@@ -399,7 +399,7 @@ def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: 
 # ---------------------------------------------------------------------------------------
 # nonlinear problem
 # ---------------------------------------------------------------------------------------
-class PointProblem:
+class PointProblem(ScaledResidual):
     """Scaled nonlinear system of one point-contact scene (a NonlinearProblem).
 
     Unknowns z: p/p_ref at the interior nodes, then h0/h_ref under load balance.
@@ -520,15 +520,6 @@ class PointProblem:
         if self.squeeze:
             rho = self.flux.density(pq)
             r = r + ops.value.T @ (ops.weights * rho * self.squeeze)
-        return r
-
-    def residual(self, z: np.ndarray) -> np.ndarray:
-        p, h0 = self.unpack(z)
-        r = self.reynolds_residual(p, h0)[self.free] * self._row_scale
-        if self.cavitation == "reynolds":
-            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
-        if self.has_h0:
-            r = np.append(r, (self.mass @ p - self.load) / self.load)
         return r
 
     def _blocks(self, z: np.ndarray):
