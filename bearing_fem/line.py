@@ -76,10 +76,18 @@ def fischer_burmeister(a: np.ndarray, b: np.ndarray,
 
 
 class ScaledResidual:
-    """The scaled residual shared by the line and point problems: Reynolds rows (or their
-    Fischer-Burmeister functions) at the free nodes, then the load row. Needs
-    ``unpack``, ``reynolds_residual``, ``free``, ``_row_scale``, ``cavitation``,
-    ``p_ref``, ``has_h0``, ``mass`` and ``load``."""
+    """Parts shared by the line and point problems: the scaled residual (Reynolds rows, or
+    their Fischer-Burmeister functions, at the free nodes, then the load row) and the
+    admissibility test (finite unknowns, positive film at every quadrature point). Needs
+    ``unpack``, ``fields_q``, ``reynolds_residual``, ``free``, ``_row_scale``,
+    ``cavitation``, ``p_ref``, ``has_h0``, ``mass`` and ``load``."""
+
+    def admissible(self, z: np.ndarray) -> bool:
+        if not np.all(np.isfinite(z)):
+            return False
+        p, h0 = self.unpack(z)
+        _, h, _, _ = self.fields_q(p, h0)
+        return bool(np.min(h) > 0.0)
 
     def residual(self, z: np.ndarray) -> np.ndarray:
         p, h0 = self.unpack(z)
@@ -180,13 +188,6 @@ class LineProblem(ScaledResidual):
         h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (self.disc.spacing / (2.0 * eps0 * self.p_ref))[self.free]
-
-    def admissible(self, z: np.ndarray) -> bool:
-        if not np.all(np.isfinite(z)):
-            return False
-        p, h0 = self.unpack(z)
-        _, h, _, _ = self.fields_q(p, h0)
-        return bool(np.min(h) > 0.0)
 
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^2/s] (all nodes)."""

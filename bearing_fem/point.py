@@ -369,7 +369,7 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
 
 def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: float,
                   t0: float) -> Result:
-    from .analytic import barus_from_reduced, reduced_from_barus
+    from .analytic import reduced_from_barus
 
     lub = scene.lubricant
     alpha = lub.effective_piezo
@@ -379,21 +379,15 @@ def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: 
     q, solves, active = reduced_pressure_solve(
         grid, h0, scene.contact.rx, scene.contact.ry, scene.kinematics.mean_speed,
         lub.viscosity, q_bc, scene.model.cavitation, squeeze_velocity)
-    ratio = alpha * float(np.max(q))
+    from .solver import pressure_from_reduced
+
     problem = PointProblem(grid, _flux(scene, setup), scene.contact.rx, scene.contact.ry,
                            None, scene.model.cavitation, None, h0, setup.p_ref, setup.h_ref,
                            lub.viscosity, p_bc, squeeze_velocity)
-    if ratio >= 1.0:
-        from .solver import no_solution_message
-
-        msg = no_solution_message(alpha, float(np.max(q)))
-        return _finish(scene, setup, problem, q, h0, "no_solution", msg, t0,
-                       linear_solves=solves, post=False)
-    p = barus_from_reduced(q, alpha) if alpha > 0 else q
-    msg = (f"solved by {solves} linear solve(s) (rigid, reduced pressure, {grid.x.size} x "
-           f"{grid.y.size} nodes); alpha*q_max = {ratio:.3g} < 1")
-    return _finish(scene, setup, problem, p, h0, "linear", msg, t0, linear_solves=solves,
-                   cavitated=active)
+    status, field, msg = pressure_from_reduced(q, alpha, solves,
+                                               f", {grid.x.size} x {grid.y.size} nodes")
+    return _finish(scene, setup, problem, field, h0, status, msg, t0, linear_solves=solves,
+                   post=status == "linear", cavitated=active)
 
 
 # ---------------------------------------------------------------------------------------
@@ -503,13 +497,6 @@ class PointProblem(ScaledResidual):
         h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free]
-
-    def admissible(self, z: np.ndarray) -> bool:
-        if not np.all(np.isfinite(z)):
-            return False
-        p, h0 = self.unpack(z)
-        _, h, _, _ = self.fields_q(p, h0)
-        return bool(np.min(h) > 0.0)
 
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^3/s] (all nodes)."""

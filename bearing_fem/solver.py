@@ -219,8 +219,26 @@ def no_solution_message(alpha: float, q_max: float) -> str:
             "holds the isoviscous reduced pressure q instead.")
 
 
+def pressure_from_reduced(q: np.ndarray, alpha: float, solves: int,
+                          detail: str = "") -> tuple[str, np.ndarray, str]:
+    """Status, nodal field and message of the linear (reduced-pressure) path.
+
+    ``linear`` with p = -ln(1 - alpha q)/alpha while alpha q_max < 1, else
+    ``no_solution`` with q itself as the (finite) field. ``detail`` is appended to the
+    description of the solve in the message.
+    """
+    q_max = float(np.max(q))
+    if alpha * q_max >= 1.0:
+        return "no_solution", q, no_solution_message(alpha, q_max)
+    from .analytic import barus_from_reduced
+
+    p = barus_from_reduced(q, alpha) if alpha > 0 else q
+    return "linear", p, (f"solved by {solves} linear solve(s) (rigid, reduced pressure"
+                         f"{detail}); alpha*q_max = {alpha * q_max:.3g} < 1")
+
+
 def _solve_line_linear(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
-    from .analytic import barus_from_reduced, reduced_from_barus
+    from .analytic import reduced_from_barus
 
     lub = scene.lubricant
     alpha = lub.effective_piezo
@@ -230,15 +248,9 @@ def _solve_line_linear(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
     q_bc[0], q_bc[-1] = (reduced_from_barus(np.array(bp), alpha) if alpha > 0 else bp)
     q, solves = reduced_isoviscous_solve(problem, h0, q_bc, scene.kinematics.mean_speed,
                                          lub.viscosity, scene.model.cavitation)
-    ratio = alpha * float(np.max(q))
-    if ratio >= 1.0:
-        msg = no_solution_message(alpha, float(np.max(q)))
-        return _finish(scene, setup, problem, q, h0, "no_solution", msg, t0,
-                       linear_solves=solves, post=False)
-    p = barus_from_reduced(q, alpha) if alpha > 0 else q
-    msg = (f"solved by {solves} linear solve(s) (rigid, reduced pressure); "
-           f"alpha*q_max = {ratio:.3g} < 1")
-    return _finish(scene, setup, problem, p, h0, "linear", msg, t0, linear_solves=solves)
+    status, field, msg = pressure_from_reduced(q, alpha, solves)
+    return _finish(scene, setup, problem, field, h0, status, msg, t0, linear_solves=solves,
+                   post=status == "linear")
 
 
 def _initial_guess(scene: Scene, setup: LineSetup, problem: LineProblem) -> np.ndarray:

@@ -32,7 +32,9 @@ from bearing_fem.scene import Scene
 R, ETA, U, H0 = 0.01, 0.05, 1.0, 1e-6
 
 
-def _scene(cavitation: str, piezo: float = 0.0, law: str = "barus", nodes=None, x_range=None):
+def rigid_scene(cavitation: str, piezo: float = 0.0, law: str = "barus", nodes=None,
+                x_range=None) -> Scene:
+    """Rigid cylinder with the prescribed gap H0 (the oracle scenes of this study)."""
     mesh = {}
     if nodes:
         mesh["nodes"] = nodes
@@ -49,7 +51,7 @@ def main(outdir: str | Path = "out/line_oracles") -> dict:
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     res: dict = {}
-    r = bf.solve(_scene("reynolds", law="constant"))
+    r = bf.solve(rigid_scene("reynolds", law="constant"))
     q = r.quantities
     res["martin"] = {
         "nodes": r.dofs, "linear_solves": r.linear_solves, "seconds": r.wall_time_s,
@@ -60,7 +62,7 @@ def main(outdir: str | Path = "out/line_oracles") -> dict:
     L = math.sqrt(2 * R * H0)
     hs, errs = [], []
     for n in (101, 201, 401, 801, 1601):
-        rr = bf.solve(_scene("reynolds", law="constant", nodes=n, x_range=(-5, 2)),
+        rr = bf.solve(rigid_scene("reynolds", law="constant", nodes=n, x_range=(-5, 2)),
                       boundary_pressure=(float(an.martin_pressure(np.array([-5 * L]), H0, R,
                                                                    ETA, U)[0]), 0.0))
         pex = an.martin_pressure(rr.x, H0, R, ETA, U)
@@ -76,7 +78,7 @@ def main(outdir: str | Path = "out/line_oracles") -> dict:
              lambda x, a: an.martin_pressure(x, H0, R, ETA, U, piezo=a))):
         qmax = float(qmax_fn(H0, R, ETA, U))
         for ratio in (0.0, 0.5, 0.9, 1.1):
-            rr = bf.solve(_scene(cav, piezo=ratio / qmax))
+            rr = bf.solve(rigid_scene(cav, piezo=ratio / qmax))
             row = {"cavitation": cav, "alpha_qmax": ratio, "status": rr.status}
             if rr.success:
                 pex = exact(rr.x, ratio / qmax)

@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -10,25 +12,10 @@ import bearing_fem as bf
 from bearing_fem import analytic as an
 from bearing_fem.scene import Scene
 
-R, ETA, U, H0 = 0.01, 0.05, 1.0, 1e-6
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "studies"))
+from line_oracles import ETA, H0, R, U, rigid_scene  # noqa: E402
+
 L_HYD = math.sqrt(2 * R * H0)
-
-
-def rigid_scene(cavitation: str, piezo: float = 0.0, nodes: int | None = None,
-                x_range=None, law: str = "barus") -> Scene:
-    mesh = {}
-    if nodes:
-        mesh["nodes"] = nodes
-    if x_range:
-        mesh["x_range"] = list(x_range)
-    return Scene.from_dict({
-        "contact": {"kind": "line", "rx": R},
-        "lubricant": {"viscosity": ETA, "piezo": piezo, "viscosity_law": law},
-        "kinematics": {"u1": U, "u2": U},
-        "load": {"gap": H0},
-        "model": {"elasticity": "rigid", "cavitation": cavitation},
-        "mesh": mesh,
-    })
 
 
 def martin_exact(x, piezo=0.0):
