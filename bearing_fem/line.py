@@ -62,6 +62,13 @@ class LineDiscretisation:
 #: to 5e-21 in scaled units (p/p_ref times the scaled residual).
 FB_SMOOTHING = 1e-10
 
+#: Dense (half-space) Newton steps: GMRES preconditioned by the last LU factors is
+#: accepted when it reaches this relative residual within this many iterations; else the
+#: Jacobian is factorised afresh. Near convergence the Jacobian changes little and GMRES
+#: needs a few iterations of O(n^2) each instead of an O(n^3) factorisation.
+REUSE_GMRES_RTOL = 1e-10
+REUSE_GMRES_ITERATIONS = 12
+
 
 def fischer_burmeister(a: np.ndarray, b: np.ndarray,
                        mu: float = FB_SMOOTHING) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -153,6 +160,9 @@ class LineProblem(ScaledResidual):
         else:
             self._cmat = compliance.matrix(n)
         self._row_scale = None
+        self._lu = None  # dense LU factors kept for reuse as a preconditioner
+        self.factorisations = 0
+        self.krylov_iterations = 0
 
     # -- unknown <-> fields --------------------------------------------------------------
     def unpack(self, z: np.ndarray) -> tuple[np.ndarray, float]:
@@ -195,46 +205,65 @@ class LineProblem(ScaledResidual):
         (fx,) = self.flux.flux(pq, h, (px,), (hx,), self.disc.ops.element_size)
         return self.disc.ops.weak_divergence(fx)
 
-    def jacobian(self, z: np.ndarray):
-        """Scaled Jacobian dF/dz (dense ndarray for the half-space, sparse otherwise)."""
+    def _blocks(self, z: np.ndarray):
+        """Pieces of the scaled Jacobian at z.
+
+        Returns
+        -------
+        a_p, a_h : csr_matrix
+            dR/dp and dR/dh at fixed h and p (interior rows, all nodes as columns).
+        scale : ndarray
+            Row factor times p_ref of the pressure columns.
+        da : ndarray or None
+            Fischer-Burmeister diagonal (Reynolds cavitation).
+        dr_dh0, load_row : ndarray or None
+            The h0 column and the load row (load balance).
+        """
         p, h0 = self.unpack(z)
         ops = self.disc.ops
         pq, h, px, hx = self.fields_q(p, h0)
         (fx,), dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, (px,), (hx,),
                                                                ops.element_size)
-        a_p = ops.flux_jacobian(0, dp[0], (dgp[0][0],))
-        a_h = ops.flux_jacobian(0, dh[0], (dgh[0][0],))
+        inner = slice(1, p.size - 1)  # the free (interior) nodes
+        a_p = ops.flux_jacobian(0, dp[0], (dgp[0][0],)).tocsr()[inner]
+        a_h = ops.flux_jacobian(0, dh[0], (dgh[0][0],)).tocsr()[inner]
         rows = self.free
-        if self._cmat is None:
-            drdp = a_p
-        elif sp.issparse(self._cmat):
-            drdp = (a_p + a_h @ self._cmat).tocsr()
-        else:
-            drdp = a_p.toarray() + a_h @ self._cmat
-        if sp.issparse(drdp):
-            j = drdp[rows][:, rows]
-        else:
-            j = drdp[np.ix_(rows, rows)]
         res = ops.weak_divergence(fx)[rows]
         s = self._row_scale
+        da = None
         if self.cavitation == "reynolds":
             _, da, db = fischer_burmeister(p[rows] / self.p_ref, res * s)
             row_factor = db * s
         else:
             row_factor = s
-        # dF/dz for the pressure columns (scaled by p_ref)
+        dr_dh0 = load_row = None
+        if self.has_h0:
+            dr_dh0 = (ops.grad[0].T @ (ops.weights * dh[0]))[rows] * row_factor * self.h_ref
+            load_row = self.mass[rows] * self.p_ref / self.load
+        return a_p, a_h, row_factor * self.p_ref, da, dr_dh0, load_row
+
+    def jacobian(self, z: np.ndarray):
+        """Scaled Jacobian dF/dz (dense ndarray for the half-space, sparse otherwise)."""
+        a_p, a_h, scale, da, dr_dh0, load_row = self._blocks(z)
+        inner = slice(1, a_p.shape[1] - 1)
+        if self._cmat is None:
+            j = a_p[:, inner]
+        elif sp.issparse(self._cmat):
+            j = (a_p + a_h @ self._cmat).tocsr()[:, inner]
+        else:  # dense: A_h is tridiagonal, so A_h C costs 3 n^2
+            j = np.asarray(a_h @ self._cmat[:, inner])
+            a_pi = a_p[:, inner].tocoo()
+            np.add.at(j, (a_pi.row, a_pi.col), a_pi.data)
         if sp.issparse(j):
-            j = sp.diags(row_factor * self.p_ref) @ j
-            if self.cavitation == "reynolds":
+            j = sp.diags(scale) @ j
+            if da is not None:
                 j = j + sp.diags(da)
         else:
-            j = (row_factor * self.p_ref)[:, None] * j
-            if self.cavitation == "reynolds":
+            j *= scale[:, None]
+            if da is not None:
                 j[np.diag_indices_from(j)] += da
         if not self.has_h0:
             return j
-        dr_dh0 = (ops.grad[0].T @ (ops.weights * dh[0]))[rows] * row_factor * self.h_ref
-        load_row = self.mass[rows] * self.p_ref / self.load
         if sp.issparse(j):
             return sp.bmat([[j, dr_dh0[:, None]], [load_row[None, :], None]], format="csc")
         out = np.zeros((j.shape[0] + 1, j.shape[1] + 1))
@@ -244,10 +273,22 @@ class LineProblem(ScaledResidual):
         return out
 
     def newton_step(self, z: np.ndarray, shift: float = 0.0) -> np.ndarray:
-        """Solve (J + shift D) dz = -F, D = identity on the pressure unknowns."""
-        j = self.jacobian(z)
+        """Solve (J + shift D) dz = -F, D = identity on the pressure unknowns.
+
+        Sparse J (rigid, local): sparse LU. Dense J (half-space): GMRES on the exact
+        Jacobian (matrix-vector products with the blocks), preconditioned by the dense LU
+        factors of an earlier iterate's Jacobian, when it converges within
+        ``REUSE_GMRES_ITERATIONS``; otherwise J is formed and factorised afresh and the
+        factors are kept. Both give the Newton step to rounding or to a relative residual
+        of ``REUSE_GMRES_RTOL``.
+        """
         f = self.residual(z)
         npf = self.free.size
+        if self._cmat is not None and not sp.issparse(self._cmat) and self._lu is not None:
+            dz = self._reuse_step(z, f, shift)
+            if dz is not None:
+                return dz
+        j = self.jacobian(z)
         if sp.issparse(j):
             if shift:
                 d = np.zeros(j.shape[0])
@@ -256,5 +297,36 @@ class LineProblem(ScaledResidual):
             return spla.spsolve(j.tocsc(), -f)
         if shift:
             j[np.arange(npf), np.arange(npf)] += shift
-        return sla.lu_solve(sla.lu_factor(j, overwrite_a=True, check_finite=False), -f,
-                            check_finite=False)
+        lu = sla.lu_factor(j, overwrite_a=True, check_finite=False)
+        self._lu = lu
+        self.factorisations += 1
+        return sla.lu_solve(lu, -f, check_finite=False)
+
+    def _reuse_step(self, z: np.ndarray, f: np.ndarray, shift: float) -> np.ndarray | None:
+        from .point import gmres_right
+
+        a_p, a_h, scale, da, dr_dh0, load_row = self._blocks(z)
+        n = self.disc.x.size
+        npf = self.free.size
+        diag = (da if da is not None else 0.0) + shift
+        cmat = self._cmat
+        lu = self._lu
+
+        def matvec(u: np.ndarray) -> np.ndarray:
+            full = np.zeros(n)
+            full[1:-1] = u[:npf]
+            out = scale * (a_p @ full + a_h @ (cmat @ full)) + diag * u[:npf]
+            if self.has_h0:
+                out = out + dr_dh0 * u[npf]
+                return np.append(out, load_row @ u[:npf])
+            return out
+
+        def precond(r: np.ndarray) -> np.ndarray:
+            return sla.lu_solve(lu, r, check_finite=False)
+
+        dz, its, rel = gmres_right(matvec, precond, -f, rtol=REUSE_GMRES_RTOL,
+                                   max_iterations=REUSE_GMRES_ITERATIONS)
+        self.krylov_iterations += its
+        if rel > REUSE_GMRES_RTOL or not np.all(np.isfinite(dz)):
+            return None
+        return dz

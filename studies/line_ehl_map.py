@@ -10,8 +10,9 @@ Scene
     Steel-like E' = 2.2e11 Pa, R = 10 mm, alpha = 2e-8 1/Pa (L > 0; alpha = 0 for L = 0),
     eta0 = 0.01 Pa s, pure rolling; (M, L) realised by
     :func:`bearing_fem.units.line_scene_from_moes`; Barus viscosity, incompressible,
-    Reynolds cavitation, half-space elasticity; default domain, ``nodes`` and
-    ``2 nodes - 1`` grid points for the grid-convergence check.
+    Reynolds cavitation, half-space elasticity; default domain; the solver's default
+    mesh (300 nodes per Hertz half-width, at most 4001 nodes; or ``nodes``) and one
+    with half its spacing (``2 nodes - 1``) for the grid-convergence check.
 
 Expected outcome
     Every case converges; h_central changes < 0.5 % between the two grids and lies within
@@ -59,9 +60,19 @@ def scene_for(M: float, L: float, nodes: int | None = None, u_sum_isoviscous: fl
     return Scene.from_dict(d)
 
 
-def run_case(M: float, L: float, nodes: int) -> dict:
-    """Solve one case on ``nodes`` and ``2 nodes - 1`` points; return the numbers."""
+def default_nodes(M: float, L: float) -> int:
+    """Node count of the solver's own default mesh for case (M, L)."""
+    from bearing_fem.solver import line_setup
+
+    return int(line_setup(scene_for(M, L)).disc.x.size)
+
+
+def run_case(M: float, L: float, nodes: int | None = None) -> dict:
+    """Solve one case on ``nodes`` (default: the solver's default mesh) and on
+    ``2 nodes - 1`` points (half the spacing); return the numbers."""
     out: dict = {"M": M, "L": L}
+    if nodes is None:
+        nodes = default_nodes(M, L)
     s = scene_for(M, L, nodes)
     g = units.moes_line(s.load.force, s.contact.rx, s.e_prime, s.lubricant.viscosity,
                         s.kinematics.mean_speed, s.lubricant.piezo)
@@ -87,9 +98,11 @@ def run_case(M: float, L: float, nodes: int) -> dict:
     return out
 
 
-def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: int = 1201,
+def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: int | None = None,
          max_alpha_ph: float = 100.0, l_values: tuple[float, ...] = L_VALUES) -> dict:
-    """Run the map; write ``line_ehl_map.json`` and ``line_ehl_map.md``; return the rows."""
+    """Run the map; write ``line_ehl_map.json`` and ``line_ehl_map.md``; return the rows.
+
+    ``nodes`` None: each case on the solver's default mesh and on one twice as fine."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     cases = [(M, L) for L in l_values for M in M_VALUES]
@@ -144,8 +157,8 @@ def _row_md(r: dict) -> str:
 
 
 if __name__ == "__main__":
-    # python studies/line_ehl_map.py [outdir] [nodes] [L values, comma-separated]
+    # python studies/line_ehl_map.py [outdir] [nodes | default] [L values, comma-separated]
     main(sys.argv[1] if len(sys.argv) > 1 else "out/line_ehl_map",
-         nodes=int(sys.argv[2]) if len(sys.argv) > 2 else 1201,
+         nodes=int(sys.argv[2]) if len(sys.argv) > 2 and sys.argv[2] != "default" else None,
          l_values=tuple(float(v) for v in sys.argv[3].split(",")) if len(sys.argv) > 3
          else L_VALUES)

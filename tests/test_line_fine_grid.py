@@ -1,0 +1,99 @@
+"""Half-space line contacts on fine grids: the upwinded wedge flux, grid sequencing and
+the reuse of LU factors as a GMRES preconditioner (bearing_fem.reynolds, line, solver)."""
+from __future__ import annotations
+
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+import bearing_fem as bf
+from bearing_fem import line, solver
+from bearing_fem.reynolds import FluxModel, UpwindFluxModel
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "studies"))
+from line_ehl_map import scene_for  # noqa: E402
+
+
+def _flux_pair(upwind_compliance):
+    lub = scene_for(100, 10).lubricant
+    base = FluxModel.from_lubricant(lub, 2.0)
+    up = replace(UpwindFluxModel.from_lubricant(lub, 2.0),
+                 upwind_compliance=upwind_compliance)
+    return base, up
+
+
+def test_upwind_term_is_half_dx_times_wedge_at_high_peclet():
+    rng = np.random.default_rng(1)
+    p = rng.uniform(0.0, 1e9, 50)
+    h = rng.uniform(1e-7, 3e-7, 50)
+    gp, gh = (rng.normal(0, 1e11, 50),), (rng.normal(0, 1e-3, 50),)
+    dx = np.full(50, 1e-6)
+    base, up = _flux_pair(upwind_compliance=1.0)  # absurdly compliant: Pe >> 1, xi = 1
+    (f0,), (f1,) = base.flux(p, h, gp, gh, dx), up.flux(p, h, gp, gh, dx)
+    rho = base.density(p)
+    np.testing.assert_allclose(f1 - f0, 0.5 * dx * 2.0 * rho * gh[0], rtol=1e-9,
+                               err_msg="incompressible: added flux (dx/2) u_m rho h'")
+
+
+def test_upwind_term_fades_where_poiseuille_dominates():
+    p = np.zeros(4)
+    h = np.full(4, 1e-5)  # thick isoviscous film: Pe ~ 1e-12
+    gp, gh = (np.ones(4) * 1e9,), (np.ones(4) * 1e-2,)
+    dx = np.full(4, 1e-6)
+    base, up = _flux_pair(upwind_compliance=1e-17)
+    (f0,), (f1,) = base.flux(p, h, gp, gh, dx), up.flux(p, h, gp, gh, dx)
+    np.testing.assert_allclose(f1, f0, rtol=1e-12, atol=0.0,
+                               err_msg="xi(Pe) ~ Pe/3 -> 0: no added diffusion")
+
+
+def test_fine_grid_converges_with_sequencing_and_reuse(monkeypatch):
+    """M = 100, L = 10 at 2001 nodes: SUPG stagnated here at the outlet spike. The
+    upwinded solve converges, on grids 501 -> 1001 -> 2001, and agrees with 1001 nodes."""
+    counts = {"factorisations": 0, "krylov": 0}
+    orig = line.LineProblem.newton_step
+
+    def counting(self, z, shift=0.0):
+        f0, k0 = self.factorisations, self.krylov_iterations
+        out = orig(self, z, shift)
+        counts["factorisations"] += self.factorisations - f0
+        counts["krylov"] += self.krylov_iterations - k0
+        return out
+
+    monkeypatch.setattr(line.LineProblem, "newton_step", counting)
+    fine = bf.solve(scene_for(100, 10, 2001))
+    assert fine.status == "converged", fine.message
+    assert fine.newton_iterations <= 40, "iteration cap (regression of the fine-grid fix)"
+    assert [s[1] for s in fine.continuation] == [
+        "converged (501 nodes)", "converged (1001 nodes)", "converged (2001 nodes)"]
+    assert counts["krylov"] > 0, "reused factors served some Newton steps"
+    assert counts["factorisations"] < fine.newton_iterations, \
+        "fewer dense factorisations than Newton steps"
+    coarse = bf.solve(scene_for(100, 10, 1001))
+    assert coarse.status == "converged", coarse.message
+    np.testing.assert_allclose(fine.quantities["h_central"], coarse.quantities["h_central"],
+                               rtol=2e-3, err_msg="h_central grid change 1001 -> 2001 "
+                               "(measured 6e-4 by studies/line_stabilisation.py)")
+    np.testing.assert_allclose(fine.quantities["load"], fine.scene.load.force, rtol=1e-6,
+                               err_msg="load row solved")
+
+
+def test_reused_step_equals_direct_step():
+    """The GMRES step preconditioned by stale factors equals the direct LU step."""
+    scene = scene_for(100, 10, 401)
+    setup = solver.line_setup(scene)
+    prob = solver._make_problem(scene, setup, (0.0, 0.0))
+    z0 = solver._initial_guess(scene, setup, prob)
+    prob.prepare(z0)
+    prob.newton_step(z0)  # factorises at z0
+    z1 = z0 + 0.05 * prob.newton_step(z0)
+    prob.prepare(z1)
+    factorisations, krylov = prob.factorisations, prob.krylov_iterations
+    reused = prob.newton_step(z1)
+    assert prob.factorisations == factorisations and prob.krylov_iterations > krylov, \
+        "the step came from GMRES on the kept factors"
+    prob._lu = None
+    direct = prob.newton_step(z1)
+    np.testing.assert_allclose(reused, direct, rtol=0, atol=1e-7 * np.max(np.abs(direct)),
+                               err_msg="same Newton step to the GMRES tolerance")
