@@ -37,6 +37,10 @@ log = logging.getLogger(__name__)
 _MARTIN_HSTAR_APPROX = 1.2255
 #: Default grid density of elastic line contacts: nodes per Hertz half-width.
 NODES_PER_HALF_WIDTH = 300
+#: Above this Moes load parameter M the default density grows as sqrt(M / this): the
+#: outlet constriction and spike narrow with load (measured at 300 nodes per b against
+#: twice as fine: h_central changes 0.08 % at M = 200 but 0.82 % at M = 1000, L = 2).
+DENSE_MESH_MOES_M = 250.0
 #: Cap on default elastic line grids (dense compliance: memory and LU time grow as N^2, N^3).
 MAX_DEFAULT_ELASTIC_NODES = 4001
 #: Default rigid-scene grid: nodes per sqrt(2 R h0).
@@ -116,7 +120,9 @@ def line_setup(scene: Scene) -> LineSetup:
         # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
         inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
         x_range = scene.mesh.x_range or (-inlet, 1.5)
-        density = NODES_PER_HALF_WIDTH
+        moes_m = units.moes_line(w, R, scene.e_prime, lub.viscosity, u_m,
+                                 lub.effective_piezo)["M"]
+        density = NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
     else:
         if scene.load.gap is not None:
             h0 = scene.load.gap

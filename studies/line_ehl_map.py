@@ -11,7 +11,8 @@ Scene
     eta0 = 0.01 Pa s, pure rolling; (M, L) realised by
     :func:`bearing_fem.units.line_scene_from_moes`; Barus viscosity, incompressible,
     Reynolds cavitation, half-space elasticity; default domain; the solver's default
-    mesh (300 nodes per Hertz half-width, at most 4001 nodes; or ``nodes``) and one
+    mesh (300 nodes per Hertz half-width, times sqrt(M/250) above M = 250, at most 4001
+    nodes; or ``nodes``) and one
     with half its spacing (``2 nodes - 1``) for the grid-convergence check.
 
 Expected outcome
@@ -99,13 +100,14 @@ def run_case(M: float, L: float, nodes: int | None = None) -> dict:
 
 
 def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: int | None = None,
-         max_alpha_ph: float = 100.0, l_values: tuple[float, ...] = L_VALUES) -> dict:
+         max_alpha_ph: float = 100.0, l_values: tuple[float, ...] = L_VALUES,
+         m_values: tuple[float, ...] = M_VALUES) -> dict:
     """Run the map; write ``line_ehl_map.json`` and ``line_ehl_map.md``; return the rows.
 
     ``nodes`` None: each case on the solver's default mesh and on one twice as fine."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
-    cases = [(M, L) for L in l_values for M in M_VALUES]
+    cases = [(M, L) for L in l_values for M in m_values]
     if quick:
         cases = [(20, 5), (100, 10)]
     rows = []
@@ -157,8 +159,11 @@ def _row_md(r: dict) -> str:
 
 
 if __name__ == "__main__":
-    # python studies/line_ehl_map.py [outdir] [nodes | default] [L values, comma-separated]
+    # python studies/line_ehl_map.py [outdir] [nodes | default] [L values] [M values]
+    # (value lists comma-separated)
     main(sys.argv[1] if len(sys.argv) > 1 else "out/line_ehl_map",
          nodes=int(sys.argv[2]) if len(sys.argv) > 2 and sys.argv[2] != "default" else None,
          l_values=tuple(float(v) for v in sys.argv[3].split(",")) if len(sys.argv) > 3
-         else L_VALUES)
+         else L_VALUES,
+         m_values=tuple(float(v) for v in sys.argv[4].split(",")) if len(sys.argv) > 4
+         else M_VALUES)

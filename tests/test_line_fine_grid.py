@@ -97,3 +97,21 @@ def test_reused_step_equals_direct_step():
     direct = prob.newton_step(z1)
     np.testing.assert_allclose(reused, direct, rtol=0, atol=1e-7 * np.max(np.abs(direct)),
                                err_msg="same Newton step to the GMRES tolerance")
+
+
+def test_default_mesh_density_grows_with_moes_load():
+    """300 nodes per Hertz half-width up to M = 250, then 300 sqrt(M/250) (outlet zone
+    narrows with load); the domain [-4.5 b, 1.5 b] is the same for these cases."""
+    per_b = {}
+    for M in (100, 250, 1000):
+        setup = solver.line_setup(scene_for(M, 2))
+        x = setup.disc.x / setup.x_unit
+        np.testing.assert_allclose((x[0], x[-1]), (-4.5, 1.5), rtol=1e-12,
+                                   err_msg="fully flooded default domain")
+        per_b[M] = 1.0 / (x[1] - x[0])
+    np.testing.assert_allclose(per_b[100], solver.NODES_PER_HALF_WIDTH, rtol=2e-3,
+                               err_msg="base density (odd node count rounding)")
+    np.testing.assert_allclose(per_b[250], per_b[100], rtol=0, atol=1e-9,
+                               err_msg="no refinement up to M = 250")
+    np.testing.assert_allclose(per_b[1000], 2.0 * solver.NODES_PER_HALF_WIDTH, rtol=2e-3,
+                               err_msg="sqrt(1000/250) = 2")
