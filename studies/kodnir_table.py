@@ -52,11 +52,15 @@ def _markdown(rows: list[dict], n: int) -> str:
             f"%); z_b = 20.\n\n" + head + "\n".join(lines) + "\n")
 
 
-def main(outdir: str | Path, n: int = 2001, quick: bool = False) -> dict:
-    """Solve the table; return {"rows": [...], ...} and write JSON + markdown to outdir."""
+def main(outdir: str | Path, n: int = 2001, quick: bool = False,
+         c_values: list[float] | None = None) -> dict:
+    """Solve the table; return {"rows": [...], ...} and write JSON + markdown to outdir.
+
+    ``c_values``: a subset of C (default all of ``C_VALUES``)."""
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    cases = [(1.0, 4.5)] if quick else [(c, b) for c in C_VALUES for b in B_ALPHA_VALUES]
+    cs = C_VALUES if c_values is None else c_values
+    cases = [(1.0, 4.5)] if quick else [(c, b) for c in cs for b in B_ALPHA_VALUES]
     rows = []
     for c, b in cases:
         t0 = time.perf_counter()
@@ -82,4 +86,6 @@ def main(outdir: str | Path, n: int = 2001, quick: bool = False) -> dict:
 if __name__ == "__main__":
     outdir = sys.argv[1] if len(sys.argv) > 1 else "out/kodnir_table"
     n = int(sys.argv[2]) if len(sys.argv) > 2 else 2001
-    main(outdir, n=n)
+    # optional third argument: C values, comma-separated
+    main(outdir, n=n, c_values=[float(v) for v in sys.argv[3].split(",")]
+         if len(sys.argv) > 3 else None)
