@@ -352,16 +352,17 @@ def _solve_start(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, squeeze
     z0 = _rigid_guess(scene, setup, gap, p_bc, squeeze, problem)
     out = damped_newton(problem, z0, tol=tol, max_iterations=max_iterations)
     if out.converged or not scene.solver.continuation:
-        return out.z, out.status, out.iterations, problem, []
+        return out.z, out.status, out.iterations, problem, [], list(out.history)
     log.info("steady elastic start %s after %d iterations; continuing in compliance",
              out.status, out.iterations)
     cont = continuation(lambda s: _make_step_problem(scene, setup, gap, p_bc, squeeze=squeeze,
                                                      compliance_scale=s),
                         z0, tol=tol, max_iterations=max_iterations)
     its = out.iterations + cont.iterations
+    history = list(out.history) + list(cont.last.history)
     if cont.parameter >= 1.0 and cont.status == "converged":
-        return cont.z, "converged", its, problem, cont.steps
-    return out.z, out.status, its, problem, cont.steps
+        return cont.z, "converged", its, problem, cont.steps, history
+    return out.z, out.status, its, problem, cont.steps, history
 
 
 def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
@@ -400,9 +401,9 @@ def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
     setup = elastic_gap_setup(scene, pressure_scale=_pressure_scale(scene, abs(sq)))
     p_bc = _boundary_values(setup.grid, boundary_pressure)
     maxit = max_iterations or scene.solver.max_iterations
-    z, status, its, problem, steps = _solve_start(scene, setup, scene.load.gap, p_bc, sq,
-                                                  maxit)
-    return _result(scene, setup, problem, z, status, its, t0, steps, "steady elastic")
+    z, status, its, problem, steps, hist = _solve_start(scene, setup, scene.load.gap, p_bc,
+                                                        sq, maxit)
+    return _result(scene, setup, problem, z, status, its, t0, steps, hist, "steady elastic")
 
 
 def _pressure_scale(scene, rate: float) -> float:
@@ -414,7 +415,7 @@ def _pressure_scale(scene, rate: float) -> float:
 
 
 def _result(scene, setup: PointSetup, problem: TransientPointProblem, z: np.ndarray,
-            status: str, iterations: int, t0: float, steps, what: str) -> Result:
+            status: str, iterations: int, t0: float, steps, history, what: str) -> Result:
     p, h0 = problem.unpack(z)
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
@@ -432,7 +433,7 @@ def _result(scene, setup: PointSetup, problem: TransientPointProblem, z: np.ndar
         p = np.maximum(p, 0.0)
     sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(h0)))
     res = _finish(sc, setup, problem, p, h0, status, msg, t0, iterations=iterations,
-                  continuation_steps=steps)
+                  history=history, continuation_steps=steps)
     res.quantities["gmres_iterations"] = float(problem.linear_iterations)
     return res
 
@@ -546,21 +547,22 @@ def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = 
         what = f"step {n} (t = {t:.6g} s)"
         if n == 0 or scheme == "quasi-steady":
             if n == 0:
-                z, st, its, problem, steps = _solve_start(scene, setup, float(g), p_bc,
-                                                          float(rate), maxit)
+                z, st, its, problem, steps, hist = _solve_start(scene, setup, float(g),
+                                                                p_bc, float(rate), maxit)
             else:
                 problem = _make_step_problem(scene, setup, float(g), p_bc,
                                              squeeze=float(rate))
                 out = damped_newton(problem, _guess(problem, zs), tol=tol,
                                     max_iterations=maxit)
-                z, st, its, steps = out.z, out.status, out.iterations, []
+                z, st, its, steps, hist = out.z, out.status, out.iterations, [], out.history
         else:
             coeffs = BDF_COEFFICIENTS[scheme]
             problem = _make_step_problem(scene, setup, float(g), p_bc, time_step=dt,
                                          coefficients=coeffs,
                                          history=masses[:len(coeffs) - 1])
-            z, st, its, steps = _step_newton(problem, zs, tol, maxit)
-        res = _result(step_scene(g), setup, problem, z, st, its, clock, steps, what)
+            z, st, its, hist = _step_newton(problem, zs, tol, maxit)
+            steps = []
+        res = _result(step_scene(g), setup, problem, z, st, its, clock, steps, hist, what)
         if not res.success:
             failure = res
             status = st
@@ -607,10 +609,11 @@ def _step_newton(problem: TransientPointProblem, zs: list[np.ndarray], tol: floa
     """Newton from the extrapolated start; one retry from the previous step."""
     z0 = _guess(problem, zs)
     out = damped_newton(problem, z0, tol=tol, max_iterations=maxit)
-    its = out.iterations
+    its, history = out.iterations, list(out.history)
     if not out.converged and z0 is not zs[0]:
         log.info("time step: Newton %s from the extrapolated start; retrying from the "
                  "previous step", out.status)
         out = damped_newton(problem, zs[0], tol=tol, max_iterations=maxit)
         its += out.iterations
-    return out.z, out.status, its, []
+        history += list(out.history)
+    return out.z, out.status, its, history
