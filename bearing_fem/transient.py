@@ -20,8 +20,8 @@ the pressure has memory, the steps are coupled in time.
 
 Weak form and time discretisation (conservative, the time derivative acts on the mass
 rho h itself). With the steady residual of :class:`bearing_fem.point.PointProblem`,
-R_steady(phi) = int F . grad phi, F = eps grad p - u_m rho h e_x (+ upwinding), step n
-solves for p^n
+R_steady(phi) = int F . grad phi, F = rho h^3/(12 eta) grad p - u_m rho h e_x (+ the
+upwinding of the elastic path), step n solves for p^n
 
     R_steady(p^n; h0^n)(phi) + int (1/dt) sum_k c_k (rho h)^(n-k) phi = 0,
 
