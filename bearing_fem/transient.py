@@ -1,0 +1,619 @@
+"""Elastic transient squeeze of a point contact with a prescribed rigid-body approach h0(t).
+
+Symbols and units: x rolling direction, y across it [m]; t time [s]; p pressure [Pa];
+h film [m]; h0(t) prescribed rigid offset [m]; g = x^2/(2 rx) + y^2/(2 ry) gap of the
+undeformed bodies [m]; v = C p elastic displacement [m] (Boussinesq half-space, FFT);
+rho density relative to ambient [-]; eta viscosity [Pa s]; u_m mean speed [m/s];
+eps vibration amplitude [-]; omega angular frequency [rad/s]; dt time step [s].
+
+Problem (PHYSICS.md 2, seed 001): the gap oscillates as h0(t) = h0 (1 + eps cos(omega t))
+(``load.gap`` = h0, the mean) and the film is
+
+    h(x, y, t) = h0(t) + g(x, y) + v[p(t)](x, y),
+
+so the time derivative d(rho h)/dt of the Reynolds equation
+
+    div(rho h^3/(12 eta) grad p) = u_m d(rho h)/dx + d(rho h)/dt
+
+contains dh0/dt, the elastic deformation rate dv/dt = C dp/dt and the density change:
+the pressure has memory, the steps are coupled in time.
+
+Weak form and time discretisation (conservative, the time derivative acts on the mass
+rho h itself). With the steady residual of :class:`bearing_fem.point.PointProblem`,
+R_steady(phi) = int F . grad phi, F = rho h^3/(12 eta) grad p - u_m rho h e_x (+ the
+upwinding of the elastic path), step n solves for p^n
+
+    R_steady(p^n; h0^n)(phi) + int (1/dt) sum_k c_k (rho h)^(n-k) phi = 0,
+
+with the backward differentiation formulas (c_0, c_1, c_2) = (1, -1) (backward Euler,
+first order) or (3/2, -2, 1/2) (BDF2, second order). Both are L-stable: the rigid part
+of the problem is algebraic (no dp/dt when v = 0), and an L-stable scheme damps the
+start-up error instead of carrying it; the trapezoidal rule (Crank-Nicolson) is not: on
+the algebraic part it gives S(p^n) = -S(p^(n-1)) + ..., so an error of the start flips
+sign every step and never decays. It is not offered.
+
+Newton on step n (:func:`bearing_fem.newton.damped_newton`, the GMRES machinery of
+:meth:`PointProblem.newton_step`): the time term adds to the sparse blocks
+
+    A_p += (c_0/dt) M[rho'(p) h],     A_h += (c_0/dt) M[rho],
+
+M[w] the weighted mass matrix int w phi_j phi_i; A_h multiplies the nodal displacement,
+so the dense part (c_0/dt) M[rho] C goes through the same matrix-free FFT path as the
+wedge term A_h C, and its near-field part into the preconditioner.
+
+Start: step 0 at t0 is the steady elastic solution at h0(t0) with the squeeze source
+rho dh0/dt(t0) (the exact prescribed rate; zero at t0 = 0 for the cosine) and no dv/dt
+(the bodies are assumed at rest relative to the deformed shape). The history before t0
+that BDF2 needs is taken in the same spirit: (rho h)(t0 - dt) = rho^0 (h0(t0 - dt) + g +
+v^0), i.e. the gap follows its prescribed law and the deformation stands still, so the
+rigid limit is second order from the first step (a backward-Euler first step would put
+an O(dt) error of the approach rate into step 1). The memory of that start decays at
+the elastic relaxation rate of the film; studies run two periods.
+
+Grid of a gap-controlled elastic scene: uniform (FFT compliance), lengths in
+L_x = sqrt(2 rx h0), L_y = sqrt(2 ry h0) (the hydrodynamic lengths of the mean gap, as for
+rigid scenes with a gap; there is no Hertz radius without a load); default
+``ELASTIC_GAP_NODES`` per direction on ``ELASTIC_GAP_RANGE_FS`` (full-Sommerfeld) or
+``ELASTIC_GAP_RANGE_REYNOLDS`` (Reynolds cavitation). All steps share the grid of the
+mean gap.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from dataclasses import replace as dc_replace
+from typing import Callable
+
+import numpy as np
+import scipy.sparse as sp
+
+from .errors import SceneError
+from .line import fischer_burmeister
+from .newton import continuation, damped_newton
+from .point import (PointGrid, PointProblem, PointSetup, SqueezeSeries, _boundary_values,
+                    _finish, _flux, reduced_pressure_solve)
+from .result import Result
+
+log = logging.getLogger(__name__)
+
+#: Default nodes per direction of the uniform grid of a gap-controlled elastic scene.
+ELASTIC_GAP_NODES = 97
+#: Default domains in units of sqrt(2 rx h0) (x) and sqrt(2 ry h0) (y). The rigid Kapitsa
+#: wedge pressure at 10 lengths is 0.3% of its peak (p ~ x/(1 + x^2)^2); the elastic
+#: deformation flattens and widens the pressure zone only mildly at the gaps of interest.
+ELASTIC_GAP_RANGE_FS = ((-10.0, 10.0), (-10.0, 10.0))
+ELASTIC_GAP_RANGE_REYNOLDS = ((-10.0, 5.0), (-10.0, 10.0))
+#: Backward differentiation formulas: coefficients c_k of (rho h)^(n-k), k = 0, 1, ...
+BDF_COEFFICIENTS = {"euler": (1.0, -1.0), "bdf2": (1.5, -2.0, 0.5)}
+SCHEMES = ("bdf2", "euler", "quasi-steady")
+
+
+# ---------------------------------------------------------------------------------------
+# setup of a gap-controlled elastic scene
+# ---------------------------------------------------------------------------------------
+def elastic_gap_setup(scene, nodes: tuple[int, int] | None = None,
+                      pressure_scale: float | None = None) -> PointSetup:
+    """Uniform grid, half-space compliance and scales of an elastic point scene with a gap.
+
+    Parameters
+    ----------
+    scene : Scene
+        ``contact.kind = "point"``, ``model.elasticity = "half-space"``, ``load.gap`` = h0
+        [m]. ``mesh.x_range``/``y_range`` are read in units of sqrt(2 rx h0) and
+        sqrt(2 ry h0); ``mesh.nodes`` as (nx, ny).
+    nodes : (int, int), optional
+        Overrides ``scene.mesh.nodes``.
+    pressure_scale : float, optional
+        p_ref [Pa] of the Newton unknowns; default eta0 u_m L_x/h0^2 (the rigid wedge
+        pressure scale, L_x = sqrt(2 rx h0)).
+
+    Returns
+    -------
+    PointSetup
+        ``compliance`` is a :class:`~bearing_fem.elasticity.HalfSpacePoint`;
+        ``stab_compliance`` = 4 L_x/(pi E') (upwinding scale of the wedge term, the
+        analogue of 4 a_x/(pi E') of load-controlled scenes); ``hertz`` is None.
+    """
+    from .elasticity import HalfSpacePoint
+
+    h0 = scene.load.gap
+    rx, ry = scene.contact.rx, scene.contact.ry
+    lx, ly = math.sqrt(2.0 * rx * h0), math.sqrt(2.0 * ry * h0)
+    rng = ELASTIC_GAP_RANGE_FS if scene.model.cavitation == "none" \
+        else ELASTIC_GAP_RANGE_REYNOLDS
+    xr = scene.mesh.x_range or rng[0]
+    yr = scene.mesh.y_range or rng[1]
+    if nodes is None:
+        n = scene.mesh.nodes
+        nodes = (ELASTIC_GAP_NODES, ELASTIC_GAP_NODES) if n is None else (int(n[0]), int(n[1]))
+    grid = PointGrid.tensor(np.linspace(xr[0] * lx, xr[1] * lx, nodes[0]),
+                            np.linspace(yr[0] * ly, yr[1] * ly, nodes[1]))
+    comp = HalfSpacePoint(grid.x, grid.y, scene.e_prime)
+    if pressure_scale is None:
+        pressure_scale = scene.lubricant.viscosity * scene.kinematics.mean_speed * lx / h0**2
+    c_stab = 4.0 * lx / (math.pi * scene.e_prime)
+    return PointSetup(grid, comp, float(pressure_scale), h0, lx, ly, h0, c_stab, None)
+
+
+# ---------------------------------------------------------------------------------------
+# the time-discrete problem
+# ---------------------------------------------------------------------------------------
+class TransientPointProblem(PointProblem):
+    """One time step of the transient Reynolds-elasticity system (a NonlinearProblem).
+
+    The residual is that of :class:`~bearing_fem.point.PointProblem` plus the BDF mass
+    term int (1/dt) sum_k c_k (rho h)^(n-k) phi (module docstring); the film of the
+    earlier levels enters only through ``history``. With ``time_step=None`` the problem
+    is the steady one (optionally with the squeeze source of the base class).
+
+    Parameters
+    ----------
+    *args, **kwargs
+        As :class:`~bearing_fem.point.PointProblem` (``gap`` = h0^n [m]).
+    time_step : float or None
+        dt [s]; None: steady (no time term).
+    coefficients : sequence of float
+        BDF coefficients (c_0, c_1, ...) [-], ``len(history) + 1`` of them.
+    history : sequence of ndarray
+        (rho h)^(n-1), (rho h)^(n-2), ... at the quadrature points [m] (relative density
+        times film).
+    """
+
+    def __init__(self, *args, time_step: float | None = None,
+                 coefficients: tuple[float, ...] = (), history=(), **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.time_step = time_step
+        self.coefficients = tuple(coefficients)
+        if time_step is not None:
+            if not (math.isfinite(time_step) and time_step > 0.0):
+                raise ValueError(f"time_step must be > 0 s, got {time_step!r}")
+            if len(self.coefficients) != len(history) + 1:
+                raise ValueError(f"{len(self.coefficients)} BDF coefficients need "
+                                 f"{len(self.coefficients) - 1} history levels, got "
+                                 f"{len(history)}")
+            ops = self.grid.ops
+            old = np.zeros(ops.weights.size)
+            for c, mass in zip(self.coefficients[1:], history):
+                old = old + c * np.asarray(mass, dtype=float)
+            #: sum_{k>=1} c_k (rho h)^(n-k) / dt at the quadrature points [m/s]
+            self._old_rate = old / time_step
+
+    # -- time term -----------------------------------------------------------------------
+    def mass_q(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """rho h at the quadrature points [m] (relative density times film)."""
+        pq, h, _, _ = self.fields_q(p, h0)
+        return self.flux.density(pq) * h
+
+    def mass_rate_q(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Discrete d(rho h)/dt at the quadrature points [m/s] (0 when steady)."""
+        if self.time_step is None:
+            return np.zeros(self.grid.ops.weights.size)
+        return self.coefficients[0] * self.mass_q(p, h0) / self.time_step + self._old_rate
+
+    def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Nodal weak residual R_i [m^3/s] (all nodes), steady part + BDF mass term."""
+        r = super().reynolds_residual(p, h0)
+        if self.time_step is None:
+            return r
+        ops = self.grid.ops
+        return r + ops.value.T @ (ops.weights * self.mass_rate_q(p, h0))
+
+    def _blocks(self, z: np.ndarray):
+        a_p, a_h, drdh0, row_factor, da = super()._blocks(z)
+        if self.time_step is None:
+            return a_p, a_h, drdh0, row_factor, da
+        p, h0 = self.unpack(z)
+        ops = self.grid.ops
+        pq, h, _, _ = self.fields_q(p, h0)
+        rho = np.real(self.flux.density(pq))
+        w = ops.weights * self.coefficients[0] / self.time_step
+        # d/dv: rho (c_0/dt) int phi_j phi_i  (multiplies C dp in the matrix-free product)
+        a_h = (a_h + ops.value.T @ sp.diags(w * rho) @ ops.value).tocsr()
+        drdh0 = drdh0 + ops.value.T @ (w * rho)
+        step = 1e-20 * max(self.p_ref, 1.0)
+        drho = np.imag(self.flux.density(pq + 1j * step)) / step
+        if np.any(drho != 0.0):  # compressible: rho'(p) h (c_0/dt) int phi_j phi_i
+            a_p = (a_p + ops.value.T @ sp.diags(w * drho * h) @ ops.value).tocsr()
+        if self.cavitation == "reynolds":
+            # the base class linearised Fischer-Burmeister about the steady residual;
+            # redo it about the full (steady + time) residual
+            rows = self.free
+            res = self.reynolds_residual(p, h0)
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res[rows] * self._row_scale)
+            row_factor = db * self._row_scale
+        return a_p, a_h, drdh0, row_factor, da
+
+
+# ---------------------------------------------------------------------------------------
+# series container
+# ---------------------------------------------------------------------------------------
+@dataclass
+class ElasticSqueezeSeries(SqueezeSeries):
+    """Elastic transient squeeze series (a :class:`~bearing_fem.point.SqueezeSeries`).
+
+    Step 0 is the steady start at t0; steps 1.. are the time steps. The arrays cover the
+    solved steps only: a failed step stops the series, its Result is ``failure`` and
+    ``status``/``message`` say which step failed and why (never NaN in the arrays).
+
+    Attributes
+    ----------
+    times, gap, squeeze_velocity, p_max, results
+        As :class:`SqueezeSeries`: t [s], h0(t) [m], the prescribed dh0/dt [m/s] (exact
+        derivative of h0(t)), maximum pressure [Pa], one Result per step (all on one grid).
+    h_min, h_central : ndarray
+        Minimum film and film at x = y = 0 [m].
+    load : ndarray
+        Film force int p dA [N].
+    newton_iterations : ndarray of int
+        Newton iterations per step.
+    wall_time_s : ndarray
+        Wall time per step [s].
+    status : str
+        ``"converged"`` if every planned step converged, else the failed step's status.
+    message : str
+    scheme : str
+        ``"bdf2"``, ``"euler"`` or ``"quasi-steady"``.
+    time_step : float
+        dt [s].
+    eps, omega : float
+        Amplitude [-] and angular frequency [rad/s] of h0(t).
+    n_planned : int
+        Steps planned, including the start (``len(times)`` when complete).
+    failure : Result or None
+        The failed step (last admissible iterate), if any.
+    """
+
+    h_min: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    h_central: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    load: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    newton_iterations: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    wall_time_s: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    status: str = "converged"
+    message: str = ""
+    scheme: str = "bdf2"
+    time_step: float = 0.0
+    eps: float = 0.0
+    omega: float = 0.0
+    n_planned: int = 0
+    failure: Result | None = None
+
+    @property
+    def success(self) -> bool:
+        return self.status == "converged"
+
+    def export(self, directory, name: str = "elastic_squeeze") -> dict[str, str]:
+        """VTU files + PVD index and an XDMF/HDF5 time series of the solved steps
+        (``pressure_Pa``, ``film_m``); see :meth:`SqueezeSeries.export`."""
+        if not self.results:
+            raise ValueError(f"nothing to export: the series has no solved step "
+                             f"(status {self.status!r}: {self.message})")
+        return super().export(directory, name=name)
+
+
+# ---------------------------------------------------------------------------------------
+# driver
+# ---------------------------------------------------------------------------------------
+def _check_scene(scene, who: str) -> None:
+    from .scene import Scene
+
+    if not isinstance(scene, Scene):
+        raise SceneError(f"{who} needs a Scene, got {type(scene).__name__}")
+    if scene.contact.kind != "point":
+        raise SceneError(f"{who} needs contact.kind = 'point', got {scene.contact.kind!r}")
+    if scene.model.elasticity != "half-space":
+        raise SceneError(f"{who} needs model.elasticity = 'half-space' (an elastic scene), "
+                         f"got {scene.model.elasticity!r}; rigid scenes have no memory: use "
+                         f"bearing_fem.point.solve_squeeze_series")
+    if scene.load.gap is None:
+        raise SceneError(f"{who} needs a prescribed gap load.gap (m), the mean rigid offset "
+                         f"h0 of h0(t) = h0 (1 + eps cos(omega t)); got load.force = "
+                         f"{scene.load.force!r} N (a prescribed load F(t) needs the rolling "
+                         f"element's equation of motion, not implemented)")
+    if scene.model.thermal != "none":
+        raise SceneError(f"{who} is isothermal: model.thermal must be 'none', got "
+                         f"{scene.model.thermal!r}")
+
+
+def _make_step_problem(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, *,
+                       squeeze: float = 0.0, time_step: float | None = None,
+                       coefficients=(), history=(), compliance_scale: float = 1.0
+                       ) -> TransientPointProblem:
+    comp = setup.compliance
+    if compliance_scale != 1.0:
+        from .elasticity import HalfSpacePoint
+
+        comp = None if compliance_scale == 0.0 else HalfSpacePoint(
+            setup.grid.x, setup.grid.y, scene.e_prime / compliance_scale)
+    return TransientPointProblem(
+        setup.grid, _flux(scene, setup), scene.contact.rx, scene.contact.ry, comp,
+        scene.model.cavitation, None, gap, setup.p_ref, setup.h_ref,
+        scene.lubricant.viscosity, p_bc, squeeze, time_step=time_step,
+        coefficients=coefficients, history=history)
+
+
+def _rigid_guess(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, squeeze: float,
+                 problem: TransientPointProblem) -> np.ndarray:
+    """Isoviscous rigid (Kapitsa-type) solution at the gap: the start of the t0 solve."""
+    q, _, _ = reduced_pressure_solve(setup.grid, gap, scene.contact.rx, scene.contact.ry,
+                                     scene.kinematics.mean_speed, scene.lubricant.viscosity,
+                                     p_bc, scene.model.cavitation, squeeze)
+    if scene.model.cavitation == "reynolds":
+        q = np.maximum(q, 0.0)
+    return problem.pack(q, gap)
+
+
+def _solve_start(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, squeeze: float,
+                 max_iterations: int):
+    """Steady elastic solution at the gap (direct Newton, then continuation in 1/E')."""
+    tol = scene.solver.tolerance
+    problem = _make_step_problem(scene, setup, gap, p_bc, squeeze=squeeze)
+    z0 = _rigid_guess(scene, setup, gap, p_bc, squeeze, problem)
+    out = damped_newton(problem, z0, tol=tol, max_iterations=max_iterations)
+    if out.converged or not scene.solver.continuation:
+        return out.z, out.status, out.iterations, problem, [], list(out.history)
+    log.info("steady elastic start %s after %d iterations; continuing in compliance",
+             out.status, out.iterations)
+    cont = continuation(lambda s: _make_step_problem(scene, setup, gap, p_bc, squeeze=squeeze,
+                                                     compliance_scale=s),
+                        z0, tol=tol, max_iterations=max_iterations)
+    its = out.iterations + cont.iterations
+    history = list(out.history) + list(cont.last.history)
+    if cont.parameter >= 1.0 and cont.status == "converged":
+        return cont.z, "converged", its, problem, cont.steps, history
+    return out.z, out.status, its, problem, cont.steps, history
+
+
+def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
+                      boundary_pressure: Callable | np.ndarray | None = None,
+                      max_iterations: int | None = None) -> Result:
+    """Steady elastic point contact with a prescribed rigid offset h0 = ``load.gap``.
+
+    The film is h = h0 + g + v[p] (half-space compliance) and the steady Reynolds equation
+    carries the squeeze source rho dh0/dt (no dv/dt): the start of
+    :func:`solve_elastic_squeeze_series` and its quasi-steady comparison.
+    :func:`bearing_fem.point.solve_point` handles elastic scenes under a load; this is the
+    gap-controlled counterpart (no load balance, uniform grid in sqrt(2 rx h0) units).
+
+    Parameters
+    ----------
+    scene : Scene
+        Point contact, ``model.elasticity = "half-space"``, ``load.gap`` = h0 [m].
+    squeeze_velocity : float
+        dh0/dt [m/s] (< 0: approach, positive squeeze pressure).
+    boundary_pressure : callable or ndarray, optional
+        Dirichlet pressure [Pa]: ``(x [m], y [m]) -> p`` or nodal values (ny, nx). Default 0.
+    max_iterations : int, optional
+        Newton iterations per attempt (default ``scene.solver.max_iterations``).
+
+    Returns
+    -------
+    Result
+        As :func:`~bearing_fem.point.solve_point`; never raises for non-convergence.
+    """
+    who = "solve_elastic_gap"
+    _check_scene(scene, who)
+    sq = float(squeeze_velocity)
+    if not math.isfinite(sq):
+        raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
+    t0 = time.perf_counter()
+    setup = elastic_gap_setup(scene, pressure_scale=_pressure_scale(scene, abs(sq)))
+    p_bc = _boundary_values(setup.grid, boundary_pressure)
+    maxit = max_iterations or scene.solver.max_iterations
+    z, status, its, problem, steps, hist = _solve_start(scene, setup, scene.load.gap, p_bc,
+                                                        sq, maxit)
+    return _result(scene, setup, problem, z, status, its, t0, steps, hist, "steady elastic")
+
+
+def _pressure_scale(scene, rate: float) -> float:
+    """eta0 (u_m L_x + |dh0/dt| L_x^2/h0)/h0^2 [Pa]: wedge plus squeeze pressure scales."""
+    h0 = scene.load.gap
+    lx = math.sqrt(2.0 * scene.contact.rx * h0)
+    return scene.lubricant.viscosity * (scene.kinematics.mean_speed * lx
+                                        + rate * lx**2 / h0) / h0**2
+
+
+def _result(scene, setup: PointSetup, problem: TransientPointProblem, z: np.ndarray,
+            status: str, iterations: int, t0: float, steps, history, what: str) -> Result:
+    p, h0 = problem.unpack(z)
+    problem.prepare(z)
+    resid = float(np.max(np.abs(problem.residual(z))))
+    tol = scene.solver.tolerance
+    n_cont = len([s for s in steps if s[0] < 1.0])
+    if status == "converged":
+        note = f", continuation in compliance ({n_cont} steps)" if n_cont else ""
+        msg = (f"{what}: converged in {iterations} Newton iterations{note}; residual "
+               f"{resid:.2e} <= tol {tol:.1e}")
+    else:
+        msg = (f"{what}: {status}, no converged solution after {iterations} Newton "
+               f"iterations; residual {resid:.2e} > tol {tol:.1e}. Fields hold the last "
+               f"admissible iterate.")
+    if scene.model.cavitation == "reynolds":
+        p = np.maximum(p, 0.0)
+    sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(h0)))
+    res = _finish(sc, setup, problem, p, h0, status, msg, t0, iterations=iterations,
+                  history=history, continuation_steps=steps)
+    res.quantities["gmres_iterations"] = float(problem.linear_iterations)
+    return res
+
+
+def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
+                                 n_steps: int = 32, periods: int = 1, *,
+                                 scheme: str = "bdf2", t0: float = 0.0,
+                                 boundary_pressure: Callable | None = None,
+                                 max_iterations: int | None = None
+                                 ) -> ElasticSqueezeSeries:
+    """Elastic transient squeeze: h0(t) = h0 (1 + eps cos(omega t)) with d(rho h)/dt.
+
+    Each time step solves the coupled Reynolds-elasticity problem with the BDF time term
+    (module docstring) by damped Newton-GMRES, starting from the previous step
+    (linearly extrapolated). Step 0 is the steady elastic solution at t0 with the
+    squeeze source dh0/dt(t0) (zero at t0 = 0) and no dv/dt.
+
+    Parameters
+    ----------
+    scene : Scene
+        Point contact with ``model.elasticity = "half-space"``, a prescribed gap
+        ``load.gap`` = h0 [m] (the mean of h0(t)), ``model.thermal = "none"``. Grid:
+        ``mesh.nodes`` (default 97 x 97) and ``mesh.x_range``/``y_range`` in units of
+        sqrt(2 rx h0), sqrt(2 ry h0) (defaults in :data:`ELASTIC_GAP_RANGE_FS`).
+    eps : float
+        Relative amplitude [-], 0 <= eps < 1.
+    omega : float, optional
+        Angular frequency [rad/s], > 0; default u_m / sqrt(2 rx h0) (as
+        :func:`~bearing_fem.point.solve_squeeze_series`).
+    n_steps : int
+        Time steps per period (>= 2); dt = 2 pi/(omega n_steps) [s].
+    periods : int
+        Number of periods (>= 1).
+    scheme : {"bdf2", "euler", "quasi-steady"}
+        BDF2 (default, second order), backward Euler (first order), or the quasi-steady
+        elastic comparison: each instant solved as a steady elastic problem with the
+        squeeze source rho dh0/dt (exact rate) and no dv/dt, d(rho)/dt (no memory).
+    t0 : float
+        Start time [s].
+    boundary_pressure : callable, optional
+        ``(x [m], y [m], t [s]) -> p [Pa]`` Dirichlet data on the domain boundary
+        (default 0).
+    max_iterations : int, optional
+        Newton iterations per step (default ``scene.solver.max_iterations``).
+
+    Returns
+    -------
+    ElasticSqueezeSeries
+        ``n_steps * periods + 1`` instants when every step converges. Never raises for a
+        failed step: the series stops there with an explicit ``status``.
+
+    Raises
+    ------
+    SceneError
+        Not a point contact, not elastic, a load instead of a gap, a thermal scene.
+    ValueError
+        eps outside [0, 1), omega <= 0 (rad/s), n_steps < 2, periods < 1, unknown scheme,
+        non-finite t0 (s), non-callable ``boundary_pressure``.
+    """
+    who = "solve_elastic_squeeze_series"
+    _check_scene(scene, who)
+    eps = float(eps)
+    if not (math.isfinite(eps) and 0.0 <= eps < 1.0):
+        raise ValueError(f"eps must lie in [0, 1) (dimensionless amplitude of h0(t)), got "
+                         f"{eps!r}")
+    h0m = scene.load.gap
+    if omega is None:  # one hydrodynamic length per radian of the vibration
+        omega = scene.kinematics.mean_speed / math.sqrt(2.0 * scene.contact.rx * h0m)
+    omega = float(omega)
+    if not (math.isfinite(omega) and omega > 0.0):
+        raise ValueError(f"omega must be a finite angular frequency > 0 rad/s, got {omega!r}")
+    if isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)) or n_steps < 2:
+        raise ValueError(f"n_steps must be an integer >= 2 (time steps per period), got "
+                         f"{n_steps!r}")
+    if isinstance(periods, bool) or not isinstance(periods, (int, np.integer)) or periods < 1:
+        raise ValueError(f"periods must be an integer >= 1, got {periods!r}")
+    if scheme not in SCHEMES:
+        raise ValueError(f"scheme must be one of {SCHEMES}, got {scheme!r}")
+    t0 = float(t0)
+    if not math.isfinite(t0):
+        raise ValueError(f"t0 must be finite (s), got {t0!r}")
+    if boundary_pressure is not None and not callable(boundary_pressure):
+        raise ValueError("boundary_pressure must be a callable (x [m], y [m], t [s]) -> p "
+                         f"[Pa], got {type(boundary_pressure).__name__}")
+
+    dt = 2.0 * math.pi / (omega * n_steps)
+    n_total = int(n_steps) * int(periods)
+    times = t0 + dt * np.arange(n_total + 1)
+    gaps = h0m * (1.0 + eps * np.cos(omega * times))
+    rates = -h0m * eps * omega * np.sin(omega * times)
+    setup = elastic_gap_setup(scene, pressure_scale=_pressure_scale(scene, h0m * eps * omega))
+    maxit = max_iterations or scene.solver.max_iterations
+    tol = scene.solver.tolerance
+
+    def p_bc_at(t: float) -> np.ndarray:
+        if boundary_pressure is None:
+            return _boundary_values(setup.grid, None)
+        return _boundary_values(setup.grid, lambda x, y: boundary_pressure(x, y, t))
+
+    def step_scene(g: float):
+        return dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
+
+    results: list[Result] = []
+    masses: list[np.ndarray] = []   # (rho h) at the quadrature points, latest first
+    zs: list[np.ndarray] = []
+    failure = None
+    status, message = "converged", ""
+    for n, (t, g, rate) in enumerate(zip(times, gaps, rates)):
+        clock = time.perf_counter()
+        p_bc = p_bc_at(t)
+        what = f"step {n} (t = {t:.6g} s)"
+        if n == 0 or scheme == "quasi-steady":
+            if n == 0:
+                z, st, its, problem, steps, hist = _solve_start(scene, setup, float(g),
+                                                                p_bc, float(rate), maxit)
+            else:
+                problem = _make_step_problem(scene, setup, float(g), p_bc,
+                                             squeeze=float(rate))
+                out = damped_newton(problem, _guess(problem, zs), tol=tol,
+                                    max_iterations=maxit)
+                z, st, its, steps, hist = out.z, out.status, out.iterations, [], out.history
+        else:
+            coeffs = BDF_COEFFICIENTS[scheme]
+            problem = _make_step_problem(scene, setup, float(g), p_bc, time_step=dt,
+                                         coefficients=coeffs,
+                                         history=masses[:len(coeffs) - 1])
+            z, st, its, hist = _step_newton(problem, zs, tol, maxit)
+            steps = []
+        res = _result(step_scene(g), setup, problem, z, st, its, clock, steps, hist, what)
+        if not res.success:
+            failure = res
+            status = st
+            message = (f"{what} {st}: series stopped after {n} of {n_total + 1} instants "
+                       f"({res.message})")
+            break
+        p, _ = problem.unpack(z)
+        masses.insert(0, problem.mass_q(p, float(g)))
+        if n == 0:  # history before t0: h0 follows its law, the deformation stands still
+            ghost = h0m * (1.0 + eps * math.cos(omega * (t - dt)))
+            masses.append(problem.mass_q(p, ghost))
+        del masses[2:]
+        zs.insert(0, z)
+        del zs[2:]
+        results.append(res)
+    if failure is None:
+        message = (f"{n_total} {scheme} steps of dt = {dt:.4g} s converged "
+                   f"({int(sum(r.newton_iterations for r in results))} Newton iterations)")
+    k = len(results)
+    q = [r.quantities for r in results]
+    return ElasticSqueezeSeries(
+        times=times[:k], gap=gaps[:k], squeeze_velocity=rates[:k],
+        p_max=np.array([d["p_max"] for d in q]), results=results,
+        h_min=np.array([d["h_min"] for d in q]),
+        h_central=np.array([d["h_central"] for d in q]),
+        load=np.array([d["load"] for d in q]),
+        newton_iterations=np.array([r.newton_iterations for r in results], dtype=int),
+        wall_time_s=np.array([r.wall_time_s for r in results]),
+        status=status, message=message, scheme=scheme, time_step=dt, eps=eps,
+        omega=omega, n_planned=n_total + 1, failure=failure)
+
+
+def _guess(problem: TransientPointProblem, zs: list[np.ndarray]) -> np.ndarray:
+    """Linear extrapolation of the last two steps if admissible, else the last step."""
+    if len(zs) >= 2:
+        z = 2.0 * zs[0] - zs[1]
+        if problem.admissible(z):
+            return z
+    return zs[0]
+
+
+def _step_newton(problem: TransientPointProblem, zs: list[np.ndarray], tol: float,
+                 maxit: int):
+    """Newton from the extrapolated start; one retry from the previous step."""
+    z0 = _guess(problem, zs)
+    out = damped_newton(problem, z0, tol=tol, max_iterations=maxit)
+    its, history = out.iterations, list(out.history)
+    if not out.converged and z0 is not zs[0]:
+        log.info("time step: Newton %s from the extrapolated start; retrying from the "
+                 "previous step", out.status)
+        out = damped_newton(problem, zs[0], tol=tol, max_iterations=maxit)
+        its += out.iterations
+        history += list(out.history)
+    return out.z, out.status, its, history
