@@ -118,6 +118,7 @@ def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: in
         row = run_case(M, L, nodes)
         rows.append(row)
         print(_row_text(row), flush=True)
+        _write(outdir, rows, {"complete": False})  # keep what is done if interrupted
     core = [r for r in rows if r["alpha_ph"] <= 40.0]
     summary = {
         "cases": len(core),
@@ -132,13 +133,18 @@ def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: in
         w = summary["worst_moes_deviation"]
         summary["worst_moes_deviation"] = {"M": w["M"], "L": w["L"],
                                            "deviation": w.get("moes_deviation")}
+    summary["complete"] = True
+    _write(outdir, rows, summary)
+    return {"rows": rows, "summary": summary}
+
+
+def _write(outdir: Path, rows: list[dict], summary: dict) -> None:
     (outdir / "line_ehl_map.json").write_text(json.dumps({"rows": rows, "summary": summary},
                                                          indent=1, default=str))
     lines = ["| M | L | alpha p_h | status | Newton its (coarse/fine) | s (fine) | "
              "H_c grid change % | H_c vs Moes % | h_min/h_c |", "|" + "---|" * 9]
     lines += [_row_md(r) for r in rows]
     (outdir / "line_ehl_map.md").write_text("\n".join(lines) + "\n")
-    return {"rows": rows, "summary": summary}
 
 
 def _row_text(r: dict) -> str:
