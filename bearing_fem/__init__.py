@@ -26,7 +26,8 @@ _LAZY = {
 }
 _SUBMODULES = {"kodnir", "thermal", "analytic", "formulas", "units", "rheology",
                "elasticity", "reynolds", "newton", "post", "io", "plot", "scene",
-               "mesh", "solver", "result", "errors", "bearing"}
+               "solver", "result", "errors", "bearing", "point", "transient",
+               "coupling", "traction", "line"}
 
 
 def __getattr__(name: str) -> Any:
