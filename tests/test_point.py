@@ -193,6 +193,19 @@ def test_elastic_point_converges_near_nvm(M, L, ry_over_rx):
     assert res.pressure.shape == (res.y.size, res.x.size)
 
 
+def test_high_piezoviscosity_converges_directly_on_two_grids():
+    # alpha p_h = 33.8: without the initial Newton shift the direct attempts stalled on
+    # 65^2 and again on 129^2 (alpha continuation from scratch: 157 iterations in all)
+    scene = _moes_scene(100, 20, 129)
+    res = solve_point(scene)
+    assert res.status == "converged", res.message
+    assert all(s == 1.0 for s, _, _ in res.continuation), (
+        f"no alpha continuation expected: {res.continuation}")
+    assert res.newton_iterations < 50, f"cost cap: {res.newton_iterations} Newton iterations"
+    coarse, fine = res.continuation
+    assert "65x65" in coarse[1] and "129x129" in fine[1]
+
+
 def test_elastic_squeeze_thickens_film_at_fixed_load():
     # An approaching surface (dh0/dt < 0) builds squeeze pressure that carries part of
     # the load, so at a fixed load the wedge needs less pressure: the film is thicker.
