@@ -158,9 +158,14 @@ class ElementAssembler:
         nel, nq, nl = self.shape
         local = np.zeros((nel, nl, nl))
         for d, a, b in terms:
-            t = self._value * np.reshape(a, (nel, nq, 1))
-            for gk, bk in zip(self._grad, b):
-                t += gk * np.reshape(bk, (nel, nq, 1))
+            t = None
+            for phi, c in zip((self._value,) + self._grad, (a,) + tuple(b)):
+                if not np.any(c):  # structurally zero coefficient (common): skip
+                    continue
+                term = phi * np.reshape(c, (nel, nq, 1))
+                t = term if t is None else t + term
+            if t is None:
+                continue
             t *= self._weights[:, :, None]
             local += np.matmul(self._grad[d].transpose(0, 2, 1), t)
         data = np.bincount(self._pos.ravel(), weights=local.ravel(), minlength=self.nnz)

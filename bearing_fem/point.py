@@ -87,9 +87,16 @@ TRANSFER_SHIFT = 1e-2
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
 #: after interpolation is 1.3e-2 / 4.5e-3 whether the coarser level stopped at 1e-5 or 1e-8.
 COARSE_TOLERANCE = 1e-5
-#: GMRES relative tolerance and restart length of the elastic Newton steps.
+#: GMRES relative tolerance (floor) and iteration cap of the elastic Newton steps.
 GMRES_RTOL = 1e-9
 GMRES_MAX_ITERATIONS = 150
+#: Inexact Newton (Dembo, Eisenstat & Steihaug 1982): GMRES stops at the relative
+#: residual eta_k = min(GMRES_FORCING_MAX, max(GMRES_RTOL, |F_k|_inf)). eta_k = O(|F_k|)
+#: keeps the local quadratic convergence, and the Newton stopping test (|F| <= tol) is
+#: untouched. GMRES gains about one decade per 5 iterations here, so the early steps
+#: save ~25 of ~40 iterations. Measured M = 100, L = 10, 257^2: Newton iterations 25 ->
+#: 25, GMRES 701 -> 302, h_c/h_min equal to 11 digits, p_max to 10. 0 disables.
+GMRES_FORCING_MAX = 1e-3
 #: SuperLU threshold partial pivoting of the preconditioner LU: the diagonal is kept as
 #: pivot unless it is below this fraction of the largest entry of its column (the fill-
 #: reducing nested-dissection order survives; 1.0 would be classical partial pivoting).
@@ -718,7 +725,9 @@ class PointProblem(ScaledResidual):
         """Solve (J + shift D) dz = -F; D = identity on the pressure unknowns.
 
         Rigid: sparse direct. Elastic: GMRES on the matrix-free Jacobian (sparse blocks
-        plus A_h (C x) by FFT), preconditioned by a sparse LU of the near-field Jacobian.
+        plus A_h (C x) by FFT), preconditioned by a sparse LU of the near-field Jacobian,
+        to the relative residual eta = min(GMRES_FORCING_MAX, max(GMRES_RTOL, |F|_inf))
+        (inexact Newton).
         """
         f = self.residual(z)
         npf = self.free.size
@@ -757,7 +766,10 @@ class PointProblem(ScaledResidual):
                 return np.append(out, load_row @ u[:npf])
             return out
 
-        dz, its, rel = gmres_right(matvec, precond, -f, rtol=GMRES_RTOL,
+        rtol = GMRES_RTOL
+        if GMRES_FORCING_MAX > GMRES_RTOL:  # inexact Newton, see GMRES_FORCING_MAX
+            rtol = min(GMRES_FORCING_MAX, max(GMRES_RTOL, float(np.max(np.abs(f)))))
+        dz, its, rel = gmres_right(matvec, precond, -f, rtol=rtol,
                                    max_iterations=GMRES_MAX_ITERATIONS)
         self.linear_iterations += its
         log.debug("gmres: %d iterations, relative residual %.2e", its, rel)
@@ -785,7 +797,7 @@ class UpwindFluxModel(FluxModel):
         """rho [-], eps [m^3/(Pa s)], d rho/dp [1/Pa] and the upwind factor
         (dx/2) u_m xi [m^2/s] at the quadrature points (real or complex-step input)."""
         rho = self.density(p)
-        eps = rho * h**3 / (12.0 * self.viscosity(p))
+        eps = rho * (h * h * h) / (12.0 * self.viscosity(p))  # h*h*h: pow() is slow
         dp = 1e3  # Pa; smooth density laws
         drho = (self.density(p + dp) - self.density(p - dp)) / (2 * dp)
         xi = 1.0
