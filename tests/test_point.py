@@ -206,6 +206,17 @@ def test_high_piezoviscosity_converges_directly_on_two_grids():
     assert "65x65" in coarse[1] and "129x129" in fine[1]
 
 
+def test_fine_level_never_restarts_alpha_continuation_from_scratch():
+    # alpha p_h = 19.8, (M, L) = (20, 20): the direct attempt on 129^2 from the 65^2
+    # solution may cycle at the outlet spike; the fallback continues in alpha from that
+    # interpolated solution (s = 0.8 -> 1), not from the Hertzian start at s = 0
+    res = solve_point(_moes_scene(20, 20, 129))
+    assert res.status == "converged", res.message
+    fine = [(s, i) for s, st, i in res.continuation if "129x129" in st]
+    assert all(s > 0.0 for s, _ in fine), f"continuation from scratch: {res.continuation}"
+    assert res.newton_iterations < 60, f"cost cap: {res.newton_iterations} Newton iterations"
+
+
 def test_elastic_squeeze_thickens_film_at_fixed_load():
     # An approaching surface (dh0/dt < 0) builds squeeze pressure that carries part of
     # the load, so at a fixed load the wedge needs less pressure: the film is thicker.
