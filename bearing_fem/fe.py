@@ -17,6 +17,7 @@ costs a few sparse products, with no Python loop over elements.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -72,6 +73,124 @@ class QuadratureOperators:
         for k, b in enumerate(coeff_grad):
             out = out + gt @ sp.diags(self.weights * b) @ self.grad[k]
         return out.tocsr()
+
+    @cached_property
+    def assembler(self) -> "ElementAssembler":
+        """Element-wise assembler of the same forms on a fixed sparsity pattern (cached)."""
+        return ElementAssembler(self)
+
+
+class ElementAssembler:
+    """Assemble sums of :meth:`QuadratureOperators.flux_jacobian` terms element by element.
+
+    ``flux_jacobian`` forms each term as a product of sparse matrices (and a new sparsity
+    pattern) per call. Here the local matrices
+
+        K_e[i, j] = sum_q w_q d_d phi_i(x_q) (a_q phi_j(x_q) + sum_k b_kq d_k phi_j(x_q))
+
+    are computed for all elements at once (batched small products) and scattered into
+    one fixed CSR pattern (all node pairs sharing an element) by a precomputed position
+    map, so the matrices of successive Newton iterations share ``indptr``/``indices``.
+    Same values as ``flux_jacobian`` up to the order of summation (rounding).
+
+    The element-local basis values are views of the ``value``/``grad`` data: it needs
+    every row of those maps (one quadrature point) to store the same number of entries,
+    the element's nodes in the same (sorted) order, which ``quadrature_operators`` gives.
+
+    Parameters
+    ----------
+    ops : QuadratureOperators
+    """
+
+    def __init__(self, ops: QuadratureOperators) -> None:
+        nrow, ndof = ops.value.shape
+        nq = ops.n_quad
+        nel = nrow // nq
+        nl = ops.value.nnz // nrow
+        ok = nl * nrow == ops.value.nnz and np.array_equal(
+            ops.value.indptr, np.arange(nrow + 1) * nl)
+        for g in ops.grad:
+            ok = ok and np.array_equal(g.indptr, ops.value.indptr) and np.array_equal(
+                g.indices, ops.value.indices)
+        if not ok:
+            raise ValueError("ElementAssembler needs the same node set per quadrature row in "
+                             "value and grad (as built by quadrature_operators)")
+        cols = ops.value.indices.reshape(nel, nq, nl)
+        if not np.all(cols == cols[:, :1, :]):
+            raise ValueError("ElementAssembler: quadrature points of one element must share "
+                             "the element's nodes")
+        self.n_dofs = ndof
+        self.shape = (nel, nq, nl)
+        self._value = ops.value.data.reshape(nel, nq, nl)
+        self._grad = tuple(g.data.reshape(nel, nq, nl) for g in ops.grad)
+        self._weights = ops.weights.reshape(nel, nq)
+        dofs = cols[:, 0, :]                                         # (nel, nl)
+        rows = np.repeat(dofs[:, :, None], nl, axis=2).ravel()      # K_e[i, j] -> (dof_i, dof_j)
+        colj = np.repeat(dofs[:, None, :], nl, axis=1).ravel()
+        key = rows.astype(np.int64) * ndof + colj
+        uniq, pos = np.unique(key, return_inverse=True)
+        idx_dtype = np.int32 if uniq.size < 2**31 - 1 and ndof < 2**31 - 1 else np.int64
+        self.indices = (uniq % ndof).astype(idx_dtype)
+        self.indptr = np.searchsorted(uniq, np.arange(ndof + 1, dtype=np.int64) * ndof
+                                      ).astype(idx_dtype)
+        self.nnz = uniq.size
+        self._pos = pos.astype(idx_dtype).reshape(nel, nl, nl)
+        self._keys = uniq
+
+    def matrix(self, data: np.ndarray) -> sp.csr_matrix:
+        """csr matrix on the assembler's pattern with the given ``data`` (not copied)."""
+        return sp.csr_matrix((data, self.indices, self.indptr), shape=(self.n_dofs,) * 2)
+
+    def flux_jacobian_sum(self, terms) -> sp.csr_matrix:
+        """Sum over ``terms`` of ``flux_jacobian(d, a, (b_0, b_1, ...))``, on the fixed pattern.
+
+        Parameters
+        ----------
+        terms : iterable of (d, a, b)
+            d : int, derivative direction of the test function; a : ndarray
+            (n_elements * n_quad,); b : tuple of such arrays (one per dimension), the
+            coefficients of the trial function value and gradient (units of the form).
+
+        Returns
+        -------
+        scipy.sparse.csr_matrix, shape (n_dofs, n_dofs)
+        """
+        nel, nq, nl = self.shape
+        local = np.zeros((nel, nl, nl))
+        for d, a, b in terms:
+            t = None
+            for phi, c in zip((self._value,) + self._grad, (a,) + tuple(b)):
+                if not np.any(c):  # structurally zero coefficient (common): skip
+                    continue
+                term = phi * np.reshape(c, (nel, nq, 1))
+                t = term if t is None else t + term
+            if t is None:
+                continue
+            t *= self._weights[:, :, None]
+            local += np.matmul(self._grad[d].transpose(0, 2, 1), t)
+        data = np.bincount(self._pos.ravel(), weights=local.ravel(), minlength=self.nnz)
+        return self.matrix(data)
+
+    def pattern_data(self, mat: sp.spmatrix) -> np.ndarray | None:
+        """Values of ``mat`` at the pattern positions (zeros elsewhere), or None if ``mat``
+        has an entry outside the pattern."""
+        mat = sp.csr_matrix(mat)
+        if mat.shape != (self.n_dofs, self.n_dofs):
+            return None
+        if mat.indptr.size == self.indptr.size and mat.nnz == self.nnz and np.array_equal(
+                mat.indptr, self.indptr) and np.array_equal(mat.indices, self.indices):
+            return np.asarray(mat.data, dtype=float)
+        mat = mat.copy()
+        mat.sum_duplicates()
+        rows = np.repeat(np.arange(self.n_dofs, dtype=np.int64), np.diff(mat.indptr))
+        key = rows * self.n_dofs + mat.indices
+        pos = np.searchsorted(self._keys, key)
+        pos = np.minimum(pos, self.nnz - 1)
+        if not np.all(self._keys[pos] == key):
+            return None
+        out = np.zeros(self.nnz)
+        out[pos] = mat.data
+        return out
 
 
 def quadrature_operators(basis: CellBasis) -> QuadratureOperators:

@@ -1,24 +1,31 @@
-"""Elastic circular point contacts over the Moes (M, L) map: convergence and central film.
+"""Elastic circular point contacts over the Moes (M, L) map: convergence, grid
+convergence and the central/minimum film against Nijenbanning-Venner-Moes and
+Hamrock-Dowson.
 
 Question
 --------
 Does the elastic point-contact solver (:func:`bearing_fem.point.solve_point`: Newton on
 (p, h0), Fischer-Burmeister cavitation, FFT half-space, GMRES) converge without tuning
-for M in {20, 50, 100, 200, 500} and L in {5, 10, 20} with alpha p_h <= 40, and how
-close is its central film to the Nijenbanning-Venner-Moes (1994) formula?
+for M in {20, 50, 100, 200, 500} and L in {5, 10, 20} with alpha p_h <= 40? Is h_c
+grid-converged (change from 129^2 to 257^2 below 1%), within 10% of the
+Nijenbanning-Venner-Moes (1994) formula, and are h_c and h_min within 20% of
+Hamrock-Dowson (1977)?
 
 Scene
 -----
 Circular contact rx = ry = 10 mm, E' = 2.2e11 Pa, alpha = 2e-8 1/Pa, eta0 = 0.01 Pa s,
 pure rolling; (M, L) realised by :func:`bearing_fem.units.point_scene_parameters_from_moes`
-(sum-speed Moes groups). Default grid and domain of the solver (x in [-4.5, 1.5] a or
-longer at low M, y symmetric), ``nodes`` per direction.
+(sum-speed Moes groups). Default domain of the solver (x in [-4.5, 1.5] a or longer at
+low M, y symmetric), each grid solved from scratch (the solver's own grid sequencing
+65 -> ... -> n). Formulas from :mod:`bearing_fem.formulas`.
 
 Expected outcome
 ----------------
-All cases converge; h_central within 10% of NVM on 129^2 (the wedge term is upwinded
-to first order where the Poiseuille flow is negligible, so coarse grids overestimate
-the film at high M).
+All cases converge; h_c changes by less than 1% from 129^2 to 257^2, lies within 10% of
+NVM, and h_c and h_min lie within 20% of Hamrock-Dowson (fits with a stated scatter of
+5-10%; their h_min fit is the weaker one).
+
+Run ``python studies/point_ehl_map.py [outdir] [--quick]``.
 """
 from __future__ import annotations
 
@@ -28,7 +35,7 @@ import sys
 import time
 from pathlib import Path
 
-from bearing_fem.formulas import point_central_film_nvm
+from bearing_fem.formulas import point_central_film_nvm, point_films_hamrock_dowson
 from bearing_fem.point import solve_point
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Scene, SolverSpec)
@@ -37,6 +44,13 @@ from bearing_fem.units import moes_point, point_scene_parameters_from_moes
 M_VALUES = (20, 50, 100, 200, 500)
 L_VALUES = (5, 10, 20)
 MAX_ALPHA_PH = 40.0
+#: Default grids (nodes per direction); the grid change is measured between the last two.
+GRIDS = (129, 257)
+#: Acceptance targets: relative h_c change between the two finest grids, |h_c/NVM - 1|,
+#: |h/HD - 1| for h_c and h_min.
+GRID_CHANGE_TARGET = 0.01
+NVM_TARGET = 0.10
+HD_TARGET = 0.20
 
 
 def moes_scene(M: float, L: float, nodes: int, *, ry_over_rx: float = 1.0,
@@ -53,68 +67,163 @@ def moes_scene(M: float, L: float, nodes: int, *, ry_over_rx: float = 1.0,
                  solver=SolverSpec(max_iterations=max_iterations))
 
 
-def run_case(M: float, L: float, nodes: int) -> dict:
+def _formulas(scene: Scene) -> dict:
+    c, lub, u = scene.contact, scene.lubricant, scene.kinematics.mean_speed
+    args = (scene.load.force, c.rx, c.ry, scene.e_prime, lub.viscosity, u, lub.piezo)
+    h_min_hd, h_c_hd = point_films_hamrock_dowson(*args)
+    return {"moes": moes_point(*args), "h_central_nvm_m": point_central_film_nvm(*args),
+            "h_central_hd_m": h_c_hd, "h_min_hd_m": h_min_hd}
+
+
+def run_case(M: float, L: float, nodes: int) -> tuple[dict, object]:
+    """Solve one (M, L) case on nodes x nodes; return (row, Result)."""
     scene = moes_scene(M, L, nodes)
-    c, lub = scene.contact, scene.lubricant
-    g = moes_point(scene.load.force, c.rx, c.ry, scene.e_prime, lub.viscosity,
-                   scene.kinematics.mean_speed, lub.piezo)
+    f = _formulas(scene)
+    g = f["moes"]
     t0 = time.perf_counter()
     res = solve_point(scene)
     wall = time.perf_counter() - t0
-    hc_nvm = point_central_film_nvm(scene.load.force, c.rx, c.ry, scene.e_prime,
-                                    lub.viscosity, scene.kinematics.mean_speed, lub.piezo)
     q = res.quantities
+    hc, hmin = q.get("h_central", math.nan), q.get("h_min", math.nan)
     return {"M": M, "L": L, "alpha_ph": g["alpha_ph"], "nodes": nodes, "status": res.status,
             "newton_iterations": res.newton_iterations, "wall_time_s": wall,
-            "h_central_m": q.get("h_central"), "h_central_nvm_m": hc_nvm,
-            "h_central_ratio": q.get("h_central", math.nan) / hc_nvm,
-            "h_min_m": q.get("h_min"), "p_max_over_ph": q.get("p_max", math.nan) / g["p_h"],
+            "continuation": [list(s) for s in res.continuation],
+            "gmres_iterations": q.get("gmres_iterations"),
+            "h_central_m": hc, "h_min_m": hmin, "p_max_Pa": q.get("p_max"),
+            "h_central_nvm_m": f["h_central_nvm_m"], "h_central_hd_m": f["h_central_hd_m"],
+            "h_min_hd_m": f["h_min_hd_m"],
+            "h_central_ratio": hc / f["h_central_nvm_m"],
+            "h_central_vs_hd": hc / f["h_central_hd_m"] - 1.0,
+            "h_min_vs_hd": hmin / f["h_min_hd_m"] - 1.0,
+            "p_max_over_ph": q.get("p_max", math.nan) / g["p_h"],
             "load_ratio": q.get("load", math.nan) / scene.load.force,
             "message": res.message}, res
 
 
-def main(outdir, quick: bool = False, *, nodes: int | None = None, plot: bool = True) -> dict:
-    """Run the map; write ``point_ehl_map.json``/``.txt`` (and a PNG); return the numbers.
+def _assess(case: dict) -> dict:
+    """Grid change and target checks of one case (finest grid against the formulas)."""
+    runs = case["runs"]
+    fine = runs[-1]
+    case["status"] = "converged" if all(r["status"] == "converged" for r in runs) \
+        else next(r["status"] for r in runs if r["status"] != "converged")
+    case["message"] = fine["message"]
+    case["h_central_ratio"] = fine["h_central_ratio"]
+    case["h_central_vs_nvm"] = fine["h_central_ratio"] - 1.0
+    case["h_central_vs_hd"] = fine["h_central_vs_hd"]
+    case["h_min_vs_hd"] = fine["h_min_vs_hd"]
+    case["grid_change"] = (fine["h_central_m"] / runs[-2]["h_central_m"] - 1.0
+                           if len(runs) > 1 else math.nan)
+    missed = []
+    if case["status"] != "converged":
+        missed.append("not converged")
+    if len(runs) > 1 and not abs(case["grid_change"]) < GRID_CHANGE_TARGET:
+        missed.append("grid change")
+    if not abs(case["h_central_vs_nvm"]) < NVM_TARGET:
+        missed.append("NVM")
+    if not abs(case["h_central_vs_hd"]) < HD_TARGET:
+        missed.append("HD h_c")
+    if not abs(case["h_min_vs_hd"]) < HD_TARGET:
+        missed.append("HD h_min")
+    case["missed"] = missed
+    case["met"] = not missed
+    return case
 
-    quick: M in {20, 100}, L = 10 on 65^2.
+
+def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
+    """Plain-text and markdown tables of the map."""
+    head = (f"{'M':>5} {'L':>4} {'aph':>5} " + " ".join(
+        f"{f'{n}^2: its':>10} {'s':>6} {'h_c/NVM':>7}" for n in grids)
+        + f" {'grid %':>7} {'NVM %':>6} {'HD hc %':>7} {'HD hmin %':>9}  status")
+    lines = [head]
+    md = ["| M | L | alpha p_h | " + " | ".join(
+        f"{n}^2 h_c [nm] | {n}^2 its | {n}^2 s" for n in grids)
+        + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | status |",
+        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|"]
+    for c in cases:
+        if c["status"] == "skipped":
+            lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f}  skipped "
+                         f"(alpha p_h > {MAX_ALPHA_PH:g})")
+            md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | "
+                      + " | ".join("-" for _ in range(3 * len(grids)))
+                      + f" | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
+            continue
+        verdict = "MET" if c["met"] else "NOT MET: " + ", ".join(c["missed"])
+        cells = " ".join(f"{r['newton_iterations']:>10d} {r['wall_time_s']:6.1f} "
+                         f"{r['h_central_ratio']:7.3f}" for r in c["runs"])
+        lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f} {cells} "
+                     f"{100 * c['grid_change']:+7.2f} {100 * c['h_central_vs_nvm']:+6.1f} "
+                     f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f}  "
+                     f"{verdict}")
+        mcells = " | ".join(f"{1e9 * r['h_central_m']:.2f} | {r['newton_iterations']} | "
+                            f"{r['wall_time_s']:.1f}" for r in c["runs"])
+        md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | {mcells} | "
+                  f"{100 * c['grid_change']:+.2f} | {100 * c['h_central_vs_nvm']:+.1f} | "
+                  f"{100 * c['h_central_vs_hd']:+.1f} | {100 * c['h_min_vs_hd']:+.1f} | "
+                  f"{verdict} |")
+    return "\n".join(lines), "\n".join(md)
+
+
+def main(outdir, quick: bool = False, *, nodes: int | None = None,
+         grids: tuple[int, ...] | None = None, plot: bool = True) -> dict:
+    """Run the map; write ``point_ehl_map.json``/``.txt``/``.md`` (and a PNG); return it.
+
+    Parameters
+    ----------
+    outdir : path
+    quick : bool
+        M in {20, 100}, L = 10 on 65^2 and 129^2.
+    nodes : int, optional
+        A single grid (no grid change is measured).
+    grids : tuple of int, optional
+        Grids (nodes per direction, increasing); default ``GRIDS``.
+    plot : bool
+        Pressure map of the last case on the finest grid.
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
-    nodes = nodes or (65 if quick else 129)
+    if grids is None:
+        grids = (nodes,) if nodes else ((65, 129) if quick else GRIDS)
+    grids = tuple(int(n) for n in grids)
     pairs = [(20, 10), (100, 10)] if quick else [(m, l) for m in M_VALUES for l in L_VALUES]
-    rows = []
+    cases = []
+    t_start = time.perf_counter()
     for M, L in pairs:
-        scene = moes_scene(M, L, 65)
-        g = moes_point(scene.load.force, scene.contact.rx, scene.contact.ry, scene.e_prime,
-                       scene.lubricant.viscosity, scene.kinematics.mean_speed,
-                       scene.lubricant.piezo)
+        g = _formulas(moes_scene(M, L, grids[0]))["moes"]
         if g["alpha_ph"] > MAX_ALPHA_PH:
-            rows.append({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "status": "skipped",
-                         "message": f"alpha p_h = {g['alpha_ph']:.1f} > {MAX_ALPHA_PH}"})
+            cases.append({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "status": "skipped",
+                          "message": f"alpha p_h = {g['alpha_ph']:.1f} > {MAX_ALPHA_PH}"})
             continue
-        row, res = run_case(M, L, nodes)
-        rows.append(row)
-        if plot and (M, L) == pairs[-1]:
+        runs = []
+        res = None
+        for n in grids:
+            row, res = run_case(M, L, n)
+            runs.append(row)
+            print(f"M={M:g} L={L:g} {n}^2: {row['status']}, {row['newton_iterations']} "
+                  f"Newton its, {row['wall_time_s']:.1f} s, h_c/NVM "
+                  f"{row['h_central_ratio']:.4f}", flush=True)
+        cases.append(_assess({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "runs": runs}))
+        if plot and (M, L) == pairs[-1] and res is not None:
             from bearing_fem.plot import plot_result
 
             plot_result(res, outdir / "point_ehl_map_last.png", kind="map")
-    lines = [f"{'M':>5} {'L':>4} {'aph':>6} {'status':>10} {'its':>4} {'time s':>7} "
-             f"{'hc/NVM':>7} {'pmax/ph':>8}"]
-    for r in rows:
-        if r["status"] == "skipped":
-            lines.append(f"{r['M']:5g} {r['L']:4g} {r['alpha_ph']:6.1f}    skipped")
-            continue
-        lines.append(f"{r['M']:5g} {r['L']:4g} {r['alpha_ph']:6.1f} {r['status']:>10} "
-                     f"{r['newton_iterations']:4d} {r['wall_time_s']:7.1f} "
-                     f"{r['h_central_ratio']:7.3f} {r['p_max_over_ph']:8.3f}")
-    solved = [r for r in rows if r["status"] != "skipped"]
-    worst = max((abs(r["h_central_ratio"] - 1) for r in solved), default=math.nan)
-    lines.append(f"{sum(r['status'] == 'converged' for r in solved)} of {len(solved)} "
-                 f"converged on {nodes}^2; max |h_c/NVM - 1| = {worst:.3f}")
-    table = "\n".join(lines)
-    print(table)
-    (outdir / "point_ehl_map.txt").write_text(table + "\n")
-    out = {"nodes": nodes, "cases": rows, "max_abs_hc_deviation": worst}
+    solved = [c for c in cases if c["status"] != "skipped"]
+    worst = max((abs(c["h_central_ratio"] - 1) for c in solved), default=math.nan)
+    worst_change = max((abs(c["grid_change"]) for c in solved), default=math.nan)
+    n_conv = sum(c["status"] == "converged" for c in solved)
+    n_met = sum(c["met"] for c in solved)
+    text, md = _table(cases, grids)
+    summary = (f"{n_conv} of {len(solved)} converged on {' and '.join(f'{n}^2' for n in grids)}; "
+               f"max |h_c/NVM - 1| = {worst:.3f} on {grids[-1]}^2"
+               + (f"; max |grid change| = {100 * worst_change:.2f}%" if len(grids) > 1 else "")
+               + f"; all targets met in {n_met} of {len(solved)} "
+               f"(grid change < {100 * GRID_CHANGE_TARGET:g}%, NVM < {100 * NVM_TARGET:g}%, "
+               f"Hamrock-Dowson h_c and h_min < {100 * HD_TARGET:g}%); "
+               f"total {time.perf_counter() - t_start:.0f} s")
+    print(text + "\n" + summary)
+    (outdir / "point_ehl_map.txt").write_text(text + "\n" + summary + "\n")
+    (outdir / "point_ehl_map.md").write_text(md + "\n\n" + summary + "\n")
+    out = {"grids": list(grids), "cases": cases, "max_abs_hc_deviation": worst,
+           "max_abs_grid_change": worst_change, "targets_met": n_met, "summary": summary}
     (outdir / "point_ehl_map.json").write_text(json.dumps(out, indent=1))
     return out
 

@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 
 from bearing_fem import analytic as an
 from bearing_fem.point import PointGrid, solve_point
@@ -192,6 +193,30 @@ def test_elastic_point_converges_near_nvm(M, L, ry_over_rx):
     assert res.pressure.shape == (res.y.size, res.x.size)
 
 
+def test_high_piezoviscosity_converges_directly_on_two_grids():
+    # alpha p_h = 33.8: without the initial Newton shift the direct attempts stalled on
+    # 65^2 and again on 129^2 (alpha continuation from scratch: 157 iterations in all)
+    scene = _moes_scene(100, 20, 129)
+    res = solve_point(scene)
+    assert res.status == "converged", res.message
+    assert all(s == 1.0 for s, _, _ in res.continuation), (
+        f"no alpha continuation expected: {res.continuation}")
+    assert res.newton_iterations < 50, f"cost cap: {res.newton_iterations} Newton iterations"
+    coarse, fine = res.continuation
+    assert "65x65" in coarse[1] and "129x129" in fine[1]
+
+
+def test_fine_level_never_restarts_alpha_continuation_from_scratch():
+    # alpha p_h = 19.8, (M, L) = (20, 20): the direct attempt on 129^2 from the 65^2
+    # solution may cycle at the outlet spike; the fallback continues in alpha from that
+    # interpolated solution (s = 0.8 -> 1), not from the Hertzian start at s = 0
+    res = solve_point(_moes_scene(20, 20, 129))
+    assert res.status == "converged", res.message
+    fine = [(s, i) for s, st, i in res.continuation if "129x129" in st]
+    assert all(s > 0.0 for s, _ in fine), f"continuation from scratch: {res.continuation}"
+    assert res.newton_iterations < 60, f"cost cap: {res.newton_iterations} Newton iterations"
+
+
 def test_elastic_squeeze_thickens_film_at_fixed_load():
     # An approaching surface (dh0/dt < 0) builds squeeze pressure that carries part of
     # the load, so at a fixed load the wedge needs less pressure: the film is thicker.
@@ -240,3 +265,98 @@ def test_seed001_study_quick(tmp_path):
         assert row["solution_exists"] == (row["alpha_q_max"] < 1.0)
         assert (row["p_max_Pa"] is None) != row["solution_exists"]
     assert (tmp_path / "seed001_bearing209.json").is_file()
+
+
+# ---------------------------------------------------------------------------------------
+# solver internals: fast assembly, preconditioner ordering, flux derivatives
+# ---------------------------------------------------------------------------------------
+def test_element_assembler_matches_sparse_products():
+    # graded in y, uniform in x: the element-wise sum must equal the sparse-product form
+    grid = PointGrid.tensor(np.linspace(-1e-3, 2e-3, 9), 1e-3 * np.sinh(np.linspace(-1, 1, 12)))
+    ops = grid.ops
+    rng = np.random.default_rng(3)
+    nq = ops.weights.size
+    terms = [(d, rng.standard_normal(nq), (rng.standard_normal(nq), rng.standard_normal(nq)))
+             for d in (0, 1)]
+    ref = (ops.flux_jacobian(*terms[0]) + ops.flux_jacobian(*terms[1])).toarray()
+    fast = ops.assembler.flux_jacobian_sum(terms)
+    np.testing.assert_allclose(fast.toarray(), ref, rtol=0, atol=1e-13 * np.abs(ref).max(),
+                               err_msg="same forms, only the summation order differs")
+    np.testing.assert_allclose(ops.assembler.pattern_data(sp.csr_matrix(ref)), fast.data,
+                               rtol=0, atol=1e-13 * np.abs(ref).max(),
+                               err_msg="pattern_data recovers the values on the pattern")
+    wider = np.zeros_like(ref)
+    wider[0, -1] = 1.0  # nodes that share no element
+    assert ops.assembler.pattern_data(sp.csr_matrix(wider)) is None
+
+
+@pytest.mark.parametrize("nx, ny", [(1, 1), (7, 5), (30, 17)])
+def test_nested_dissection_is_a_separator_order(nx, ny):
+    from bearing_fem.point import nested_dissection
+
+    perm = nested_dissection(nx, ny, leaf=2)
+    assert np.array_equal(np.sort(perm), np.arange(nx * ny))
+
+
+def test_preconditioner_fast_path_equals_sparse_products():
+    # the gathered, dissected LU solves the same matrix as the sparse-product fallback
+    scene = _moes_scene(100, 10, 17)
+    import bearing_fem.point as bp
+
+    setup = bp.point_setup(scene)
+    prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
+    z = bp._initial_guess(scene, setup, prob)
+    prob.prepare(z)
+    a_p, a_h, _, row_factor, da = prob._blocks(z)
+    scale = row_factor * prob.p_ref
+    diag = da + 0.01
+    fast = prob._preconditioner_lu(a_p, a_h, scale, diag)
+    slow = prob._preconditioner_lu_general(a_p, a_h, scale, diag)
+    r = np.random.default_rng(0).standard_normal(prob.free.size)
+    np.testing.assert_allclose(fast(r), slow(r), rtol=1e-9, atol=1e-12,
+                               err_msg="two orderings of one sparse LU: rounding only")
+
+
+def test_upwind_flux_derivatives_match_complex_step():
+    from dataclasses import replace
+
+    import bearing_fem.point as bp
+    from bearing_fem.reynolds import FluxModel
+
+    scene = _moes_scene(100, 10, 17)
+    setup = bp.point_setup(scene)
+    rng = np.random.default_rng(1)
+    n = 500
+    p = rng.uniform(-1e7, 2e9, n)
+    h = rng.uniform(5e-8, 1e-6, n)
+    gp = (1e12 * rng.standard_normal(n), 1e12 * rng.standard_normal(n))
+    gh = (1e-3 * rng.standard_normal(n), 1e-3 * rng.standard_normal(n))
+    dx = np.full(n, 1e-5)
+    for law in ({}, {"density": "dowson-higginson"}, {"viscosity_law": "roelands"}):
+        flux = bp._flux(replace(scene, lubricant=replace(scene.lubricant, **law)), setup)
+        fast = flux.flux_and_derivatives(p, h, gp, gh, dx)
+        ref = FluxModel.flux_and_derivatives(flux, p, h, gp, gh, dx)  # complex step for all
+        for k in (0, 1, 2):
+            for a, b in zip(fast[k], ref[k]):
+                np.testing.assert_allclose(a, b, rtol=1e-12, atol=0, err_msg=f"{law} part {k}")
+        for k in (3, 4):
+            for da, db in zip(fast[k], ref[k]):
+                for a, b in zip(da, db):
+                    np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12 * np.abs(b).max(),
+                                               err_msg=f"{law}: the flux is affine in the "
+                                                       f"gradients (analytic = complex step)")
+
+
+def test_xi_complex_step_equals_analytic_derivative():
+    from bearing_fem.reynolds import _coth_minus_inverse
+
+    x = np.array([-50.0, -3.0, -1e-3, 0.0, 1e-3, 0.5, 2.0, 39.0, 41.0, 1e3])
+    s = 1e-20
+    d = np.imag(_coth_minus_inverse(x + 1j * s)) / s
+    xm = x[(np.abs(x) >= 1e-2) & (np.abs(x) <= 40)]
+    exact = 1 / xm**2 - 1 / np.sinh(xm) ** 2
+    np.testing.assert_allclose(d[(np.abs(x) >= 1e-2) & (np.abs(x) <= 40)], exact, rtol=1e-10,
+                               err_msg="xi' = 1/x^2 - 1/sinh^2 x")
+    np.testing.assert_allclose(np.real(_coth_minus_inverse(x + 1j * s)),
+                               _coth_minus_inverse(x), rtol=0, atol=0,
+                               err_msg="real part of the complex step is the real value")
