@@ -56,7 +56,7 @@ from .fe import QuadratureOperators, quadrature_operators
 from .line import ScaledResidual, fischer_burmeister
 from .newton import continuation, damped_newton
 from .result import Result
-from .reynolds import FluxModel, _coth_minus_inverse
+from .reynolds import FluxModel, UpwindFluxModel
 
 log = logging.getLogger(__name__)
 
@@ -796,60 +796,6 @@ class PointProblem(ScaledResidual):
         return dz
 
 
-@dataclass(frozen=True)
-class UpwindFluxModel(FluxModel):
-    """Reynolds flux with a first-order upwinded wedge term (elastic 2D scenes).
-
-    F_x = eps dp/dx - u_m rho h + (dx/2) u_m d(rho h)/dx: the added streamline
-    diffusion turns the Galerkin (central) wedge term into the first-order upwind
-    difference (rho h)_i - (rho h)_(i-1) that Venner & Lubrecht use for EHL on coarse
-    grids; consistent to O(dx). Without it, bilinear Galerkin elements give odd-even
-    (checkerboard) pressures at the outlet of an elastic point contact and Newton
-    stagnates. ``compliance`` is ignored (no coth-SUPG on top).
-    """
-
-    upwind: float = 1.0
-    upwind_compliance: float = 0.0
-
-    def _coefficients(self, p, h, dx):
-        """rho [-], eps [m^3/(Pa s)], d rho/dp [1/Pa] and the upwind factor
-        (dx/2) u_m xi [m^2/s] at the quadrature points (real or complex-step input)."""
-        rho = self.density(p)
-        eps = rho * (h * h * h) / (12.0 * self.viscosity(p))  # h*h*h: pow() is slow
-        dp = 1e3  # Pa; smooth density laws
-        drho = (self.density(p + dp) - self.density(p - dp)) / (2 * dp)
-        xi = 1.0
-        if self.upwind_compliance > 0.0:  # fade out where Poiseuille flow dominates
-            xi = _coth_minus_inverse(self.mean_speed * rho * self.upwind_compliance * dx
-                                     / (2.0 * eps))
-        return rho, eps, drho, 0.5 * self.upwind * xi * dx * self.mean_speed
-
-    def flux(self, p, h, gp, gh, dx):
-        rho, eps, drho, c = self._coefficients(p, h, dx)
-        out = [eps * g for g in gp]
-        out[0] = out[0] - self.mean_speed * rho * h
-        out[0] = out[0] + c * (rho * gh[0] + h * drho * gp[0])
-        return tuple(out)
-
-    def flux_and_derivatives(self, p, h, gp, gh, dx):
-        """As :meth:`FluxModel.flux_and_derivatives`; the flux is affine in grad p and
-        grad h at fixed (p, h), so those derivatives are the coefficients themselves
-        (dF_x/dp_x = eps + c h drho/dp, dF_x/dh_x = c rho, dF_y/dp_y = eps, others 0);
-        only d/dp and d/dh take a complex step."""
-        base = self.flux(p, h, gp, gh, dx)
-        d_p = self._complex_step(p, h, gp, gh, dx, "p")
-        d_h = self._complex_step(p, h, gp, gh, dx, "h")
-        rho, eps, drho, c = self._coefficients(p, h, dx)
-        dim = len(gp)
-        zero = np.zeros_like(np.real(base[0]))
-        dgp = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgh = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgp[0] = (eps + c * h * drho,) + dgp[0][1:]
-        for k in range(1, dim):
-            dgp[k] = dgp[k][:k] + (eps + zero,) + dgp[k][k + 1:]
-        dgh[0] = (c * rho + zero,) + dgh[0][1:]
-        return base, d_p, d_h, dgp, dgh
-
 def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
                 precond: Callable[[np.ndarray], np.ndarray], b: np.ndarray, *,
                 rtol: float = 1e-9, max_iterations: int = 150
@@ -1121,6 +1067,13 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
     sq = float(squeeze_velocity)
     if not math.isfinite(sq):
         raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
+    if scene.model.elasticity == "half-space" and scene.load.gap is not None:
+        # elastic with a prescribed rigid offset: no load balance, grid in sqrt(2 r h0)
+        from .transient import solve_elastic_gap
+
+        return solve_elastic_gap(scene, squeeze_velocity=sq,
+                                 boundary_pressure=boundary_pressure,
+                                 max_iterations=max_iterations)
     t0 = time.perf_counter()
     setup = point_setup(scene)
     if _is_linear(scene):
