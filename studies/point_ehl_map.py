@@ -164,7 +164,8 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
 
 
 def main(outdir, quick: bool = False, *, nodes: int | None = None,
-         grids: tuple[int, ...] | None = None, plot: bool = True) -> dict:
+         grids: tuple[int, ...] | None = None, plot: bool = True,
+         check_next_grid: bool = True) -> dict:
     """Run the map; write ``point_ehl_map.json``/``.txt``/``.md`` (and a PNG); return it.
 
     Parameters
@@ -178,6 +179,10 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
         Grids (nodes per direction, increasing); default ``GRIDS``.
     plot : bool
         Pressure map of the last case on the finest grid.
+    check_next_grid : bool
+        Cases that miss the grid-change target are also solved on the next finer grid
+        (2 n - 1 nodes), to show how far the finest of ``grids`` is from convergence
+        (``grid_change_next``); the acceptance verdict is not changed by it.
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -201,7 +206,15 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
             print(f"M={M:g} L={L:g} {n}^2: {row['status']}, {row['newton_iterations']} "
                   f"Newton its, {row['wall_time_s']:.1f} s, h_c/NVM "
                   f"{row['h_central_ratio']:.4f}", flush=True)
-        cases.append(_assess({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "runs": runs}))
+        case = _assess({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "runs": runs})
+        if check_next_grid and "grid change" in case["missed"]:
+            row, _ = run_case(M, L, 2 * grids[-1] - 1)
+            case["next_run"] = row
+            case["grid_change_next"] = row["h_central_m"] / runs[-1]["h_central_m"] - 1.0
+            print(f"M={M:g} L={L:g} {row['nodes']}^2 (grid check): {row['status']}, "
+                  f"{row['newton_iterations']} Newton its, {row['wall_time_s']:.1f} s, "
+                  f"h_c/NVM {row['h_central_ratio']:.4f}", flush=True)
+        cases.append(case)
         if plot and (M, L) == pairs[-1] and res is not None:
             from bearing_fem.plot import plot_result
 
@@ -212,6 +225,15 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
     n_conv = sum(c["status"] == "converged" for c in solved)
     n_met = sum(c["met"] for c in solved)
     text, md = _table(cases, grids)
+    checks = [c for c in cases if "next_run" in c]
+    if checks:
+        note = "\n".join(
+            f"grid check M={c['M']:g} L={c['L']:g}: {c['next_run']['nodes']}^2 "
+            f"{c['next_run']['status']}, {c['next_run']['newton_iterations']} its, "
+            f"{c['next_run']['wall_time_s']:.1f} s, h_c/NVM "
+            f"{c['next_run']['h_central_ratio']:.3f}, change from {grids[-1]}^2 "
+            f"{100 * c['grid_change_next']:+.2f}%" for c in checks)
+        text, md = text + "\n" + note, md + "\n\n" + note.replace("\n", "  \n")
     summary = (f"{n_conv} of {len(solved)} converged on {' and '.join(f'{n}^2' for n in grids)}; "
                f"max |h_c/NVM - 1| = {worst:.3f} on {grids[-1]}^2"
                + (f"; max |grid change| = {100 * worst_change:.2f}%" if len(grids) > 1 else "")
