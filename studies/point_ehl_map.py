@@ -113,6 +113,10 @@ def _assess(case: dict) -> dict:
     case["h_min_vs_hd"] = fine["h_min_vs_hd"]
     case["grid_change"] = (fine["h_central_m"] / runs[-2]["h_central_m"] - 1.0
                            if len(runs) > 1 else math.nan)
+    case["h_min_grid_change"] = (fine["h_min_m"] / runs[-2]["h_min_m"] - 1.0
+                                 if len(runs) > 1 else math.nan)
+    # how far the two fits disagree with each other (formula against formula)
+    case["nvm_vs_hd"] = fine["h_central_nvm_m"] / fine["h_central_hd_m"] - 1.0
     missed = []
     if case["status"] != "converged":
         missed.append("not converged")
@@ -133,32 +137,36 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
     """Plain-text and markdown tables of the map."""
     head = (f"{'M':>5} {'L':>4} {'aph':>5} " + " ".join(
         f"{f'{n}^2: its':>10} {'s':>6} {'h_c/NVM':>7}" for n in grids)
-        + f" {'grid %':>7} {'NVM %':>6} {'HD hc %':>7} {'HD hmin %':>9}  status")
+        + f" {'grid %':>7} {'NVM %':>6} {'HD hc %':>7} {'HD hmin %':>9} {'hmin grid %':>11}"
+        f" {'NVM/HD %':>8}  status")
     lines = [head]
     md = ["| M | L | alpha p_h | " + " | ".join(
         f"{n}^2 h_c [nm] | {n}^2 its | {n}^2 s" for n in grids)
-        + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | status |",
-        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|"]
+        + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | h_min grid change %"
+        " | NVM vs HD h_c % | status |",
+        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|---|---|"]
     for c in cases:
         if c["status"] == "skipped":
             lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f}  skipped "
                          f"(alpha p_h > {MAX_ALPHA_PH:g})")
             md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | "
                       + " | ".join("-" for _ in range(3 * len(grids)))
-                      + f" | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
+                      + f" | - | - | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
             continue
         verdict = "MET" if c["met"] else "NOT MET: " + ", ".join(c["missed"])
         cells = " ".join(f"{r['newton_iterations']:>10d} {r['wall_time_s']:6.1f} "
                          f"{r['h_central_ratio']:7.3f}" for r in c["runs"])
         lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f} {cells} "
                      f"{100 * c['grid_change']:+7.2f} {100 * c['h_central_vs_nvm']:+6.1f} "
-                     f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f}  "
+                     f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f} "
+                     f"{100 * c['h_min_grid_change']:+11.2f} {100 * c['nvm_vs_hd']:+8.1f}  "
                      f"{verdict}")
         mcells = " | ".join(f"{1e9 * r['h_central_m']:.2f} | {r['newton_iterations']} | "
                             f"{r['wall_time_s']:.1f}" for r in c["runs"])
         md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | {mcells} | "
                   f"{100 * c['grid_change']:+.2f} | {100 * c['h_central_vs_nvm']:+.1f} | "
                   f"{100 * c['h_central_vs_hd']:+.1f} | {100 * c['h_min_vs_hd']:+.1f} | "
+                  f"{100 * c['h_min_grid_change']:+.2f} | {100 * c['nvm_vs_hd']:+.1f} | "
                   f"{verdict} |")
     return "\n".join(lines), "\n".join(md)
 
