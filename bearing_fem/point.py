@@ -80,6 +80,14 @@ NEAR_FIELD_CELLS = 0
 #: The Hertz-scale c = 4 a_x/(pi E') used before kept first-order upwinding across the
 #: inlet: h_c changed by 3.1% from 129^2 to 257^2 at M = 500, L = 5 (0.6% with C_00).
 UPWIND_COMPLIANCE_FACTOR = 1.0
+#: Poiseuille term of elastic scenes with Barus (or constant) viscosity:
+#: rho h^3/(12 eta0) grad q_h, q_h the bilinear interpolant of the nodal reduced pressure
+#: q = (1 - exp(-alpha p))/alpha, instead of eps(p) grad p at the quadrature points. Along
+#: an element edge this is the exact integral of eps(p) dp/dx for linear p, whatever the
+#: pressure jump; the quadrature of exp(-alpha p) is not once alpha dp >> 1 (the outlet
+#: spike: alpha p from ~60 to ~1 across one cell at L = 20), where its flux is not even
+#: monotone in the spike pressure and Newton cycled.
+REDUCED_POISEUILLE = True
 #: Initial Newton regularisation sigma (``damped_newton(initial_shift=...)``) of elastic
 #: solves, from the Hertzian start of the coarsest grid and from a solution interpolated
 #: to a finer grid. Measured (M, L) = (100, 20): with 0 the direct attempt stalled on
@@ -90,12 +98,13 @@ TRANSFER_SHIFT = 1e-2
 #: Finer levels of the grid sequence: the direct Newton attempt from the interpolated
 #: solution gets at most this many iterations; if it fails, alpha continuation starts from
 #: that same interpolated solution at s = WARM_START_ALPHA (then s -> 1), before the
-#: continuation from scratch. Measured (upwind Pe with 0.1 x the Hertz-scale compliance,
-#: close to the grid-scale C_00 on 129^2), 65^2 -> 129^2: direct
-#: attempts at (M, L) = (20, 20) and (100, 20) cycle at |F| ~ 3e-4 (spike and outlet
-#: nodes); s = 0.8 -> 1 converged in 6 + 11 and 13 + 13 iterations, where the
-#: continuation from scratch took 56 and 62 after 30 failed direct iterations.
-TRANSFER_DIRECT_ITERATIONS = 15
+#: continuation from scratch. Measured with the pointwise Poiseuille term (before
+#: REDUCED_POISEUILLE), 65^2 -> 129^2: direct attempts at (M, L) = (20, 20) and (100, 20)
+#: cycled at |F| ~ 3e-4 (spike and outlet nodes); s = 0.8 -> 1 converged in 6 + 11 and
+#: 13 + 13 iterations, where the continuation from scratch took 56 and 62 after 30 failed
+#: direct iterations. With the reduced-pressure Poiseuille term the direct attempts of
+#: the circular map need 6-12 iterations per finer level.
+TRANSFER_DIRECT_ITERATIONS = 20
 WARM_START_ALPHA = 0.8
 #: Newton tolerance of the coarser levels of the grid sequence (the finest level uses
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
@@ -626,6 +635,16 @@ class PointProblem(ScaledResidual):
         gp = (ops.grad[0] @ p, ops.grad[1] @ p)
         return ops.value @ p, h, gp, gh
 
+    @property
+    def _reduced(self) -> bool:
+        return getattr(self.flux, "reduced_alpha", None) is not None
+
+    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Gradient of the bilinear interpolant of the nodal reduced pressure [Pa/m]."""
+        ops = self.grid.ops
+        q = self.flux.reduced(p)
+        return ops.grad[0] @ q, ops.grad[1] @ q
+
     # -- NonlinearProblem ------------------------------------------------------------------
     def prepare(self, z: np.ndarray) -> None:
         p, h0 = self.unpack(z)
@@ -637,7 +656,10 @@ class PointProblem(ScaledResidual):
         """Nodal weak residual R_i [m^3/s] (all nodes)."""
         pq, h, gp, gh = self.fields_q(p, h0)
         ops = self.grid.ops
-        fl = self.flux.flux(pq, h, gp, gh, ops.element_size)
+        if self._reduced:
+            fl = self.flux.flux(pq, h, gp, gh, ops.element_size, gq=self._grad_reduced(p))
+        else:
+            fl = self.flux.flux(pq, h, gp, gh, ops.element_size)
         r = ops.weak_divergence(*fl)
         if self.squeeze:
             rho = self.flux.density(pq)
@@ -649,10 +671,20 @@ class PointProblem(ScaledResidual):
         p, h0 = self.unpack(z)
         ops = self.grid.ops
         pq, h, gp, gh = self.fields_q(p, h0)
-        fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh,
-                                                            ops.element_size)
         asm = ops.assembler  # element-wise assembly on one fixed pattern
+        if self._reduced:
+            fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
+                pq, h, gp, gh, ops.element_size, self._grad_reduced(p))
+            zero = np.zeros_like(pq)
+            a_q = asm.flux_jacobian_sum([(d, zero, (dgq[0][d], dgq[1][d])) for d in range(2)])
+            a_q.data *= self.flux.fluidity(p)[a_q.indices]  # d grad q / d p_j = q'(p_j)
+        else:
+            fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh,
+                                                                ops.element_size)
+            a_q = None
         a_p = asm.flux_jacobian_sum([(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)])
+        if a_q is not None:
+            a_p.data += a_q.data  # same pattern
         a_h = asm.flux_jacobian_sum([(d, dh[d], (dgh[0][d], dgh[1][d])) for d in range(2)])
         res = ops.weak_divergence(*fl)
         drdh0 = ops.grad[0].T @ (ops.weights * dh[0]) + ops.grad[1].T @ (ops.weights * dh[1])
@@ -847,9 +879,14 @@ def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
 
 def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
     if setup.compliance is not None:
-        base = UpwindFluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
+        lub = scene.lubricant
+        base = UpwindFluxModel.from_lubricant(lub, scene.kinematics.mean_speed,
                                               compliance=0.0, piezo_scale=piezo_scale)
-        return replace(base, upwind_compliance=UPWIND_COMPLIANCE_FACTOR * setup.stab_compliance)
+        reduced = None
+        if REDUCED_POISEUILLE and (lub.viscosity_law == "barus" or lub.effective_piezo == 0.0):
+            reduced = lub.effective_piezo * piezo_scale
+        return replace(base, upwind_compliance=UPWIND_COMPLIANCE_FACTOR * setup.stab_compliance,
+                       reduced_alpha=reduced, viscosity0=lub.viscosity)
     return FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
                                     compliance=setup.stab_compliance, piezo_scale=piezo_scale)
 

@@ -176,6 +176,22 @@ class UpwindFluxModel(FluxModel):
 
     upwind: float = 1.0
     upwind_compliance: float = 0.0
+    #: Barus alpha [1/Pa] of the reduced-pressure Poiseuille term (None: eps grad p at the
+    #: quadrature points). See :meth:`reduced`.
+    reduced_alpha: float | None = None
+    #: eta0 [Pa s] of the reduced-pressure Poiseuille term.
+    viscosity0: float = 0.0
+
+    def reduced(self, p: np.ndarray) -> np.ndarray:
+        """Kapitsa reduced pressure q(p) = int_0^p eta0/eta ds = (1 - exp(-alpha p))/alpha
+        [Pa] (Barus; q = p when alpha = 0)."""
+        a = self.reduced_alpha
+        return np.asarray(p, dtype=float) if not a else -np.expm1(-a * np.asarray(p)) / a
+
+    def fluidity(self, p: np.ndarray) -> np.ndarray:
+        """dq/dp = eta0/eta(p) [-]."""
+        a = self.reduced_alpha
+        return np.ones_like(p, dtype=float) if not a else np.exp(-a * np.asarray(p))
 
     def _coefficients(self, p, h, dx):
         """rho [-], eps [m^3/(Pa s)], d rho/dp [1/Pa] and the upwind factor
@@ -190,12 +206,45 @@ class UpwindFluxModel(FluxModel):
                                      / (2.0 * eps))
         return rho, eps, drho, 0.5 * self.upwind * xi * dx * self.mean_speed
 
-    def flux(self, p, h, gp, gh, dx):
+    def flux(self, p, h, gp, gh, dx, gq=None):
+        """Flux at the quadrature points [m^2/s]; with ``gq`` (gradient of the
+        interpolated nodal reduced pressure [Pa/m]) the Poiseuille term is
+        rho h^3/(12 eta0) grad q instead of eps grad p."""
         rho, eps, drho, c = self._coefficients(p, h, dx)
-        out = [eps * g for g in gp]
+        if gq is None:
+            out = [eps * g for g in gp]
+        else:
+            k = rho * (h * h * h) / (12.0 * self.viscosity0)
+            out = [k * g for g in gq]
         out[0] = out[0] - self.mean_speed * rho * h
         out[0] = out[0] + c * (rho * gh[0] + h * drho * gp[0])
         return tuple(out)
+
+    def flux_and_derivatives_reduced(self, p, h, gp, gh, dx, gq):
+        """Flux with the reduced-pressure Poiseuille term and its derivatives: as
+        :meth:`flux_and_derivatives`, plus dF/d(grad q) (list over gradient components
+        of tuples over flux components) as a sixth item."""
+        base = self.flux(p, h, gp, gh, dx, gq)
+        steps = []
+        for which in ("p", "h"):
+            v = p if which == "p" else h
+            vmax = float(np.max(np.abs(v))) if np.size(v) else 0.0
+            step = 1e-20 * (vmax if vmax > 0.0 else 1.0)
+            args = (p + 1j * step, h) if which == "p" else (p, h + 1j * step)
+            out = self.flux(*args, gp, gh, dx, gq)
+            steps.append(tuple(np.imag(f) / step for f in out))
+        rho, eps, drho, c = self._coefficients(p, h, dx)
+        k = rho * (h * h * h) / (12.0 * self.viscosity0)
+        dim = len(gp)
+        zero = np.zeros_like(np.real(base[0]))
+        dgp = [tuple(zero for _ in range(dim)) for _ in range(dim)]
+        dgh = [tuple(zero for _ in range(dim)) for _ in range(dim)]
+        dgq = [tuple(zero for _ in range(dim)) for _ in range(dim)]
+        dgp[0] = (c * h * drho + zero,) + dgp[0][1:]
+        dgh[0] = (c * rho + zero,) + dgh[0][1:]
+        for k_ in range(dim):
+            dgq[k_] = dgq[k_][:k_] + (k + zero,) + dgq[k_][k_ + 1:]
+        return base, steps[0], steps[1], dgp, dgh, dgq
 
     def flux_and_derivatives(self, p, h, gp, gh, dx):
         """As :meth:`FluxModel.flux_and_derivatives`; the flux is affine in grad p and
@@ -215,6 +264,7 @@ class UpwindFluxModel(FluxModel):
             dgp[k] = dgp[k][:k] + (eps + zero,) + dgp[k][k + 1:]
         dgh[0] = (c * rho + zero,) + dgh[0][1:]
         return base, d_p, d_h, dgp, dgh
+
 
 def _coth_minus_inverse(pe):
     """xi(Pe) = coth(Pe) - 1/Pe, stable for small and huge Pe (real or complex-step input).

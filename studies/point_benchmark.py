@@ -19,10 +19,15 @@ Expected outcome
 ----------------
 A few Newton iterations per fine level, exponent ~1.0-1.3, peak memory well below 4 GB
 at 513^2 (the dense 2D compliance is never formed).
+
+The machine load is recorded with each row (1-minute load average before and after the
+solve, ``os.getloadavg``) together with the process CPU time: on a shared machine the wall
+time is only meaningful next to the load.
 """
 from __future__ import annotations
 
 import json
+import os
 import resource
 import sys
 import time
@@ -53,30 +58,38 @@ def main(outdir, quick: bool = False, *, M: float = 100.0, L: float = 10.0) -> d
     prev_time = 0.0
     for n in grids:
         scene = moes_scene(M, L, n)
-        t0 = time.perf_counter()
+        load_before = os.getloadavg()[0]
+        t0, c0 = time.perf_counter(), time.process_time()
         res = solve_point(scene)
-        wall = time.perf_counter() - t0
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+        load_after = os.getloadavg()[0]
         its = _finest_iterations(res, n)
         level_time = wall - prev_time if n != grids[0] else wall
         prev_time = wall
         rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
         rows.append({"nodes": n, "unknowns": n * n, "status": res.status,
-                     "wall_time_s": wall, "newton_iterations_total": res.newton_iterations,
+                     "wall_time_s": wall, "cpu_time_s": cpu,
+                     "load_average_1min": [load_before, load_after],
+                     "newton_iterations_total": res.newton_iterations,
                      "newton_iterations_finest": its,
                      "time_per_iteration_s": level_time / max(its, 1),
                      "gmres_iterations_total": res.quantities.get("gmres_iterations"),
                      "h_central_m": res.quantities.get("h_central"),
+                     "h_min_m": res.quantities.get("h_min"),
+                     "p_max_Pa": res.quantities.get("p_max"),
                      "peak_rss_mb": rss_mb})
     n_arr = np.array([r["unknowns"] for r in rows], dtype=float)
     t_arr = np.array([r["time_per_iteration_s"] for r in rows])
     exponent = float(np.polyfit(np.log(n_arr), np.log(t_arr), 1)[0]) if len(rows) > 1 \
         else float("nan")
-    lines = [f"{'grid':>8} {'status':>10} {'time s':>8} {'its(fine)':>9} {'s/it':>7} "
-             f"{'gmres':>6} {'peak MB':>8}"]
+    lines = [f"{'grid':>8} {'status':>10} {'time s':>8} {'cpu s':>7} {'its(fine)':>9} "
+             f"{'s/it':>7} {'gmres':>6} {'peak MB':>8} {'load before/after':>18}"]
     for r in rows:
+        lb, la = r["load_average_1min"]
         lines.append(f"{r['nodes']:>4}^2    {r['status']:>10} {r['wall_time_s']:8.1f} "
-                     f"{r['newton_iterations_finest']:9d} {r['time_per_iteration_s']:7.2f} "
-                     f"{r['gmres_iterations_total']:6.0f} {r['peak_rss_mb']:8.0f}")
+                     f"{r['cpu_time_s']:7.1f} {r['newton_iterations_finest']:9d} "
+                     f"{r['time_per_iteration_s']:7.2f} {r['gmres_iterations_total']:6.0f} "
+                     f"{r['peak_rss_mb']:8.0f} {lb:9.2f}/{la:<8.2f}")
     lines.append(f"growth exponent of time per Newton iteration vs unknowns: {exponent:.2f}")
     table = "\n".join(lines)
     print(table)

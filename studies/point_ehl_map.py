@@ -113,6 +113,10 @@ def _assess(case: dict) -> dict:
     case["h_min_vs_hd"] = fine["h_min_vs_hd"]
     case["grid_change"] = (fine["h_central_m"] / runs[-2]["h_central_m"] - 1.0
                            if len(runs) > 1 else math.nan)
+    case["h_min_grid_change"] = (fine["h_min_m"] / runs[-2]["h_min_m"] - 1.0
+                                 if len(runs) > 1 else math.nan)
+    # how far the two fits disagree with each other (formula against formula)
+    case["nvm_vs_hd"] = fine["h_central_nvm_m"] / fine["h_central_hd_m"] - 1.0
     missed = []
     if case["status"] != "converged":
         missed.append("not converged")
@@ -133,38 +137,43 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
     """Plain-text and markdown tables of the map."""
     head = (f"{'M':>5} {'L':>4} {'aph':>5} " + " ".join(
         f"{f'{n}^2: its':>10} {'s':>6} {'h_c/NVM':>7}" for n in grids)
-        + f" {'grid %':>7} {'NVM %':>6} {'HD hc %':>7} {'HD hmin %':>9}  status")
+        + f" {'grid %':>7} {'NVM %':>6} {'HD hc %':>7} {'HD hmin %':>9} {'hmin grid %':>11}"
+        f" {'NVM/HD %':>8}  status")
     lines = [head]
     md = ["| M | L | alpha p_h | " + " | ".join(
         f"{n}^2 h_c [nm] | {n}^2 its | {n}^2 s" for n in grids)
-        + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | status |",
-        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|"]
+        + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | h_min grid change %"
+        " | NVM vs HD h_c % | status |",
+        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|---|---|"]
     for c in cases:
         if c["status"] == "skipped":
             lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f}  skipped "
                          f"(alpha p_h > {MAX_ALPHA_PH:g})")
             md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | "
                       + " | ".join("-" for _ in range(3 * len(grids)))
-                      + f" | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
+                      + f" | - | - | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
             continue
         verdict = "MET" if c["met"] else "NOT MET: " + ", ".join(c["missed"])
         cells = " ".join(f"{r['newton_iterations']:>10d} {r['wall_time_s']:6.1f} "
                          f"{r['h_central_ratio']:7.3f}" for r in c["runs"])
         lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f} {cells} "
                      f"{100 * c['grid_change']:+7.2f} {100 * c['h_central_vs_nvm']:+6.1f} "
-                     f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f}  "
+                     f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f} "
+                     f"{100 * c['h_min_grid_change']:+11.2f} {100 * c['nvm_vs_hd']:+8.1f}  "
                      f"{verdict}")
         mcells = " | ".join(f"{1e9 * r['h_central_m']:.2f} | {r['newton_iterations']} | "
                             f"{r['wall_time_s']:.1f}" for r in c["runs"])
         md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | {mcells} | "
                   f"{100 * c['grid_change']:+.2f} | {100 * c['h_central_vs_nvm']:+.1f} | "
                   f"{100 * c['h_central_vs_hd']:+.1f} | {100 * c['h_min_vs_hd']:+.1f} | "
+                  f"{100 * c['h_min_grid_change']:+.2f} | {100 * c['nvm_vs_hd']:+.1f} | "
                   f"{verdict} |")
     return "\n".join(lines), "\n".join(md)
 
 
 def main(outdir, quick: bool = False, *, nodes: int | None = None,
-         grids: tuple[int, ...] | None = None, plot: bool = True) -> dict:
+         grids: tuple[int, ...] | None = None, plot: bool = True,
+         check_next_grid: bool = True) -> dict:
     """Run the map; write ``point_ehl_map.json``/``.txt``/``.md`` (and a PNG); return it.
 
     Parameters
@@ -178,6 +187,10 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
         Grids (nodes per direction, increasing); default ``GRIDS``.
     plot : bool
         Pressure map of the last case on the finest grid.
+    check_next_grid : bool
+        Cases that miss the grid-change target are also solved on the next finer grid
+        (2 n - 1 nodes), to show how far the finest of ``grids`` is from convergence
+        (``grid_change_next``); the acceptance verdict is not changed by it.
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -201,7 +214,15 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
             print(f"M={M:g} L={L:g} {n}^2: {row['status']}, {row['newton_iterations']} "
                   f"Newton its, {row['wall_time_s']:.1f} s, h_c/NVM "
                   f"{row['h_central_ratio']:.4f}", flush=True)
-        cases.append(_assess({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "runs": runs}))
+        case = _assess({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "runs": runs})
+        if check_next_grid and "grid change" in case["missed"]:
+            row, _ = run_case(M, L, 2 * grids[-1] - 1)
+            case["next_run"] = row
+            case["grid_change_next"] = row["h_central_m"] / runs[-1]["h_central_m"] - 1.0
+            print(f"M={M:g} L={L:g} {row['nodes']}^2 (grid check): {row['status']}, "
+                  f"{row['newton_iterations']} Newton its, {row['wall_time_s']:.1f} s, "
+                  f"h_c/NVM {row['h_central_ratio']:.4f}", flush=True)
+        cases.append(case)
         if plot and (M, L) == pairs[-1] and res is not None:
             from bearing_fem.plot import plot_result
 
@@ -212,6 +233,15 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
     n_conv = sum(c["status"] == "converged" for c in solved)
     n_met = sum(c["met"] for c in solved)
     text, md = _table(cases, grids)
+    checks = [c for c in cases if "next_run" in c]
+    if checks:
+        note = "\n".join(
+            f"grid check M={c['M']:g} L={c['L']:g}: {c['next_run']['nodes']}^2 "
+            f"{c['next_run']['status']}, {c['next_run']['newton_iterations']} its, "
+            f"{c['next_run']['wall_time_s']:.1f} s, h_c/NVM "
+            f"{c['next_run']['h_central_ratio']:.3f}, change from {grids[-1]}^2 "
+            f"{100 * c['grid_change_next']:+.2f}%" for c in checks)
+        text, md = text + "\n" + note, md + "\n\n" + note.replace("\n", "  \n")
     summary = (f"{n_conv} of {len(solved)} converged on {' and '.join(f'{n}^2' for n in grids)}; "
                f"max |h_c/NVM - 1| = {worst:.3f} on {grids[-1]}^2"
                + (f"; max |grid change| = {100 * worst_change:.2f}%" if len(grids) > 1 else "")

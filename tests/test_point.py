@@ -347,6 +347,32 @@ def test_upwind_flux_derivatives_match_complex_step():
                                                        f"gradients (analytic = complex step)")
 
 
+def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
+    # the Jacobian (element assembly, column scaling by dq/dp, FFT compliance) against
+    # central differences of the residual, GMRES solved to 1e-9 (no inexact forcing)
+    import bearing_fem.point as bp
+
+    monkeypatch.setattr(bp, "GMRES_FORCING_MAX", 0.0)
+    scene = _moes_scene(100, 10, 33)
+    setup = bp.point_setup(scene)
+    prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
+    assert prob.flux.reduced_alpha == scene.lubricant.piezo
+    z = bp._initial_guess(scene, setup, prob)
+    prob.prepare(z)
+    f = prob.residual(z)
+    dz = prob.newton_step(z)
+    t = 1e-5
+    jdz = (prob.residual(z + t * dz) - prob.residual(z - t * dz)) / (2 * t)
+    np.testing.assert_allclose(jdz, -f, rtol=0, atol=1e-7 * np.abs(f).max(),
+                               err_msg="J dz = -F: O(t^2) differences and GMRES 1e-9")
+    p = np.array([-1e7, 0.0, 1e8, 1e9])
+    dq = np.imag(prob.flux.reduced(p + 1e-20j)) / 1e-20  # complex step
+    np.testing.assert_allclose(dq, prob.flux.fluidity(p), rtol=1e-12,
+                               err_msg="fluidity = dq/dp = eta0/eta (exact to rounding)")
+    np.testing.assert_allclose(prob.flux.fluidity(p),
+                               scene.lubricant.viscosity / prob.flux.viscosity(p), rtol=1e-12)
+
+
 def test_xi_complex_step_equals_analytic_derivative():
     from bearing_fem.reynolds import _coth_minus_inverse
 
