@@ -226,3 +226,31 @@ def continuation(make_problem: Callable[[float], NonlinearProblem], z_start: np.
     status = "converged" if s >= 1.0 else (last.status if last and not last.converged
                                             else "max_iterations")
     return ContinuationOutcome(z, status, total, record, last, s)
+
+
+def outcome_message(status: str, iterations: int, residual: float, tol: float, *,
+                    prefix: str = "", detail: str = "", cap: int | None = None) -> str:
+    """One-line status message of a damped-Newton solve (line, point, transient).
+
+    Parameters
+    ----------
+    status : str
+        ``converged`` or the failure status.
+    iterations : int
+        Newton iterations (every linear solve).
+    residual, tol : float
+        Final max|F| and the tolerance (scaled, dimensionless).
+    prefix : str
+        Text before the message (e.g. ``"steady elastic: "``).
+    detail : str
+        Appended after the iteration count of a converged solve (grids, continuation).
+    cap : int, optional
+        Iteration cap per attempt, quoted in a failure message.
+    """
+    if status == "converged":
+        return (f"{prefix}converged in {iterations} Newton iterations{detail}; residual "
+                f"{residual:.2e} <= tol {tol:.1e}")
+    limit = f" (max_iterations={cap} per attempt)" if cap is not None else ""
+    return (f"{prefix}{status}: no converged solution after {iterations} Newton "
+            f"iterations{limit}; residual {residual:.2e} > tol {tol:.1e}. Fields hold the "
+            "last admissible iterate.")

@@ -25,7 +25,7 @@ import scipy.sparse.linalg as spla
 
 from .errors import SceneError
 from .line import LineDiscretisation, LineProblem
-from .newton import continuation, damped_newton
+from .newton import continuation, damped_newton, outcome_message
 from .result import Result
 from .reynolds import FluxModel, UpwindFluxModel
 from .scene import Scene
@@ -430,15 +430,10 @@ def _solve_line_newton(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
     n_cont = sum(1 for s in steps if s[0] < 1.0)
-    if status == "converged":
-        what = "alpha" if scene.lubricant.effective_piezo > 0 else "speed"
-        cont_note = f", continuation in {what} ({n_cont} steps)" if n_cont else ""
-        msg = (f"converged in {iterations} Newton iterations (grids {levels}{cont_note}); "
-               f"residual {resid:.2e} <= tol {sol.tolerance:.1e}")
-    else:
-        msg = (f"{status}: no converged solution after {iterations} Newton iterations "
-               f"(max_iterations={sol.max_iterations} per attempt); residual {resid:.2e} > "
-               f"tol {sol.tolerance:.1e}. Fields hold the last admissible iterate.")
+    what = "alpha" if scene.lubricant.effective_piezo > 0 else "speed"
+    cont_note = f", continuation in {what} ({n_cont} steps)" if n_cont else ""
+    msg = outcome_message(status, iterations, resid, sol.tolerance,
+                          detail=f" (grids {levels}{cont_note})", cap=sol.max_iterations)
     if scene.model.cavitation == "reynolds":
         p = np.maximum(p, 0.0)  # the FB solution is >= 0 up to the tolerance
     return _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,

@@ -71,7 +71,7 @@ import scipy.sparse as sp
 
 from .errors import SceneError
 from .line import fischer_burmeister
-from .newton import continuation, damped_newton
+from .newton import continuation, damped_newton, outcome_message
 from .point import (PointGrid, PointProblem, PointSetup, SqueezeSeries, _boundary_values,
                     _finish, _flux, reduced_pressure_solve)
 from .result import Result
@@ -421,14 +421,8 @@ def _result(scene, setup: PointSetup, problem: TransientPointProblem, z: np.ndar
     resid = float(np.max(np.abs(problem.residual(z))))
     tol = scene.solver.tolerance
     n_cont = len([s for s in steps if s[0] < 1.0])
-    if status == "converged":
-        note = f", continuation in compliance ({n_cont} steps)" if n_cont else ""
-        msg = (f"{what}: converged in {iterations} Newton iterations{note}; residual "
-               f"{resid:.2e} <= tol {tol:.1e}")
-    else:
-        msg = (f"{what}: {status}, no converged solution after {iterations} Newton "
-               f"iterations; residual {resid:.2e} > tol {tol:.1e}. Fields hold the last "
-               f"admissible iterate.")
+    note = f", continuation in compliance ({n_cont} steps)" if n_cont else ""
+    msg = outcome_message(status, iterations, resid, tol, prefix=f"{what}: ", detail=note)
     if scene.model.cavitation == "reynolds":
         p = np.maximum(p, 0.0)
     sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(h0)))
