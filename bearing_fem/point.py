@@ -676,15 +676,14 @@ class PointProblem(ScaledResidual):
             fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
                 pq, h, gp, gh, ops.element_size, self._grad_reduced(p))
             zero = np.zeros_like(pq)
-            a_q = asm.flux_jacobian_sum([(d, zero, (dgq[0][d], dgq[1][d])) for d in range(2)])
-            a_q.data *= self.flux.fluidity(p)[a_q.indices]  # d grad q / d p_j = q'(p_j)
+            fluidity = self.flux.fluidity(p)  # d grad q_h / d p_j = q'(p_j) grad phi_j
+            extra = [(d, zero, (dgq[0][d], dgq[1][d]), fluidity) for d in range(2)]
         else:
             fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh,
                                                                 ops.element_size)
-            a_q = None
-        a_p = asm.flux_jacobian_sum([(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)])
-        if a_q is not None:
-            a_p.data += a_q.data  # same pattern
+            extra = []
+        a_p = asm.flux_jacobian_sum([(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)]
+                                    + extra)
         a_h = asm.flux_jacobian_sum([(d, dh[d], (dgh[0][d], dgh[1][d])) for d in range(2)])
         res = ops.weak_divergence(*fl)
         drdh0 = ops.grad[0].T @ (ops.weights * dh[0]) + ops.grad[1].T @ (ops.weights * dh[1])
@@ -876,7 +875,9 @@ class UpwindFluxModel(FluxModel):
         """Flux at the quadrature points [m^2/s]; with ``gq`` (gradient of the
         interpolated nodal reduced pressure [Pa/m]) the Poiseuille term is
         rho h^3/(12 eta0) grad q instead of eps grad p."""
-        rho, eps, drho, c = self._coefficients(p, h, dx)
+        return self._assemble_flux(*self._coefficients(p, h, dx), h, gp, gh, gq)
+
+    def _assemble_flux(self, rho, eps, drho, c, h, gp, gh, gq):
         if gq is None:
             out = [eps * g for g in gp]
         else:
@@ -890,7 +891,8 @@ class UpwindFluxModel(FluxModel):
         """Flux with the reduced-pressure Poiseuille term and its derivatives: as
         :meth:`flux_and_derivatives`, plus dF/d(grad q) (list over gradient components
         of tuples over flux components) as a sixth item."""
-        base = self.flux(p, h, gp, gh, dx, gq)
+        rho, eps, drho, c = self._coefficients(p, h, dx)
+        base = self._assemble_flux(rho, eps, drho, c, h, gp, gh, gq)
         steps = []
         for which in ("p", "h"):
             v = p if which == "p" else h
@@ -899,7 +901,6 @@ class UpwindFluxModel(FluxModel):
             args = (p + 1j * step, h) if which == "p" else (p, h + 1j * step)
             out = self.flux(*args, gp, gh, dx, gq)
             steps.append(tuple(np.imag(f) / step for f in out))
-        rho, eps, drho, c = self._coefficients(p, h, dx)
         k = rho * (h * h * h) / (12.0 * self.viscosity0)
         dim = len(gp)
         zero = np.zeros_like(np.real(base[0]))
