@@ -18,7 +18,7 @@ for every test function phi vanishing on the boundary,
 
     R(phi) = int F . grad phi + int rho (dh0/dt) phi = 0,   F = eps grad p - u_m rho h e_x
 
-(+ SUPG in F for elastic scenes, :mod:`bearing_fem.reynolds`).
+(+ an upwinded wedge term in F for elastic scenes, :class:`UpwindFluxModel`).
 
 Two paths (a scene pays only for what it needs):
 
@@ -35,8 +35,11 @@ Two paths (a scene pays only for what it needs):
   Jacobian dR/dp = A_p + A_h C couples the sparse Reynolds blocks with the dense
   half-space compliance C (FFT apply); each Newton step is solved by GMRES with the
   matrix-free Jacobian, preconditioned by a sparse LU of A_p + A_h C_near
-  (C truncated to a near-field stencil). Grid sequencing (coarse solve, bilinear
-  interpolation, few fine steps) and continuation in alpha as :mod:`bearing_fem.solver`.
+  (C truncated to a near-field stencil; nested-dissection order), to an inexact-Newton
+  forcing tolerance. Elastic scenes with Barus viscosity take the Poiseuille term from
+  the interpolated nodal reduced pressure (``REDUCED_POISEUILLE``). Grid sequencing
+  (coarse solve, bilinear interpolation, few fine steps) and continuation in alpha as
+  :mod:`bearing_fem.solver`, warm-started from the interpolated solution on finer grids.
 """
 from __future__ import annotations
 
@@ -108,7 +111,8 @@ TRANSFER_DIRECT_ITERATIONS = 20
 WARM_START_ALPHA = 0.8
 #: Newton tolerance of the coarser levels of the grid sequence (the finest level uses
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
-#: after interpolation is 1.3e-2 / 4.5e-3 whether the coarser level stopped at 1e-5 or 1e-8.
+#: after interpolation is 1.3e-2 / 5.1e-3 when the coarser level stops at 1e-5 and
+#: 1.3e-2 / 4.5e-3 when it stops at 1e-8.
 COARSE_TOLERANCE = 1e-5
 #: GMRES relative tolerance (floor) and iteration cap of the elastic Newton steps.
 GMRES_RTOL = 1e-9
@@ -453,6 +457,13 @@ def nested_dissection(nx: int, ny: int, leaf: int = ND_LEAF_NODES) -> np.ndarray
     for the 9-point stencil of bilinear quads); both halves are ordered first, the
     separator last. Blocks of at most ``leaf`` nodes per side keep their natural order.
 
+    Parameters
+    ----------
+    nx, ny : int
+        Nodes along x and y [-].
+    leaf : int
+        Largest block side [nodes] that is not split further.
+
     Returns
     -------
     perm : ndarray of int, shape (nx * ny,)
@@ -521,7 +532,7 @@ class _FreePattern:
         self._diag = diag_entries[np.argsort(self._row[diag_entries])]
         self.size = free.size
 
-    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray):
+    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray) -> spla.SuperLU:
         """splu of diag(scale) M[free, free] + diag(diag) in the permuted order.
 
         ``scale`` and ``diag`` are free-node vectors in the original (free) order.
