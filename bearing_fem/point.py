@@ -93,9 +93,11 @@ UPWIND_COMPLIANCE_FACTOR = 1.0
 REDUCED_POISEUILLE = True
 #: Initial Newton regularisation sigma (``damped_newton(initial_shift=...)``) of elastic
 #: solves, from the Hertzian start of the coarsest grid and from a solution interpolated
-#: to a finer grid. Measured (M, L) = (100, 20): with 0 the direct attempt stalled on
-#: 65^2 (30 iterations, then 38 of alpha continuation) and again on 129^2 from the 65^2
-#: solution (30 + 59); with 1e-2 it converged directly in 19 and 16. Easy cases: +-1.
+#: to a finer grid. Measured (M, L) = (100, 20) with the pointwise Poiseuille term: with
+#: 0 the direct attempt stalled on 65^2 (30 iterations, then 38 of alpha continuation)
+#: and again on 129^2 from the 65^2 solution (30 + 59); with 1e-2 it converged directly
+#: in 19 and 16. Easy cases: +-1. With REDUCED_POISEUILLE it makes no difference on
+#: 257^2 at (100, 10), (20, 20), (100, 20) (+-2 iterations).
 START_SHIFT = 1e-2
 TRANSFER_SHIFT = 1e-2
 #: Finer levels of the grid sequence: the direct Newton attempt from the interpolated
