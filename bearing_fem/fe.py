@@ -125,6 +125,7 @@ class ElementAssembler:
         self._grad = tuple(g.data.reshape(nel, nq, nl) for g in ops.grad)
         self._weights = ops.weights.reshape(nel, nq)
         dofs = cols[:, 0, :]                                         # (nel, nl)
+        self._dofs = dofs
         rows = np.repeat(dofs[:, :, None], nl, axis=2).ravel()      # K_e[i, j] -> (dof_i, dof_j)
         colj = np.repeat(dofs[:, None, :], nl, axis=1).ravel()
         key = rows.astype(np.int64) * ndof + colj
@@ -146,10 +147,12 @@ class ElementAssembler:
 
         Parameters
         ----------
-        terms : iterable of (d, a, b)
+        terms : iterable of (d, a, b) or (d, a, b, s)
             d : int, derivative direction of the test function; a : ndarray
             (n_elements * n_quad,); b : tuple of such arrays (one per dimension), the
-            coefficients of the trial function value and gradient (units of the form).
+            coefficients of the trial function value and gradient (units of the form);
+            s : optional nodal array (n_dofs,) scaling the trial functions, i.e. the
+            columns of the term (``flux_jacobian(d, a, b) @ diag(s)``).
 
         Returns
         -------
@@ -157,16 +160,20 @@ class ElementAssembler:
         """
         nel, nq, nl = self.shape
         local = np.zeros((nel, nl, nl))
-        for d, a, b in terms:
+        for term in terms:
+            d, a, b = term[:3]
+            scale = term[3] if len(term) > 3 else None
             t = None
             for phi, c in zip((self._value,) + self._grad, (a,) + tuple(b)):
                 if not np.any(c):  # structurally zero coefficient (common): skip
                     continue
-                term = phi * np.reshape(c, (nel, nq, 1))
-                t = term if t is None else t + term
+                part = phi * np.reshape(c, (nel, nq, 1))
+                t = part if t is None else t + part
             if t is None:
                 continue
             t *= self._weights[:, :, None]
+            if scale is not None:
+                t *= np.asarray(scale)[self._dofs][:, None, :]
             local += np.matmul(self._grad[d].transpose(0, 2, 1), t)
         data = np.bincount(self._pos.ravel(), weights=local.ravel(), minlength=self.nnz)
         return self.matrix(data)

@@ -18,7 +18,7 @@ for every test function phi vanishing on the boundary,
 
     R(phi) = int F . grad phi + int rho (dh0/dt) phi = 0,   F = eps grad p - u_m rho h e_x
 
-(+ SUPG in F for elastic scenes, :mod:`bearing_fem.reynolds`).
+(+ an upwinded wedge term in F for elastic scenes, :class:`UpwindFluxModel`).
 
 Two paths (a scene pays only for what it needs):
 
@@ -35,8 +35,11 @@ Two paths (a scene pays only for what it needs):
   Jacobian dR/dp = A_p + A_h C couples the sparse Reynolds blocks with the dense
   half-space compliance C (FFT apply); each Newton step is solved by GMRES with the
   matrix-free Jacobian, preconditioned by a sparse LU of A_p + A_h C_near
-  (C truncated to a near-field stencil). Grid sequencing (coarse solve, bilinear
-  interpolation, few fine steps) and continuation in alpha as :mod:`bearing_fem.solver`.
+  (C truncated to a near-field stencil; nested-dissection order), to an inexact-Newton
+  forcing tolerance. Elastic scenes with Barus viscosity take the Poiseuille term from
+  the interpolated nodal reduced pressure (``REDUCED_POISEUILLE``). Grid sequencing
+  (coarse solve, bilinear interpolation, few fine steps) and continuation in alpha as
+  :mod:`bearing_fem.solver`, warm-started from the interpolated solution on finer grids.
 """
 from __future__ import annotations
 
@@ -90,9 +93,11 @@ UPWIND_COMPLIANCE_FACTOR = 1.0
 REDUCED_POISEUILLE = True
 #: Initial Newton regularisation sigma (``damped_newton(initial_shift=...)``) of elastic
 #: solves, from the Hertzian start of the coarsest grid and from a solution interpolated
-#: to a finer grid. Measured (M, L) = (100, 20): with 0 the direct attempt stalled on
-#: 65^2 (30 iterations, then 38 of alpha continuation) and again on 129^2 from the 65^2
-#: solution (30 + 59); with 1e-2 it converged directly in 19 and 16. Easy cases: +-1.
+#: to a finer grid. Measured (M, L) = (100, 20) with the pointwise Poiseuille term: with
+#: 0 the direct attempt stalled on 65^2 (30 iterations, then 38 of alpha continuation)
+#: and again on 129^2 from the 65^2 solution (30 + 59); with 1e-2 it converged directly
+#: in 19 and 16. Easy cases: +-1. With REDUCED_POISEUILLE it makes no difference on
+#: 257^2 at (100, 10), (20, 20), (100, 20) (+-2 iterations).
 START_SHIFT = 1e-2
 TRANSFER_SHIFT = 1e-2
 #: Finer levels of the grid sequence: the direct Newton attempt from the interpolated
@@ -108,7 +113,8 @@ TRANSFER_DIRECT_ITERATIONS = 20
 WARM_START_ALPHA = 0.8
 #: Newton tolerance of the coarser levels of the grid sequence (the finest level uses
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
-#: after interpolation is 1.3e-2 / 4.5e-3 whether the coarser level stopped at 1e-5 or 1e-8.
+#: after interpolation is 1.3e-2 / 5.1e-3 when the coarser level stops at 1e-5 and
+#: 1.3e-2 / 4.5e-3 when it stops at 1e-8.
 COARSE_TOLERANCE = 1e-5
 #: GMRES relative tolerance (floor) and iteration cap of the elastic Newton steps.
 GMRES_RTOL = 1e-9
@@ -453,6 +459,13 @@ def nested_dissection(nx: int, ny: int, leaf: int = ND_LEAF_NODES) -> np.ndarray
     for the 9-point stencil of bilinear quads); both halves are ordered first, the
     separator last. Blocks of at most ``leaf`` nodes per side keep their natural order.
 
+    Parameters
+    ----------
+    nx, ny : int
+        Nodes along x and y [-].
+    leaf : int
+        Largest block side [nodes] that is not split further.
+
     Returns
     -------
     perm : ndarray of int, shape (nx * ny,)
@@ -521,7 +534,7 @@ class _FreePattern:
         self._diag = diag_entries[np.argsort(self._row[diag_entries])]
         self.size = free.size
 
-    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray):
+    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray) -> spla.SuperLU:
         """splu of diag(scale) M[free, free] + diag(diag) in the permuted order.
 
         ``scale`` and ``diag`` are free-node vectors in the original (free) order.
@@ -676,15 +689,14 @@ class PointProblem(ScaledResidual):
             fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
                 pq, h, gp, gh, ops.element_size, self._grad_reduced(p))
             zero = np.zeros_like(pq)
-            a_q = asm.flux_jacobian_sum([(d, zero, (dgq[0][d], dgq[1][d])) for d in range(2)])
-            a_q.data *= self.flux.fluidity(p)[a_q.indices]  # d grad q / d p_j = q'(p_j)
+            fluidity = self.flux.fluidity(p)  # d grad q_h / d p_j = q'(p_j) grad phi_j
+            extra = [(d, zero, (dgq[0][d], dgq[1][d]), fluidity) for d in range(2)]
         else:
             fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh,
                                                                 ops.element_size)
-            a_q = None
-        a_p = asm.flux_jacobian_sum([(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)])
-        if a_q is not None:
-            a_p.data += a_q.data  # same pattern
+            extra = []
+        a_p = asm.flux_jacobian_sum([(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)]
+                                    + extra)
         a_h = asm.flux_jacobian_sum([(d, dh[d], (dgh[0][d], dgh[1][d])) for d in range(2)])
         res = ops.weak_divergence(*fl)
         drdh0 = ops.grad[0].T @ (ops.weights * dh[0]) + ops.grad[1].T @ (ops.weights * dh[1])

@@ -210,7 +210,9 @@ class UpwindFluxModel(FluxModel):
         """Flux at the quadrature points [m^2/s]; with ``gq`` (gradient of the
         interpolated nodal reduced pressure [Pa/m]) the Poiseuille term is
         rho h^3/(12 eta0) grad q instead of eps grad p."""
-        rho, eps, drho, c = self._coefficients(p, h, dx)
+        return self._assemble_flux(*self._coefficients(p, h, dx), h, gp, gh, gq)
+
+    def _assemble_flux(self, rho, eps, drho, c, h, gp, gh, gq):
         if gq is None:
             out = [eps * g for g in gp]
         else:
@@ -224,7 +226,8 @@ class UpwindFluxModel(FluxModel):
         """Flux with the reduced-pressure Poiseuille term and its derivatives: as
         :meth:`flux_and_derivatives`, plus dF/d(grad q) (list over gradient components
         of tuples over flux components) as a sixth item."""
-        base = self.flux(p, h, gp, gh, dx, gq)
+        rho, eps, drho, c = self._coefficients(p, h, dx)
+        base = self._assemble_flux(rho, eps, drho, c, h, gp, gh, gq)
         steps = []
         for which in ("p", "h"):
             v = p if which == "p" else h
@@ -233,7 +236,6 @@ class UpwindFluxModel(FluxModel):
             args = (p + 1j * step, h) if which == "p" else (p, h + 1j * step)
             out = self.flux(*args, gp, gh, dx, gq)
             steps.append(tuple(np.imag(f) / step for f in out))
-        rho, eps, drho, c = self._coefficients(p, h, dx)
         k = rho * (h * h * h) / (12.0 * self.viscosity0)
         dim = len(gp)
         zero = np.zeros_like(np.real(base[0]))

@@ -285,6 +285,12 @@ def test_element_assembler_matches_sparse_products():
     np.testing.assert_allclose(ops.assembler.pattern_data(sp.csr_matrix(ref)), fast.data,
                                rtol=0, atol=1e-13 * np.abs(ref).max(),
                                err_msg="pattern_data recovers the values on the pattern")
+    s = rng.standard_normal(grid.size)
+    scaled = ops.assembler.flux_jacobian_sum([terms[0] + (s,), terms[1]]).toarray()
+    ref_scaled = (ops.flux_jacobian(*terms[0]) @ sp.diags(s) + ops.flux_jacobian(*terms[1]))
+    np.testing.assert_allclose(scaled, ref_scaled.toarray(), rtol=0,
+                               atol=1e-13 * np.abs(ref).max() * np.abs(s).max(),
+                               err_msg="optional column scaling of one term")
     wider = np.zeros_like(ref)
     wider[0, -1] = 1.0  # nodes that share no element
     assert ops.assembler.pattern_data(sp.csr_matrix(wider)) is None
