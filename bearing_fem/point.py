@@ -57,7 +57,7 @@ from skfem import CellBasis, ElementQuad1, MeshQuad
 from .errors import SceneError
 from .fe import QuadratureOperators, quadrature_operators
 from .line import ScaledResidual, fischer_burmeister
-from .newton import continuation, damped_newton
+from .newton import continuation, damped_newton, outcome_message
 from .result import Result
 from .reynolds import FluxModel, UpwindFluxModel
 
@@ -1061,15 +1061,9 @@ def _solve_newton(scene, setup: PointSetup, p_bc_fn, squeeze: float, t0: float,
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
     n_cont = sum(1 for s in steps if s[0] < 1.0)
-    if status == "converged":
-        note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
-        msg = (f"converged in {iterations} Newton iterations (grids "
-               f"{[f'{a}x{b}' for a, b in levels]}{note}); residual {resid:.2e} <= tol "
-               f"{sol.tolerance:.1e}")
-    else:
-        msg = (f"{status}: no converged solution after {iterations} Newton iterations "
-               f"(max_iterations={maxit} per attempt); residual {resid:.2e} > tol "
-               f"{sol.tolerance:.1e}. Fields hold the last admissible iterate.")
+    note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
+    msg = outcome_message(status, iterations, resid, sol.tolerance,
+                          detail=f" (grids {[f'{a}x{b}' for a, b in levels]}{note})", cap=maxit)
     if scene.model.cavitation == "reynolds":
         p = np.maximum(p, 0.0)
     res = _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,
