@@ -31,6 +31,7 @@ import scipy.sparse.linalg as spla
 from skfem import CellBasis, ElementLineP1, MeshLine
 
 from .fe import QuadratureOperators, quadrature_operators
+from .newton import gmres_right
 from .reynolds import FluxModel
 
 
@@ -244,7 +245,9 @@ class LineProblem(ScaledResidual):
 
     def jacobian(self, z: np.ndarray):
         """Scaled Jacobian dF/dz (dense ndarray for the half-space, sparse otherwise)."""
-        a_p, a_h, scale, da, dr_dh0, load_row = self._blocks(z)
+        return self._jacobian_from_blocks(*self._blocks(z))
+
+    def _jacobian_from_blocks(self, a_p, a_h, scale, da, dr_dh0, load_row):
         inner = slice(1, a_p.shape[1] - 1)
         if self._cmat is None:
             j = a_p[:, inner]
@@ -284,11 +287,12 @@ class LineProblem(ScaledResidual):
         """
         f = self.residual(z)
         npf = self.free.size
+        blocks = self._blocks(z)
         if self._cmat is not None and not sp.issparse(self._cmat) and self._lu is not None:
-            dz = self._reuse_step(z, f, shift)
+            dz = self._reuse_step(blocks, f, shift)
             if dz is not None:
                 return dz
-        j = self.jacobian(z)
+        j = self._jacobian_from_blocks(*blocks)
         if sp.issparse(j):
             if shift:
                 d = np.zeros(j.shape[0])
@@ -302,10 +306,8 @@ class LineProblem(ScaledResidual):
         self.factorisations += 1
         return sla.lu_solve(lu, -f, check_finite=False)
 
-    def _reuse_step(self, z: np.ndarray, f: np.ndarray, shift: float) -> np.ndarray | None:
-        from .point import gmres_right
-
-        a_p, a_h, scale, da, dr_dh0, load_row = self._blocks(z)
+    def _reuse_step(self, blocks: tuple, f: np.ndarray, shift: float) -> np.ndarray | None:
+        a_p, a_h, scale, da, dr_dh0, load_row = blocks
         n = self.disc.x.size
         npf = self.free.size
         diag = (da if da is not None else 0.0) + shift

@@ -57,7 +57,7 @@ from skfem import CellBasis, ElementQuad1, MeshQuad
 from .errors import SceneError
 from .fe import QuadratureOperators, quadrature_operators
 from .line import ScaledResidual, fischer_burmeister
-from .newton import continuation, damped_newton, outcome_message
+from .newton import continuation, damped_newton, gmres_right, outcome_message
 from .result import Result
 from .reynolds import FluxModel, UpwindFluxModel
 
@@ -838,55 +838,6 @@ class PointProblem(ScaledResidual):
         if not np.all(np.isfinite(dz)):
             raise RuntimeError("gmres produced non-finite values")
         return dz
-
-
-def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
-                precond: Callable[[np.ndarray], np.ndarray], b: np.ndarray, *,
-                rtol: float = 1e-9, max_iterations: int = 150
-                ) -> tuple[np.ndarray, int, float]:
-    """Right-preconditioned GMRES (no restart) from x0 = M^-1 b.
-
-    Arnoldi with classical Gram-Schmidt applied twice (numpy matrix products), the
-    small least-squares problem solved each iteration. Stops when the true-residual
-    estimate |b - A x| <= rtol |b| or after ``max_iterations``.
-
-    Returns
-    -------
-    x : ndarray; iterations : int; relative residual estimate : float
-    """
-    bnorm = float(np.linalg.norm(b))
-    if bnorm == 0.0:
-        return np.zeros_like(b), 0, 0.0
-    x0 = precond(b)
-    r0 = b - matvec(x0)
-    beta = float(np.linalg.norm(r0))
-    if beta <= rtol * bnorm:
-        return x0, 0, beta / bnorm
-    m = max_iterations
-    V = np.zeros((m + 1, b.size))
-    Z = np.zeros((m, b.size))
-    H = np.zeros((m + 1, m))
-    V[0] = r0 / beta
-    e1 = np.zeros(m + 1)
-    e1[0] = beta
-    y = np.zeros(0)
-    rel = 1.0
-    k = 0
-    for k in range(m):
-        Z[k] = precond(V[k])
-        w = matvec(Z[k])
-        for _ in range(2):  # CGS2
-            h = V[:k + 1] @ w
-            w = w - V[:k + 1].T @ h
-            H[:k + 1, k] += h
-        H[k + 1, k] = np.linalg.norm(w)
-        if H[k + 1, k] > 0.0:
-            V[k + 1] = w / H[k + 1, k]
-        y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
-        rel = float(np.linalg.norm(e1[:k + 2] - H[:k + 2, :k + 1] @ y)) / bnorm
-        if rel <= rtol or H[k + 1, k] == 0.0:
-            break
-    return x0 + Z[:k + 1].T @ y, k + 1, rel
 
 
 def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:

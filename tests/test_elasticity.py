@@ -7,10 +7,8 @@ Hertz error.
 """
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
-import pathlib
 
 import numpy as np
 import pytest
@@ -420,11 +418,8 @@ def test_bad_input(build, match):
 # Study (coarse run)
 # ----------------------------------------------------------------------------------------
 
-def test_hertz_kernels_study_coarse(tmp_path):
-    path = pathlib.Path(__file__).resolve().parents[1] / "studies" / "hertz_kernels.py"
-    spec = importlib.util.spec_from_file_location("hertz_kernels_study", path)
-    study = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(study)
+def test_hertz_kernels_study_coarse(tmp_path, load_study):
+    study = load_study("hertz_kernels")
     res = study.main(tmp_path, n=2, repeats=1)
     saved = json.loads((tmp_path / "hertz_kernels.json").read_text())
     assert [r["nodes"] for r in saved["line"]] == [501, 1001]

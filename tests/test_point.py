@@ -235,28 +235,16 @@ def test_elastic_squeeze_thickens_film_at_fixed_load():
 
 
 @pytest.mark.slow
-def test_point_ehl_map_study(tmp_path):
-    import importlib.util
-    import pathlib
-
-    path = pathlib.Path(__file__).resolve().parents[1] / "studies" / "point_ehl_map.py"
-    spec = importlib.util.spec_from_file_location("point_ehl_map", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
+def test_point_ehl_map_study(tmp_path, load_study):
+    mod = load_study("point_ehl_map")
     out = mod.main(tmp_path, quick=False, nodes=65, plot=False)
     solved = [r for r in out["cases"] if r["status"] != "skipped"]
     assert all(r["status"] == "converged" for r in solved), [r["message"] for r in solved]
     assert out["max_abs_hc_deviation"] < 0.15, "65^2: within 15% of NVM over the map"
 
 
-def test_seed001_study_quick(tmp_path):
-    import importlib.util
-    import pathlib
-
-    path = pathlib.Path(__file__).resolve().parents[1] / "studies" / "seed001_bearing209.py"
-    spec = importlib.util.spec_from_file_location("seed001_bearing209", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
+def test_seed001_study_quick(tmp_path, load_study):
+    mod = load_study("seed001_bearing209")
     out = mod.main(tmp_path, quick=True)
     assert out["max_rel_diff_isoviscous_vs_kapitsa"] < 0.02, (
         "FE isoviscous maxima within 2% of Kapitsa (quick 81^2 graded mesh, zero far-field "

@@ -363,19 +363,9 @@ def test_temperature_outside_patch_rejected(fe_default):
 # ---------------------------------------------------------------------------- studies
 
 
-def test_studies_quick(tmp_path):
+def test_studies_quick(tmp_path, load_study):
     """Studies run, write JSON + PNG, and report numbers inside the acceptance bands."""
-    import importlib.util
-    from pathlib import Path
-
-    root = Path(__file__).resolve().parents[1] / "studies"
-
-    def load(name):
-        spec = importlib.util.spec_from_file_location(name, root / f"{name}.py")
-        mod = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mod)
-        return mod
-
+    load = load_study
     kp = load("korovchinsky_patch").main(tmp_path / "kp", n=16, quick=True)
     assert (tmp_path / "kp" / "korovchinsky_patch.json").exists()
     assert (tmp_path / "kp" / "korovchinsky_patch.png").exists()

@@ -303,14 +303,8 @@ def test_line_scene_rejected():
 
 
 @pytest.mark.slow
-def test_elastic_squeeze_study_coarse(tmp_path):
-    import importlib.util
-    import pathlib
-
-    path = pathlib.Path(__file__).resolve().parents[1] / "studies" / "point_elastic_squeeze.py"
-    spec = importlib.util.spec_from_file_location("point_elastic_squeeze", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
+def test_elastic_squeeze_study_coarse(tmp_path, load_study):
+    mod = load_study("point_elastic_squeeze")
     out = mod.main(tmp_path, nodes=25, n_steps=8, periods=2, slow=False, grid_check=False,
                    rigid_nodes=41, plot=False)
     assert out["status"] == "converged", out["message"]
