@@ -87,20 +87,60 @@ _STEP = 1e-20  # complex step
 # ----------------------------------------------------------------------------------------
 # Grid
 # ----------------------------------------------------------------------------------------
+#: Layer bands of the final grid (dimensionless z), for stiff local compliance: at the
+#: outlet from z_a - OUTLET_BAND_BEHIND - 2 % of |z_a| to z_a + w, at the inlet z_in -+ w
+#: (z_in: last node of the coarse solution with k > 1 % of k_max), w =
+#: max(OUTLET_BAND_AHEAD, OUTLET_BAND_LAYERS / C). Their spacing is a fixed ratio of the
+#: zone spacing, chosen so that the layer width 1/C gets OUTLET_LAYER_CELLS intervals on a
+#: BAND_REFERENCE_NODES-node grid (ratio between MIN_BAND_RATIO and 1; it is 1, no band,
+#: unless C is of order 20 or more). docs/kodnir.md.
+OUTLET_BAND_BEHIND = 0.1
+OUTLET_BAND_AHEAD = 0.5
+OUTLET_BAND_LAYERS = 20.0
+OUTLET_LAYER_CELLS = 10.0
+BAND_REFERENCE_NODES = 2001
+MIN_BAND_RATIO = 0.125
+
+
 def graded_grid(z_min: float, z_fine: float, z_b: float, nodes: int,
-                fine_fraction: float = 0.8) -> np.ndarray:
+                fine_fraction: float = 0.8,
+                bands: tuple[tuple[float, float], ...] = (),
+                band_ratio: float = 1.0) -> np.ndarray:
     """Node coordinates: uniform on [z_min, z_fine], geometric growth up to z_b.
 
-    ``fine_fraction`` of the intervals are uniform (spacing dz); the rest grow
+    ``fine_fraction`` of the intervals lie in [z_min, z_fine] (spacing dz); the rest grow
     geometrically from dz so that they end exactly at z_b (dimensionless z).
+
+    ``bands``: disjoint, increasing intervals (z_lo, z_hi) inside [z_min, z_fine] whose
+    spacing is ``band_ratio`` (< 1) times the spacing of the rest of the zone (used for the
+    outlet and inlet layers of stiff contacts). The ratio does not depend on ``nodes``, so
+    doubling the nodes halves every spacing (a proper grid refinement).
     """
     if not z_min < z_fine < z_b:
         raise ValueError(f"need z_min < z_fine < z_b, got {z_min}, {z_fine}, {z_b}")
     n_int = nodes - 1
     n_f = max(2, int(round(fine_fraction * n_int)))
     n_c = n_int - n_f
-    dz = (z_fine - z_min) / n_f
     fine = np.linspace(z_min, z_fine, n_f + 1)
+    cuts = [(max(lo, z_min), min(hi, z_fine)) for lo, hi in bands]
+    cuts = [(lo, hi) for lo, hi in cuts if hi > lo]
+    if cuts and band_ratio < 1.0:
+        edges, dense = [z_min], []
+        for lo, hi in cuts:
+            if lo > edges[-1]:
+                edges.append(lo)
+                dense.append(False)
+            edges.append(hi)
+            dense.append(True)
+        if edges[-1] < z_fine:
+            edges.append(z_fine)
+            dense.append(False)
+        weight = np.diff(edges) / np.where(dense, band_ratio, 1.0)
+        counts = np.maximum(1, np.round(n_f * weight / weight.sum()).astype(int))
+        counts[int(np.argmax(counts))] += n_f - counts.sum()
+        fine = np.concatenate([np.linspace(a, b, c + 1)[:-1] for a, b, c
+                               in zip(edges[:-1], edges[1:], counts)] + [[z_fine]])
+    dz = fine[-1] - fine[-2]
     length = z_b - z_fine
     if n_c <= 0:
         return np.append(fine[:-1], np.linspace(z_fine, z_b, 2))
@@ -361,10 +401,16 @@ def _parabola_extremum(z: np.ndarray, f: np.ndarray, i: int) -> tuple[float, flo
     return float(z[i] + zv), float(np.polyval(c, zv))
 
 
+#: Relative level below which a nodal k counts as zero (cavitated) in post-processing.
+PRESSURISED_FLOOR = 1e-12
+
+
 def _free_boundary(z: np.ndarray, k: np.ndarray) -> float:
     """Outlet where k drops to 0: sqrt(k) extrapolated linearly from the two first
-    pressurised nodes (k ~ (z - z_a)^2 at a Reynolds boundary)."""
-    pos = np.nonzero(k > 0.0)[0]
+    pressurised nodes (k ~ (z - z_a)^2 at a Reynolds boundary). Nodes with
+    k <= PRESSURISED_FLOOR * max k (rounding noise of the complementarity solution in the
+    cavitated zone) count as unpressurised."""
+    pos = np.nonzero(k > PRESSURISED_FLOOR * np.max(k))[0]
     if pos.size < 3:
         return math.nan
     i = pos[0]
@@ -539,10 +585,11 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
     z_b : float
         Dimensionless inlet position (> 0); k(z_b) = 0.
     nodes : int
-        Nodes of the final grid (80 % of them uniform over the contact and the outlet
-        zone [z_min, z_fine], the rest graded geometrically up to z_b). The default 2001
-        solves all 20 cases of seed 000's table; at 4001 nodes the case C = 40,
-        B alpha = 4.5 stalls (docs/kodnir.md).
+        Nodes of the final grid (80 % of them over the contact and the outlet zone
+        [z_min, z_fine], uniform except for refined outlet and inlet bands when C is
+        large, the rest graded geometrically up to z_b). The default 2001 solves all 20
+        cases of seed 000's table with z_a and k_max within 0.05 % of a 4001-node solve
+        (docs/kodnir.md).
     coarse_nodes : int
         Nodes of the first (continuation) grid.
     z_min : float or None
@@ -619,27 +666,64 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
     # final grid: uniform over [z_a - margin, z_fine], graded to z_b
     margin = 0.25 + 0.15 * abs(za)
     zf = min(0.5 * z_b, abs(za) + 1.5 + 0.25 * abs(za))
-    z_final = graded_grid(za - margin, zf, z_b, nodes)
-    grid_f = _Grid.from_nodes(z_final)
-    prob = KodnirProblem(grid_f, C, b_alpha)
-    uf = _transfer(u, coarse, prob)
-    out: NewtonOutcome = damped_newton(prob, uf, tol=tol, max_iterations=20, memory=1)
-    total += out.iterations
-    record.append((C, b_alpha, out.status + " (final grid)", out.iterations))
-    ufin = out.z if out.converged else None
-    if ufin is None:
-        ufin, it, msg = _march(grid_f, _initial_guess(prob), path, record, tol,
-                               max_iterations)
+    bands: tuple[tuple[float, float], ...] = ()
+    ratio = 1.0
+    if C > 0.0:
+        # stiff local compliance: the film changes over a length of about eps/C at the
+        # outlet and at the inlet (eps = H^3 exp(-b_alpha k) ~ 1 there); refine bands
+        # around both so that the layer gets OUTLET_LAYER_CELLS intervals at 2001 nodes
+        layer = 1.0 / C
+        width = max(OUTLET_BAND_AHEAD, OUTLET_BAND_LAYERS * layer)
+        kc = coarse.unpack(u)[0]
+        z_in = float(grid.z[np.nonzero(kc > 0.01 * kc.max())[0][-1]])
+        bands = ((za - OUTLET_BAND_BEHIND - 0.02 * abs(za), za + width),
+                 (z_in - width, z_in + width))
+        if bands[1][0] <= bands[0][1]:
+            bands = ((bands[0][0], bands[1][1]),)
+        dz_ref = (zf - za + margin) / (0.8 * (BAND_REFERENCE_NODES - 1))
+        ratio = min(1.0, max(MIN_BAND_RATIO, layer / OUTLET_LAYER_CELLS / dz_ref))
+
+    def refine(n: int) -> tuple[KodnirProblem, np.ndarray | None, np.ndarray, str]:
+        """Solve on the n-node final-type grid: Newton from the coarse solution; if that
+        fails, Newton from the solution on the grid with half as many intervals (grid
+        sequencing, recursively); if that fails too, march along ``path`` on this grid.
+        Returns (problem, solution or None, last iterate, message)."""
+        nonlocal total
+        prob_n = KodnirProblem(_Grid.from_nodes(graded_grid(
+            za - margin, zf, z_b, n, bands=bands, band_ratio=ratio)), C, b_alpha)
+        out_n = damped_newton(prob_n, _transfer(u, coarse, prob_n), tol=tol,
+                              max_iterations=max_iterations, memory=1)
+        total += out_n.iterations
+        record.append((C, b_alpha, f"{out_n.status} ({n}-node grid, |F| = "
+                       f"{out_n.residual_norm:.1e})", out_n.iterations))
+        if out_n.converged:
+            return prob_n, out_n.z, out_n.z, "ok"
+        half = (n - 1) // 2 + 1
+        if half >= 2 * coarse_nodes:
+            prob_h, u_h, _, _ = refine(half)
+            if u_h is not None:
+                out_n = damped_newton(prob_n, _transfer(u_h, prob_h, prob_n), tol=tol,
+                                      max_iterations=max_iterations, memory=1)
+                total += out_n.iterations
+                record.append((C, b_alpha, f"{out_n.status} ({n}-node grid from {half}, "
+                               f"|F| = {out_n.residual_norm:.1e})", out_n.iterations))
+                if out_n.converged:
+                    return prob_n, out_n.z, out_n.z, "ok"
+        u_n, it, msg_n = _march(prob_n.grid, _initial_guess(prob_n), path, record, tol,
+                                max_iterations)
         total += it
+        return prob_n, u_n, out_n.z, msg_n
+
+    prob, ufin, last, msg = refine(nodes)
     res.iterations = total
     if ufin is None:
         res.message = f"final grid: {msg}"
-        _finish(res, prob, out.z)   # last finite iterate, for diagnosis
+        _finish(res, prob, last)   # last finite iterate, for diagnosis
         res.success = False
         return res
     _finish(res, prob, ufin)
     k = res.k
-    pos = np.nonzero(k > 0)[0]
+    pos = np.nonzero(k > PRESSURISED_FLOOR * np.max(k))[0]
     if pos.size == 0 or pos[0] < 2:
         res.status = "outlet_outside_domain"
         res.message = "pressurised zone reaches the left end of the grid"

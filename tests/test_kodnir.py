@@ -188,3 +188,24 @@ def test_scales_roundtrip():
 def test_bad_arguments(kwargs, name):
     with pytest.raises(ValueError, match=name):
         K.solve(**kwargs)
+
+
+def test_graded_grid_bands_refine_with_nodes():
+    """Layer bands keep their spacing ratio to the zone, so doubling the nodes halves
+    every spacing (a proper refinement), and the node count and ends are exact."""
+    bands, ratio = ((-6.3, -5.5), (5.5, 6.8)), 0.25
+    spacing = {}
+    for n in (1001, 2001, 4001):
+        z = K.graded_grid(-7.36, 9.23, 20.0, n, bands=bands, band_ratio=ratio)
+        d = np.diff(z)
+        assert z.size == n and z[0] == -7.36 and z[-1] == 20.0 and np.all(d > 0)
+        spacing[n] = (d[np.searchsorted(z, -6.0)], d[np.searchsorted(z, 6.0)],
+                      d[np.searchsorted(z, 0.0)])
+        np.testing.assert_allclose(spacing[n][:2], ratio * spacing[n][2], rtol=0.02,
+                                   err_msg="band spacing = ratio x zone spacing, up to "
+                                   "rounding the interval counts")
+    np.testing.assert_allclose(np.array(spacing[4001]) / spacing[2001], 0.5, rtol=0.01,
+                               err_msg="doubling the nodes halves the spacings")
+    plain = K.graded_grid(-7.36, 9.23, 20.0, 2001)
+    np.testing.assert_allclose(np.diff(plain[:1601]), (9.23 + 7.36) / 1600, rtol=1e-9,
+                               err_msg="no bands: uniform zone")
