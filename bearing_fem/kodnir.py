@@ -691,24 +691,24 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
         nonlocal total
         prob_n = KodnirProblem(_Grid.from_nodes(graded_grid(
             za - margin, zf, z_b, n, bands=bands, band_ratio=ratio)), C, b_alpha)
-        out_n = damped_newton(prob_n, _transfer(u, coarse, prob_n), tol=tol,
-                              max_iterations=max_iterations, memory=1)
-        total += out_n.iterations
-        record.append((C, b_alpha, f"{out_n.status} ({n}-node grid, |F| = "
-                       f"{out_n.residual_norm:.1e})", out_n.iterations))
-        if out_n.converged:
-            return prob_n, out_n.z, out_n.z, "ok"
+
+        def newton_from(u0: np.ndarray, label: str) -> NewtonOutcome:
+            nonlocal total
+            o = damped_newton(prob_n, u0, tol=tol, max_iterations=max_iterations, memory=1)
+            total += o.iterations
+            record.append((C, b_alpha, f"{o.status} ({label}, |F| = "
+                           f"{o.residual_norm:.1e})", o.iterations))
+            return o
+
+        out_n = newton_from(_transfer(u, coarse, prob_n), f"{n}-node grid")
         half = (n - 1) // 2 + 1
-        if half >= 2 * coarse_nodes:
+        if not out_n.converged and half >= 2 * coarse_nodes:
             prob_h, u_h, _, _ = refine(half)
             if u_h is not None:
-                out_n = damped_newton(prob_n, _transfer(u_h, prob_h, prob_n), tol=tol,
-                                      max_iterations=max_iterations, memory=1)
-                total += out_n.iterations
-                record.append((C, b_alpha, f"{out_n.status} ({n}-node grid from {half}, "
-                               f"|F| = {out_n.residual_norm:.1e})", out_n.iterations))
-                if out_n.converged:
-                    return prob_n, out_n.z, out_n.z, "ok"
+                out_n = newton_from(_transfer(u_h, prob_h, prob_n),
+                                    f"{n}-node grid from {half}")
+        if out_n.converged:
+            return prob_n, out_n.z, out_n.z, "ok"
         u_n, it, msg_n = _march(prob_n.grid, _initial_guess(prob_n), path, record, tol,
                                 max_iterations)
         total += it
