@@ -123,6 +123,9 @@ def _assess(case: dict) -> dict:
                                  if len(runs) > 1 else math.nan)
     # how far the two fits disagree with each other (formula against formula)
     case["nvm_vs_hd"] = fine["h_central_nvm_m"] / fine["h_central_hd_m"] - 1.0
+    # side-lobe constriction: FE h_min/h_c against the ratio of Hamrock-Dowson's two fits
+    case["h_min_over_h_c"] = fine["h_min_m"] / fine["h_central_m"]
+    case["h_min_over_h_c_hd"] = fine["h_min_hd_m"] / fine["h_central_hd_m"]
     missed = []
     if case["status"] != "converged":
         missed.append("not converged")
@@ -144,20 +147,20 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
     head = (f"{'M':>5} {'L':>4} {'aph':>5} " + " ".join(
         f"{f'{n}^2: its':>10} {'s':>6} {'h_c/NVM':>7}" for n in grids)
         + f" {'grid %':>7} {'NVM %':>6} {'HD hc %':>7} {'HD hmin %':>9} {'hmin grid %':>11}"
-        f" {'NVM/HD %':>8}  status")
+        f" {'NVM/HD %':>8} {'hmin/hc':>7} {'HD':>5}  status")
     lines = [head]
     md = ["| M | L | alpha p_h | " + " | ".join(
         f"{n}^2 h_c [nm] | {n}^2 its | {n}^2 s" for n in grids)
         + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | h_min grid change %"
-        " | NVM vs HD h_c % | status |",
-        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|---|---|"]
+        " | NVM vs HD h_c % | h_min/h_c | HD h_min/h_c | status |",
+        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|---|---|---|---|"]
     for c in cases:
         if c["status"] == "skipped":
             lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f}  skipped "
                          f"(alpha p_h > {MAX_ALPHA_PH:g})")
             md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | "
                       + " | ".join("-" for _ in range(3 * len(grids)))
-                      + f" | - | - | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
+                      + f" | - | - | - | - | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
             continue
         verdict = "MET" if c["met"] else "NOT MET: " + ", ".join(c["missed"])
         cells = " ".join(f"{r['newton_iterations']:>10d} {r['wall_time_s']:6.1f} "
@@ -165,15 +168,15 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
         lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f} {cells} "
                      f"{100 * c['grid_change']:+7.2f} {100 * c['h_central_vs_nvm']:+6.1f} "
                      f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f} "
-                     f"{100 * c['h_min_grid_change']:+11.2f} {100 * c['nvm_vs_hd']:+8.1f}  "
-                     f"{verdict}")
+                     f"{100 * c['h_min_grid_change']:+11.2f} {100 * c['nvm_vs_hd']:+8.1f} "
+                     f"{c['h_min_over_h_c']:7.3f} {c['h_min_over_h_c_hd']:5.3f}  {verdict}")
         mcells = " | ".join(f"{1e9 * r['h_central_m']:.2f} | {r['newton_iterations']} | "
                             f"{r['wall_time_s']:.1f}" for r in c["runs"])
         md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | {mcells} | "
                   f"{100 * c['grid_change']:+.2f} | {100 * c['h_central_vs_nvm']:+.1f} | "
                   f"{100 * c['h_central_vs_hd']:+.1f} | {100 * c['h_min_vs_hd']:+.1f} | "
                   f"{100 * c['h_min_grid_change']:+.2f} | {100 * c['nvm_vs_hd']:+.1f} | "
-                  f"{verdict} |")
+                  f"{c['h_min_over_h_c']:.3f} | {c['h_min_over_h_c_hd']:.3f} | {verdict} |")
     return "\n".join(lines), "\n".join(md)
 
 
