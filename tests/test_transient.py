@@ -6,6 +6,7 @@ Grids are coarse (25^2 to 57^2) to keep the module fast; every tolerance says wh
 from __future__ import annotations
 
 import math
+import pathlib
 
 import numpy as np
 import pytest
