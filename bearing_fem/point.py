@@ -401,29 +401,11 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
     f = ops.weak_divergence(mean_speed * h, zero)
     if squeeze_velocity:
         f = f - ops.value.T @ (ops.weights * squeeze_velocity)
-    n = grid.size
+    from .solver import active_set_solve
+
     free = np.nonzero(~grid.boundary_mask())[0]
-    rhs = f - a @ np.where(grid.boundary_mask(), q_bc, 0.0)
-    q_bnd = np.where(grid.boundary_mask(), q_bc, 0.0)
-    active = np.zeros(n, dtype=bool)
-    diag = a.diagonal()
-    solves = 0
-    q = q_bnd.copy()
-    for _ in range(200):
-        inactive = free[~active[free]]
-        q = q_bnd.copy()
-        if inactive.size:
-            q[inactive] = spla.spsolve(a[inactive][:, inactive].tocsc(), rhs[inactive])
-        solves += 1
-        if cavitation != "reynolds":
-            break
-        lam = a @ q - f
-        new_active = np.zeros(n, dtype=bool)
-        new_active[free] = lam[free] / diag[free] > q[free]
-        if np.array_equal(new_active, active):
-            break
-        active = new_active
-    return q, solves, active
+    return active_set_solve(a, f, np.where(grid.boundary_mask(), q_bc, 0.0), free,
+                            cavitation)
 
 
 def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: float,

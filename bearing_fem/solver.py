@@ -204,14 +204,43 @@ def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
     h = h0 + problem.g_q
     a = ops.flux_jacobian(0, np.zeros_like(h), (h**3 / (12.0 * eta0),)).tocsr()
     f = ops.weak_divergence(mean_speed * h)
+    q, solves, _ = active_set_solve(a, f, q_bc, problem.free, cavitation)
+    return q, solves
+
+
+def active_set_solve(a: sp.spmatrix, f: np.ndarray, q_bc: np.ndarray, free: np.ndarray,
+                     cavitation: str, max_sweeps: int = 200
+                     ) -> tuple[np.ndarray, int, np.ndarray]:
+    """Linear Reynolds problem A q = f with Dirichlet data, optionally with q >= 0.
+
+    Full-Sommerfeld (``cavitation != "reynolds"``): one sparse solve on the free nodes.
+    Reynolds: primal-dual active set for q >= 0, A q - f >= 0, q (A q - f) = 0 (a node
+    is cavitated when its scaled multiplier (A q - f)_i / A_ii exceeds q_i); stops when
+    the active set repeats, after at most ``max_sweeps`` solves.
+
+    Parameters
+    ----------
+    a : sparse matrix
+        Assembled Reynolds operator (nodes x nodes).
+    f : ndarray
+        Load vector.
+    q_bc : ndarray
+        Nodal vector whose entries at the non-free nodes are the Dirichlet data [Pa].
+    free : ndarray of int
+        Indices of the unknown nodes.
+    cavitation : {"none", "reynolds"}
+    max_sweeps : int
+
+    Returns
+    -------
+    q : ndarray (nodal, Pa); linear_solves : int; active : bool ndarray (cavitated nodes)
+    """
     n = q_bc.size
-    free = problem.free
-    q = q_bc.copy()
     rhs = f - a @ q_bc
     active = np.zeros(n, dtype=bool)
-    solves = 0
     diag = a.diagonal()
-    for _ in range(200):
+    q, solves = q_bc.copy(), 0
+    for _ in range(max_sweeps):
         inactive = free[~active[free]]
         q = q_bc.copy()
         q[active] = 0.0
@@ -222,11 +251,11 @@ def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
             break
         lam = a @ q - f
         new_active = np.zeros(n, dtype=bool)
-        new_active[free] = (lam[free] / diag[free] > q[free])
+        new_active[free] = lam[free] / diag[free] > q[free]
         if np.array_equal(new_active, active):
             break
         active = new_active
-    return q, solves
+    return q, solves, active
 
 
 def no_solution_message(alpha: float, q_max: float) -> str:
