@@ -683,6 +683,14 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
         dz_ref = (zf - za + margin) / (0.8 * (BAND_REFERENCE_NODES - 1))
         ratio = min(1.0, max(MIN_BAND_RATIO, layer / OUTLET_LAYER_CELLS / dz_ref))
 
+    def newton_on(prob_n: KodnirProblem, u0: np.ndarray, label: str) -> NewtonOutcome:
+        nonlocal total
+        o = damped_newton(prob_n, u0, tol=tol, max_iterations=max_iterations, memory=1)
+        total += o.iterations
+        record.append((C, b_alpha, f"{o.status} ({label}, |F| = {o.residual_norm:.1e})",
+                       o.iterations))
+        return o
+
     def refine(n: int) -> tuple[KodnirProblem, np.ndarray | None, np.ndarray, str]:
         """Solve on the n-node final-type grid: Newton from the coarse solution; if that
         fails, Newton from the solution on the grid with half as many intervals (grid
@@ -691,22 +699,13 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
         nonlocal total
         prob_n = KodnirProblem(_Grid.from_nodes(graded_grid(
             za - margin, zf, z_b, n, bands=bands, band_ratio=ratio)), C, b_alpha)
-
-        def newton_from(u0: np.ndarray, label: str) -> NewtonOutcome:
-            nonlocal total
-            o = damped_newton(prob_n, u0, tol=tol, max_iterations=max_iterations, memory=1)
-            total += o.iterations
-            record.append((C, b_alpha, f"{o.status} ({label}, |F| = "
-                           f"{o.residual_norm:.1e})", o.iterations))
-            return o
-
-        out_n = newton_from(_transfer(u, coarse, prob_n), f"{n}-node grid")
+        out_n = newton_on(prob_n, _transfer(u, coarse, prob_n), f"{n}-node grid")
         half = (n - 1) // 2 + 1
         if not out_n.converged and half >= 2 * coarse_nodes:
             prob_h, u_h, _, _ = refine(half)
             if u_h is not None:
-                out_n = newton_from(_transfer(u_h, prob_h, prob_n),
-                                    f"{n}-node grid from {half}")
+                out_n = newton_on(prob_n, _transfer(u_h, prob_h, prob_n),
+                                  f"{n}-node grid from {half}")
         if out_n.converged:
             return prob_n, out_n.z, out_n.z, "ok"
         u_n, it, msg_n = _march(prob_n.grid, _initial_guess(prob_n), path, record, tol,

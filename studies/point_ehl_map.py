@@ -142,6 +142,13 @@ def _assess(case: dict) -> dict:
     return case
 
 
+#: Per-case columns after the per-grid ones: (key, scale, text format, markdown format).
+_COLUMNS = (("grid_change", 100, "+7.2f", "+.2f"), ("h_central_vs_nvm", 100, "+6.1f", "+.1f"),
+            ("h_central_vs_hd", 100, "+7.1f", "+.1f"), ("h_min_vs_hd", 100, "+9.1f", "+.1f"),
+            ("h_min_grid_change", 100, "+11.2f", "+.2f"), ("nvm_vs_hd", 100, "+8.1f", "+.1f"),
+            ("h_min_over_h_c", 1, "7.3f", ".3f"), ("h_min_over_h_c_hd", 1, "5.3f", ".3f"))
+
+
 def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
     """Plain-text and markdown tables of the map."""
     head = (f"{'M':>5} {'L':>4} {'aph':>5} " + " ".join(
@@ -153,30 +160,25 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
         f"{n}^2 h_c [nm] | {n}^2 its | {n}^2 s" for n in grids)
         + " | grid change % | vs NVM % | vs HD h_c % | vs HD h_min % | h_min grid change %"
         " | NVM vs HD h_c % | h_min/h_c | HD h_min/h_c | status |",
-        "|---|---|---|" + "---|---|---|" * len(grids) + "---|---|---|---|---|---|---|---|---|"]
+        "|---|---|---|" + "---|---|---|" * len(grids) + "---|" * (len(_COLUMNS) + 1)]
     for c in cases:
         if c["status"] == "skipped":
             lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f}  skipped "
                          f"(alpha p_h > {MAX_ALPHA_PH:g})")
             md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | "
-                      + " | ".join("-" for _ in range(3 * len(grids)))
-                      + f" | - | - | - | - | - | - | - | - | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
+                      + " | ".join("-" for _ in range(3 * len(grids) + len(_COLUMNS)))
+                      + f" | skipped (alpha p_h > {MAX_ALPHA_PH:g}) |")
             continue
         verdict = "MET" if c["met"] else "NOT MET: " + ", ".join(c["missed"])
         cells = " ".join(f"{r['newton_iterations']:>10d} {r['wall_time_s']:6.1f} "
                          f"{r['h_central_ratio']:7.3f}" for r in c["runs"])
-        lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f} {cells} "
-                     f"{100 * c['grid_change']:+7.2f} {100 * c['h_central_vs_nvm']:+6.1f} "
-                     f"{100 * c['h_central_vs_hd']:+7.1f} {100 * c['h_min_vs_hd']:+9.1f} "
-                     f"{100 * c['h_min_grid_change']:+11.2f} {100 * c['nvm_vs_hd']:+8.1f} "
-                     f"{c['h_min_over_h_c']:7.3f} {c['h_min_over_h_c_hd']:5.3f}  {verdict}")
+        tail = " ".join(format(scale * c[key], fmt) for key, scale, fmt, _ in _COLUMNS)
+        lines.append(f"{c['M']:5g} {c['L']:4g} {c['alpha_ph']:5.1f} {cells} {tail}  {verdict}")
         mcells = " | ".join(f"{1e9 * r['h_central_m']:.2f} | {r['newton_iterations']} | "
                             f"{r['wall_time_s']:.1f}" for r in c["runs"])
-        md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | {mcells} | "
-                  f"{100 * c['grid_change']:+.2f} | {100 * c['h_central_vs_nvm']:+.1f} | "
-                  f"{100 * c['h_central_vs_hd']:+.1f} | {100 * c['h_min_vs_hd']:+.1f} | "
-                  f"{100 * c['h_min_grid_change']:+.2f} | {100 * c['nvm_vs_hd']:+.1f} | "
-                  f"{c['h_min_over_h_c']:.3f} | {c['h_min_over_h_c_hd']:.3f} | {verdict} |")
+        mtail = " | ".join(format(scale * c[key], fmt) for key, scale, _, fmt in _COLUMNS)
+        md.append(f"| {c['M']:g} | {c['L']:g} | {c['alpha_ph']:.1f} | {mcells} | {mtail} | "
+                  f"{verdict} |")
     return "\n".join(lines), "\n".join(md)
 
 
