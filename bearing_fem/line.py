@@ -97,9 +97,25 @@ class ScaledResidual:
         _, h, _, _ = self.fields_q(p, h0)
         return bool(np.min(h) > 0.0)
 
-    def residual(self, z: np.ndarray) -> np.ndarray:
+    def nodal_residual(self, z: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
+        """p [Pa], h0 [m] and the unscaled nodal Reynolds residual of ``z``.
+
+        The last evaluation is kept: Newton asks for the residual of the same iterate
+        up to three times (line search, after the row scaling is updated, and in the
+        step), and only the row scaling differs. A problem's data never change after
+        construction, so the unknowns alone identify the evaluation.
+        """
+        cached = getattr(self, "_nodal_cache", None)
+        if cached is not None and np.array_equal(cached[0], z):
+            return cached[1], cached[2], cached[3]
         p, h0 = self.unpack(z)
-        r = self.reynolds_residual(p, h0)[self.free] * self._row_scale
+        r = self.reynolds_residual(p, h0)
+        self._nodal_cache = (np.array(z, dtype=float, copy=True), p, h0, r)
+        return p, h0, r
+
+    def residual(self, z: np.ndarray) -> np.ndarray:
+        p, h0, r = self.nodal_residual(z)
+        r = r[self.free] * self._row_scale
         if self.cavitation == "reynolds":
             r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
         if self.has_h0:

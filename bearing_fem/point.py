@@ -126,6 +126,12 @@ GMRES_MAX_ITERATIONS = 150
 #: save ~25 of ~40 iterations. Measured M = 100, L = 10, 257^2: Newton iterations 25 ->
 #: 25, GMRES 701 -> 302, h_c/h_min equal to 11 digits, p_max to 10. 0 disables.
 GMRES_FORCING_MAX = 1e-3
+#: The linear solve need not be more accurate than the Newton test can see: eta_k is also
+#: allowed up to GMRES_TOLERANCE_FRACTION tol / |F_k|_2, so the linear residual left in the
+#: step (<= eta_k |F_k|_2, which bounds its max norm) stays below this fraction of the
+#: Newton tolerance. Only the last one or two steps are affected (where |F_k| is within a
+#: few decades of tol); there GMRES stops after ~10 instead of 30-40 iterations.
+GMRES_TOLERANCE_FRACTION = 0.1
 #: SuperLU threshold partial pivoting of the preconditioner LU: the diagonal is kept as
 #: pivot unless it is below this fraction of the largest entry of its column (the fill-
 #: reducing nested-dissection order survives; 1.0 would be classical partial pivoting).
@@ -562,14 +568,19 @@ class PointProblem(ScaledResidual):
         dh0/dt [m/s].
     near_field_cells : int
         Compliance stencil radius of the preconditioner.
+    tolerance : float or None
+        Newton tolerance on max|F| the problem is solved to (scaled, -); bounds the GMRES
+        accuracy asked for (see ``GMRES_TOLERANCE_FRACTION``). None: no such bound.
     """
 
     def __init__(self, grid: PointGrid, flux: FluxModel, rx: float, ry: float, compliance,
                  cavitation: str, load: float | None, gap: float | None, p_ref: float,
                  h_ref: float, viscosity0: float, p_bc: np.ndarray | None = None,
                  squeeze_velocity: float = 0.0,
-                 near_field_cells: int = NEAR_FIELD_CELLS) -> None:
+                 near_field_cells: int = NEAR_FIELD_CELLS,
+                 tolerance: float | None = None) -> None:
         self.grid, self.flux = grid, flux
+        self.tolerance = tolerance
         self.rx, self.ry = rx, ry
         self.compliance = compliance
         self.cavitation = cavitation
@@ -770,8 +781,8 @@ class PointProblem(ScaledResidual):
 
         Rigid: sparse direct. Elastic: GMRES on the matrix-free Jacobian (sparse blocks
         plus A_h (C x) by FFT), preconditioned by a sparse LU of the near-field Jacobian,
-        to the relative residual eta = min(GMRES_FORCING_MAX, max(GMRES_RTOL, |F|_inf))
-        (inexact Newton).
+        to the relative residual eta = min(GMRES_FORCING_MAX, max(GMRES_RTOL, |F|_inf,
+        GMRES_TOLERANCE_FRACTION tol / |F|_2)) (inexact Newton).
         """
         f = self.residual(z)
         npf = self.free.size
@@ -812,7 +823,11 @@ class PointProblem(ScaledResidual):
 
         rtol = GMRES_RTOL
         if GMRES_FORCING_MAX > GMRES_RTOL:  # inexact Newton, see GMRES_FORCING_MAX
-            rtol = min(GMRES_FORCING_MAX, max(GMRES_RTOL, float(np.max(np.abs(f)))))
+            floor = max(GMRES_RTOL, float(np.max(np.abs(f))))
+            if self.tolerance is not None:
+                floor = max(floor, GMRES_TOLERANCE_FRACTION * self.tolerance
+                            / max(float(np.linalg.norm(f)), 1e-300))
+            rtol = min(GMRES_FORCING_MAX, floor)
         dz, its, rel = gmres_right(matvec, precond, -f, rtol=rtol,
                                    max_iterations=GMRES_MAX_ITERATIONS)
         self.linear_iterations += its
@@ -837,11 +852,12 @@ def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
 
 
 def _make_problem(scene, setup: PointSetup, p_bc, squeeze_velocity: float,
-                  piezo_scale: float = 1.0) -> PointProblem:
+                  piezo_scale: float = 1.0, tolerance: float | None = None) -> PointProblem:
     return PointProblem(setup.grid, _flux(scene, setup, piezo_scale), scene.contact.rx,
                         scene.contact.ry, setup.compliance, scene.model.cavitation,
                         scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
-                        scene.lubricant.viscosity, p_bc, squeeze_velocity)
+                        scene.lubricant.viscosity, p_bc, squeeze_velocity,
+                        tolerance=tolerance)
 
 
 def _initial_guess(scene, setup: PointSetup, problem: PointProblem) -> np.ndarray:
@@ -887,7 +903,8 @@ def _attempt(scene, setup, p_bc, squeeze, z0, max_iterations, initial_shift: flo
     problems = []
 
     def make(s: float = 1.0) -> PointProblem:
-        problems.append(_make_problem(scene, setup, p_bc, squeeze, piezo_scale=s))
+        problems.append(_make_problem(scene, setup, p_bc, squeeze, piezo_scale=s,
+                                      tolerance=tol))
         return problems[-1]
 
     def linear() -> int:
