@@ -311,6 +311,15 @@ def test_preconditioner_fast_path_equals_sparse_products():
                                err_msg="two orderings of one sparse LU: rounding only")
 
 
+def _flux_inputs(seed: int, n: int = 500):
+    """Random quadrature-point states spanning the EHL range: p [Pa] (slightly negative to
+    2 GPa), h [m], grad p [Pa/m], grad h [-]."""
+    rng = np.random.default_rng(seed)
+    return (rng.uniform(-1e7, 2e9, n), rng.uniform(5e-8, 1e-6, n),
+            (1e12 * rng.standard_normal(n), 1e12 * rng.standard_normal(n)),
+            (1e-3 * rng.standard_normal(n), 1e-3 * rng.standard_normal(n)), rng)
+
+
 def test_upwind_flux_derivatives_match_complex_step():
     from dataclasses import replace
 
@@ -319,13 +328,8 @@ def test_upwind_flux_derivatives_match_complex_step():
 
     scene = _moes_scene(100, 10, 17)
     setup = bp.point_setup(scene)
-    rng = np.random.default_rng(1)
-    n = 500
-    p = rng.uniform(-1e7, 2e9, n)
-    h = rng.uniform(5e-8, 1e-6, n)
-    gp = (1e12 * rng.standard_normal(n), 1e12 * rng.standard_normal(n))
-    gh = (1e-3 * rng.standard_normal(n), 1e-3 * rng.standard_normal(n))
-    dx = np.full(n, 1e-5)
+    p, h, gp, gh, _ = _flux_inputs(1)
+    dx = np.full(p.size, 1e-5)
     for law in ({}, {"density": "dowson-higginson"}, {"viscosity_law": "roelands"}):
         flux = bp._flux(replace(scene, lubricant=replace(scene.lubricant, **law)), setup)
         fast = flux.flux_and_derivatives(p, h, gp, gh, dx)
@@ -354,12 +358,8 @@ def test_reduced_flux_derivatives_match_complex_step():
     scene = _moes_scene(100, 10, 17)
     flux = bp._flux(scene, bp.point_setup(scene))
     assert flux.reduced_alpha and flux.upwind_compliance > 0.0, "Peclet fade-out tested"
-    rng = np.random.default_rng(2)
-    n = 500
-    p = rng.uniform(-1e7, 2e9, n)
-    h = rng.uniform(5e-8, 1e-6, n)
-    gp = (1e12 * rng.standard_normal(n), 1e12 * rng.standard_normal(n))
-    gh = (1e-3 * rng.standard_normal(n), 1e-3 * rng.standard_normal(n))
+    p, h, gp, gh, rng = _flux_inputs(2)
+    n = p.size
     gq = (1e10 * rng.standard_normal(n), 1e10 * rng.standard_normal(n))
     dx = np.logspace(-9, -4, n)  # Pe from the series range to the saturated one
     base, d_p, d_h = flux.flux_and_derivatives_reduced(p, h, gp, gh, dx, gq)[:3]
