@@ -26,7 +26,7 @@ NVM, and h_c and h_min lie within 20% of Hamrock-Dowson (fits with a stated scat
 5-10%; their h_min fit is the weaker one).
 
 Run ``python studies/point_ehl_map.py [outdir] [--quick] [--grids=129,257,513]`` (about
-40 minutes on one core with the default grids; the 513^2 solves dominate). The tables are
+16 minutes on one core with the default grids; the 513^2 solves dominate). The tables are
 rewritten after every case, so an interrupted run keeps the cases it finished.
 """
 from __future__ import annotations
