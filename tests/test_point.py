@@ -243,6 +243,17 @@ def test_point_ehl_map_study(tmp_path, load_study):
     assert out["max_abs_hc_deviation"] < 0.15, "65^2: within 15% of NVM over the map"
 
 
+def test_point_hard_cases_study_quick(tmp_path, load_study):
+    # the three cases a classic multigrid code could not solve untuned (issue 4, Why)
+    out = load_study("point_hard_cases").main(tmp_path, quick=True)
+    assert len(out["cases"]) == 3
+    for c in out["cases"]:
+        assert c["converged"], [r["status"] for r in c["runs"]]
+        assert abs(c["h_central_vs_nvm"]) < 0.10, (
+            f"M={c['M']:g}, L={c['L']:g}: 129^2 h_c within 10% of NVM (measured +3..+6%)")
+    assert (tmp_path / "point_hard_cases.md").read_text().count("converged") == 6
+
+
 def test_seed001_study_quick(tmp_path, load_study):
     mod = load_study("seed001_bearing209")
     out = mod.main(tmp_path, quick=True)
