@@ -13,13 +13,16 @@ Expected outcome
     Within the 20 % band (Hamrock-Dowson is a fit to a few tens of cases with a stated
     scatter of about 5-10 %, and its minimum-film fit is the weaker one).
 
-Run ``python studies/point_hamrock_dowson.py [outdir] [nodes]``.
+Run ``python studies/point_hamrock_dowson.py [outdir] [nodes] [M L] [--density=LAW]
+[--ratios=1,2]``; ``--density=dowson-higginson`` adds the compressibility of the lubricant
+(default: incompressible, as the Moes map).
 """
 from __future__ import annotations
 
 import json
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -32,13 +35,19 @@ RATIOS = (1.0, 2.0, 4.0, 8.0)
 
 
 def main(outdir: str | Path = "out/point_hamrock_dowson", nodes: int = 65,
-         M: float = 100.0, L: float = 10.0, ratios: tuple[float, ...] = RATIOS) -> dict:
-    """Solve each ellipse, compare with Hamrock-Dowson, write JSON and a markdown table."""
+         M: float = 100.0, L: float = 10.0, ratios: tuple[float, ...] = RATIOS,
+         density: str | None = None) -> dict:
+    """Solve each ellipse, compare with Hamrock-Dowson, write JSON and a markdown table.
+
+    ``density``: the lubricant's density law (None: the scene default, incompressible).
+    """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     rows = []
     for ratio in ratios:
         scene = moes_scene(M, L, nodes, ry_over_rx=ratio, max_iterations=60)
+        if density is not None:
+            scene = replace(scene, lubricant=replace(scene.lubricant, density=density))
         t0 = time.perf_counter()
         r = solve_point(scene)
         row = {"ry_over_rx": ratio, "status": r.status, "iterations": r.newton_iterations,
@@ -50,21 +59,31 @@ def main(outdir: str | Path = "out/point_hamrock_dowson", nodes: int = 65,
                 lub.viscosity, kin.mean_speed, lub.piezo)
             row.update(h_central=r.quantities["h_central"], h_min=r.quantities["h_min"],
                        h_central_vs_hd=r.quantities["h_central"] / h_c_hd - 1.0,
-                       h_min_vs_hd=r.quantities["h_min"] / h_min_hd - 1.0)
+                       h_min_vs_hd=r.quantities["h_min"] / h_min_hd - 1.0,
+                       h_min_over_h_c=r.quantities["h_min"] / r.quantities["h_central"])
         rows.append(row)
         print(row, flush=True)
-    lines = [f"Moes M = {M}, L = {L}, {nodes} x {nodes} nodes", "",
-             "| Ry/Rx | status | Newton its | s | h_c vs HD % | h_min vs HD % |",
-             "|---|---|---|---|---|---|"]
+    nan = float("nan")
+    lines = [f"Moes M = {M}, L = {L}, {nodes} x {nodes} nodes, density "
+             f"{density or 'incompressible'}", "",
+             "| Ry/Rx | status | Newton its | s | h_c vs HD % | h_min vs HD % | h_min/h_c |",
+             "|---|---|---|---|---|---|---|"]
     for row in rows:
         lines.append(f"| {row['ry_over_rx']:g} | {row['status']} | {row['iterations']} | "
-                     f"{row['seconds']:.1f} | {100 * row.get('h_central_vs_hd', float('nan')):+.1f} | "
-                     f"{100 * row.get('h_min_vs_hd', float('nan')):+.1f} |")
+                     f"{row['seconds']:.1f} | {100 * row.get('h_central_vs_hd', nan):+.1f} | "
+                     f"{100 * row.get('h_min_vs_hd', nan):+.1f} | "
+                     f"{row.get('h_min_over_h_c', nan):.3f} |")
     (outdir / "point_hamrock_dowson.md").write_text("\n".join(lines) + "\n")
     (outdir / "point_hamrock_dowson.json").write_text(json.dumps(rows, indent=1))
     return {"rows": rows}
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "out/point_hamrock_dowson",
-         int(sys.argv[2]) if len(sys.argv) > 2 else 65)
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    opts = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--") and "=" in a)
+    main(args[0] if args else "out/point_hamrock_dowson",
+         int(args[1]) if len(args) > 1 else 65,
+         *(float(v) for v in args[2:4]),
+         ratios=tuple(float(v) for v in opts["ratios"].split(",")) if "ratios" in opts
+         else RATIOS,
+         density=opts.get("density"))
