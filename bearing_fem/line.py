@@ -216,10 +216,24 @@ class LineProblem(ScaledResidual):
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (self.disc.spacing / (2.0 * eps0 * self.p_ref))[self.free]
 
+    @property
+    def _reduced(self) -> bool:
+        """True if the Poiseuille term is rho h^3/(12 eta0) dq_h/dx (reduced pressure)."""
+        return getattr(self.flux, "reduced_alpha", None) is not None
+
+    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray]:
+        """(dq_h/dx,) at the quadrature points [Pa/m], q_h the P1 interpolant of the nodal
+        reduced pressure q(p) (:meth:`~bearing_fem.reynolds.UpwindFluxModel.reduced`)."""
+        return (self.disc.ops.grad[0] @ self.flux.reduced(p),)
+
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^2/s] (all nodes)."""
         pq, h, px, hx = self.fields_q(p, h0)
-        (fx,) = self.flux.flux(pq, h, (px,), (hx,), self.disc.ops.element_size)
+        dx = self.disc.ops.element_size
+        if self._reduced:
+            (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx, gq=self._grad_reduced(p))
+        else:
+            (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx)
         return self.disc.ops.weak_divergence(fx)
 
     def _blocks(self, z: np.ndarray):
@@ -239,10 +253,19 @@ class LineProblem(ScaledResidual):
         p, h0 = self.unpack(z)
         ops = self.disc.ops
         pq, h, px, hx = self.fields_q(p, h0)
-        (fx,), dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, (px,), (hx,),
-                                                               ops.element_size)
         inner = slice(1, p.size - 1)  # the free (interior) nodes
-        a_p = ops.flux_jacobian(0, dp[0], (dgp[0][0],)).tocsr()[inner]
+        if self._reduced:
+            (fx,), dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
+                pq, h, (px,), (hx,), ops.element_size, self._grad_reduced(p))
+            # d(dq_h/dx)/dp_j = q'(p_j) dphi_j/dx: the dq/dx column term, column-scaled
+            a_q = ops.flux_jacobian(0, np.zeros_like(pq), (dgq[0][0],)) \
+                @ sp.diags(self.flux.fluidity(p))
+        else:
+            (fx,), dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, (px,), (hx,),
+                                                                   ops.element_size)
+            a_q = None
+        a_p = ops.flux_jacobian(0, dp[0], (dgp[0][0],))
+        a_p = (a_p if a_q is None else a_p + a_q).tocsr()[inner]
         a_h = ops.flux_jacobian(0, dh[0], (dgh[0][0],)).tocsr()[inner]
         rows = self.free
         res = ops.weak_divergence(fx)[rows]

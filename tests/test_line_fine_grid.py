@@ -7,6 +7,7 @@ from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import bearing_fem as bf
 from bearing_fem import line, solver
@@ -115,3 +116,74 @@ def test_default_mesh_density_grows_with_moes_load():
                                err_msg="no refinement up to M = 250")
     np.testing.assert_allclose(per_b[1000], 2.0 * solver.NODES_PER_HALF_WIDTH, rtol=2e-3,
                                err_msg="sqrt(1000/250) = 2")
+
+
+def _element_poiseuille(reduced: bool, p_left: float, p_right: float):
+    """Poiseuille flux integrated over one element [0, dx] with a uniform film, M = 5,
+    L = 15 lubricant (alpha p_h = 13.4) and its Hertz pressure [Pa] (int F dx, m^3/s)."""
+    scene = scene_for(5, 15)
+    setup = solver.line_setup(scene)
+    disc = line.LineDiscretisation.uniform(0.0, 1e-6, 2)
+    ops = disc.ops
+    flux = solver._make_problem(scene, setup, (0.0, 0.0)).flux
+    if not reduced:
+        flux = replace(flux, reduced_alpha=None)
+    p = np.array([p_left, p_right]) * setup.p_ref
+    h = np.full(ops.weights.size, setup.h_ref)
+    zero = np.zeros_like(h)
+    kw, kw0 = ({"gq": (ops.grad[0] @ flux.reduced(p),)}, {"gq": (zero,)}) if reduced else ({}, {})
+    (fx,) = flux.flux(ops.value @ p, h, (ops.grad[0] @ p,), (zero,), ops.element_size, **kw)
+    # the same flux with no pressure gradient: wedge (and upwind) part only
+    (f0,) = flux.flux(ops.value @ p, h, (zero,), (zero,), ops.element_size, **kw0)
+    return ops.integrate(fx - f0), flux, setup
+
+
+def test_reduced_poiseuille_is_monotone_across_a_spike_drop():
+    """Outlet spike of M = 5, L = 15 on 8001 nodes: the pressure falls from ~3 to 0.5 p_h
+    across one element. The 3-point quadrature of eps(p) dp/dx is then not monotone in
+    the upstream pressure (the fold where Newton stalled); the reduced-pressure term is
+    monotone and equals the exact integral of eps(p) dp/dx for linear p."""
+    drops = np.linspace(0.6, 4.0, 18)
+    quad = np.array([_element_poiseuille(False, a, 0.5)[0] for a in drops])
+    red = np.array([_element_poiseuille(True, a, 0.5)[0] for a in drops])
+    assert np.all(np.diff(-red) >= 0) and -red[-1] > 1.3 * -red[0], \
+        "reduced Poiseuille outflow never falls as the drop grows (saturates at q = 1/alpha)"
+    assert -quad[-1] < 0.5 * np.max(-quad), \
+        "pointwise quadrature outflow peaks and falls (the fold of the 8001-node stall)"
+    _, flux, setup = _element_poiseuille(True, 3.0, 0.5)
+    alpha, eta0 = flux.reduced_alpha, flux.viscosity0
+    exact = -setup.h_ref**3 / (12 * eta0) * (np.exp(-alpha * 0.5 * setup.p_ref)
+                                             - np.exp(-alpha * 3.0 * setup.p_ref)) / alpha
+    np.testing.assert_allclose(_element_poiseuille(True, 3.0, 0.5)[0], exact, rtol=1e-12,
+                               err_msg="int_e h^3/(12 eta) dp/dx dx = h^3/(12 eta0) (q_b - q_a)")
+
+
+def test_reduced_poiseuille_jacobian_matches_central_differences():
+    """LineProblem with the reduced-pressure Poiseuille term: J v equals the central
+    difference of the residual (the q'(p_j) column term included)."""
+    scene = scene_for(5, 15, 301)
+    setup = solver.line_setup(scene)
+    prob = solver._make_problem(scene, setup, (0.0, 0.0))
+    assert prob.flux.reduced_alpha, "Barus half-space line scene uses the reduced term"
+    z = solver._initial_guess(scene, setup, prob)
+    z = z + 0.01 * np.random.default_rng(3).standard_normal(z.size)
+    prob.prepare(z)
+    j = prob.jacobian(z)
+    v = np.random.default_rng(4).standard_normal(z.size)
+    e = 1e-6
+    fd = (prob.residual(z + e * v) - prob.residual(z - e * v)) / (2 * e)
+    np.testing.assert_allclose(j @ v, fd, rtol=0, atol=1e-6 * np.max(np.abs(fd)),
+                               err_msg="exact Jacobian of the reduced-pressure residual")
+
+
+@pytest.mark.slow
+def test_m5_l15_converges_on_8001_nodes():
+    """The case that stalled at |F| = 5e-7 with the pointwise Poiseuille quadrature
+    (docs/line_contact.md): converges by grid sequencing without continuation, and
+    h_central agrees with 4001 nodes."""
+    fine = bf.solve(scene_for(5, 15, 8001))
+    assert fine.status == "converged", fine.message
+    assert all(s[0] == 1.0 for s in fine.continuation), "no continuation needed"
+    coarse = bf.solve(scene_for(5, 15, 4001))
+    np.testing.assert_allclose(fine.quantities["h_central"], coarse.quantities["h_central"],
+                               rtol=1e-5, err_msg="h_central 4001 -> 8001 (measured 1.4e-6)")
