@@ -38,6 +38,7 @@ import json
 import math
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from bearing_fem import bearing
@@ -155,6 +156,42 @@ def main(outdir: str | Path = "out/seed000_nncf5040", quick: bool = False,
     return results
 
 
+def rise_scan(outdir: str | Path = "out/seed000_rise_scan", side: str = "outer",
+              model: str = "half-space", nodes: int = 801,
+              temperatures: tuple[float, ...] = tuple(22.0 + 0.25 * k for k in range(17))
+              ) -> list[dict]:
+    """Computed contact temperature rise as a function of the contact temperature T.
+
+    One thermal iteration with the oil at T (the 20 C scene otherwise) gives
+    rise(T) = G(T) - t_oil, the map whose fixed point the coupling seeks; a jump in rise(T) between neighbouring T means the
+    fixed-point map is not continuous on this mesh. Writes ``rise_scan.json``/``.md``.
+    """
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    geo = bearing_geometry()
+    rx = geo["rx_outer"] if side == "outer" else geo["rx_inner"]
+    rows = []
+    for t in temperatures:
+        scene = contact_scene(20.0, rx, geo, model, nodes)
+        scene = replace(scene, thermal=replace(scene.thermal, oil_temperature=float(t),
+                                               max_iterations=1))
+        q = solve_thermal(scene).quantities
+        rows.append({"contact_temperature_C": t,
+                     "rise_K": q.get("contact_temperature_rise_computed"),
+                     "heat_power_W_per_m": q.get("heat_power"), "h_central_m": q.get("h_central")})
+        print(rows[-1], flush=True)
+    lines = [f"{model}, {side} contact, {nodes} nodes", "",
+             "| T C | computed rise K | Q' W/m |", "|---|---|---|"]
+    lines += [f"| {r['contact_temperature_C']:.2f} | {r['rise_K']:.3f} | "
+              f"{r['heat_power_W_per_m']:.1f} |" for r in rows]
+    (out / "rise_scan.md").write_text("\n".join(lines) + "\n")
+    (out / "rise_scan.json").write_text(json.dumps(rows, indent=1))
+    return rows
+
+
 if __name__ == "__main__":
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    main(args[0] if args else "out/seed000_nncf5040", quick="--quick" in sys.argv)
+    if "--rise-scan" in sys.argv:
+        rise_scan(args[0] if args else "out/seed000_rise_scan")
+    else:
+        main(args[0] if args else "out/seed000_nncf5040", quick="--quick" in sys.argv)
