@@ -267,6 +267,18 @@ def test_hamrock_dowson_study_density_option(tmp_path, load_study):
     assert "dowson-higginson" in (tmp_path / "dh" / "point_hamrock_dowson.md").read_text()
 
 
+def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
+    out = load_study("point_benchmark").main(tmp_path, quick=True)
+    rows = out["rows"]
+    assert [r["nodes"] for r in rows] == [65, 129, 257]
+    assert all(r["status"] == "converged" for r in rows)
+    errs = [r["h_central_error_vs_finest"] for r in rows]
+    assert errs[-1] == 0.0 and errs[0] > errs[1] > 0.0, (
+        f"h_c error against the finest grid falls with refinement: {errs}")
+    assert np.isfinite(out["growth_exponent"])
+    assert "h_c err" in (tmp_path / "point_benchmark.txt").read_text()
+
+
 def test_seed001_study_quick(tmp_path, load_study):
     mod = load_study("seed001_bearing209")
     out = mod.main(tmp_path, quick=True)
