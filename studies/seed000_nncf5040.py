@@ -90,16 +90,17 @@ def palmgren(t_oil: float) -> float:
 
 def main(outdir: str | Path = "out/seed000_nncf5040", quick: bool = False,
          models: tuple[str, ...] = ("local", "half-space"),
-         temperatures: tuple[float, ...] | None = None) -> dict:
+         temperatures: tuple[float, ...] | None = None, nodes: int | None = None) -> dict:
     """Run the study; write ``results.json`` and ``table.md`` to outdir; return the results.
 
     quick: 801 nodes and t_oil = 20, 50, 100 C (else 1201 nodes, 20..100 C in 10 K steps);
-    models: elasticity models to run; temperatures: override the oil temperatures [deg C].
+    models: elasticity models to run; temperatures: override the oil temperatures [deg C];
+    nodes: override the node count.
     """
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     geo = bearing_geometry()
-    nodes = 801 if quick else 1201
+    nodes = nodes or (801 if quick else 1201)
     temps = [20.0, 50.0, 100.0] if quick else [20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0, 100.0]
     if temperatures is not None:
         temps = [float(t) for t in temperatures]
