@@ -609,6 +609,7 @@ class PointProblem(ScaledResidual):
         self.near_field_cells = near_field_cells
         self._row_scale = None
         self._pattern = None
+        self._fields_cache = None
         self.linear_iterations = 0
 
     # -- unknowns <-> fields -------------------------------------------------------------
@@ -632,14 +633,25 @@ class PointProblem(ScaledResidual):
         return h0 + self.g_nodes + self.displacement(p)
 
     def fields_q(self, p: np.ndarray, h0: float, v: np.ndarray | None = None):
-        """p, h, (px, py), (hx, hy) at the quadrature points."""
+        """p, h, (px, py), (hx, hy) at the quadrature points.
+
+        Without ``v`` the fields of the last (p, h0) are kept: a Newton iteration asks for
+        the same iterate's fields in the admissibility test, the residual and the
+        Jacobian (each costs an FFT product and five sparse interpolations). The
+        returned arrays are shared with the cache and must not be modified.
+        """
+        cached = self._fields_cache if v is None else None
+        if cached is not None and cached[1] == h0 and np.array_equal(cached[0], p):
+            return cached[2]
         ops = self.grid.ops
-        if v is None:
-            v = self.displacement(p)
-        h = h0 + self.g_q + ops.value @ v
-        gh = (self.gx_q + ops.grad[0] @ v, self.gy_q + ops.grad[1] @ v)
+        displacement = self.displacement(p) if v is None else v
+        h = h0 + self.g_q + ops.value @ displacement
+        gh = (self.gx_q + ops.grad[0] @ displacement, self.gy_q + ops.grad[1] @ displacement)
         gp = (ops.grad[0] @ p, ops.grad[1] @ p)
-        return ops.value @ p, h, gp, gh
+        out = (ops.value @ p, h, gp, gh)
+        if v is None:
+            self._fields_cache = (np.array(p, dtype=float, copy=True), float(h0), out)
+        return out
 
     @property
     def _reduced(self) -> bool:
