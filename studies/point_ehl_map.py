@@ -25,7 +25,8 @@ All cases converge; h_c changes by less than 1% from 257^2 to 513^2, lies within
 NVM, and h_c and h_min lie within 20% of Hamrock-Dowson (fits with a stated scatter of
 5-10%; their h_min fit is the weaker one).
 
-Run ``python studies/point_ehl_map.py [outdir] [--quick] [--grids=129,257,513]`` (about
+``python studies/point_ehl_map.py --groups`` prints the Hamrock-Dowson groups of the map
+cases (no solve). Run ``python studies/point_ehl_map.py [outdir] [--quick] [--grids=129,257,513]`` (about
 16 minutes on one core with the default grids; the 513^2 solves dominate). The tables are
 rewritten after every case, so an interrupted run keeps the cases it finished.
 """
@@ -279,7 +280,32 @@ def _write(outdir: Path, cases: list[dict], grids: tuple[int, ...], t_start: flo
     return out
 
 
+def hamrock_groups() -> str:
+    """Hamrock-Dowson groups U, W, G (mean speed, rx) of the map cases, and their spans.
+
+    No solve: the range of the map in the variables of the Hamrock-Dowson fits (which
+    varied U over nearly two orders of magnitude and W over one).
+    """
+    rows = []
+    for M in M_VALUES:
+        for L in L_VALUES:
+            g = _formulas(moes_scene(M, L, 65))["moes"]
+            if g["alpha_ph"] <= MAX_ALPHA_PH:
+                rows.append((M, L, g["U"], g["W"], g["G"]))
+    lines = ["| M | L | U | W | G |", "|---|---|---|---|---|"]
+    lines += [f"| {M:g} | {L:g} | {U:.3g} | {W:.3g} | {G:.0f} |" for M, L, U, W, G in rows]
+    us, ws = [r[2] for r in rows], [r[3] for r in rows]
+    lines.append(f"\nU spans {min(us):.3g}..{max(us):.3g} (x{max(us) / min(us):.0f}, "
+                 f"{math.log10(max(us) / min(us)):.1f} decades); W spans {min(ws):.3g}.."
+                 f"{max(ws):.3g} (x{max(ws) / min(ws):.0f}, "
+                 f"{math.log10(max(ws) / min(ws)):.1f} decades)")
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
+    if "--groups" in sys.argv:
+        print(hamrock_groups())
+        sys.exit(0)
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     grid_arg = [a.split("=", 1)[1] for a in sys.argv[1:] if a.startswith("--grids=")]
     main(args[0] if args else "out_point_ehl_map", quick="--quick" in sys.argv,

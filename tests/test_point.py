@@ -279,6 +279,15 @@ def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
     assert "h_c err" in (tmp_path / "point_benchmark.txt").read_text()
 
 
+def test_point_map_hamrock_groups(load_study):
+    text = load_study("point_ehl_map").hamrock_groups()
+    rows = [line for line in text.splitlines() if line.startswith("| ") and "U" not in line]
+    assert len(rows) == 13, "the 13 map cases with alpha p_h <= 40"
+    assert "2.4 decades" in text and "2.5 decades" in text, (
+        "U ~ (L/G)^4 spans 4^4 = 256x for L = 5..20 at fixed G; W spans 320x over the 13 "
+        "cases (M = 20..500)")
+
+
 def test_seed001_study_quick(tmp_path, load_study):
     mod = load_study("seed001_bearing209")
     out = mod.main(tmp_path, quick=True)
