@@ -86,9 +86,22 @@ def fischer_burmeister(a: np.ndarray, b: np.ndarray,
 class ScaledResidual:
     """Parts shared by the line and point problems: the scaled residual (Reynolds rows, or
     their Fischer-Burmeister functions, at the free nodes, then the load row) and the
-    admissibility test (finite unknowns, positive film at every quadrature point). Needs
-    ``unpack``, ``fields_q``, ``reynolds_residual``, ``free``, ``_row_scale``,
-    ``cavitation``, ``p_ref``, ``has_h0``, ``mass`` and ``load``."""
+    admissibility test (finite unknowns, positive film at every quadrature point), and
+    the reduced-pressure gradient of the Poiseuille term. Needs ``unpack``, ``fields_q``,
+    ``reynolds_residual``, ``free``, ``_row_scale``, ``cavitation``, ``p_ref``,
+    ``has_h0``, ``mass``, ``load``, ``flux`` and ``ops`` (the quadrature operators)."""
+
+    @property
+    def _reduced(self) -> bool:
+        """True if the Poiseuille term is rho h^3/(12 eta0) grad q_h (reduced pressure)."""
+        return getattr(self.flux, "reduced_alpha", None) is not None
+
+    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, ...]:
+        """Gradient of the interpolant q_h of the nodal reduced pressure q(p) at the
+        quadrature points [Pa/m], one array per dimension
+        (:meth:`~bearing_fem.reynolds.UpwindFluxModel.reduced`)."""
+        q = self.flux.reduced(p)
+        return tuple(g @ q for g in self.ops.grad)
 
     def admissible(self, z: np.ndarray) -> bool:
         if not np.all(np.isfinite(z)):
@@ -152,6 +165,7 @@ class LineProblem(ScaledResidual):
                  h_ref: float, viscosity0: float,
                  boundary_pressure: tuple[float, float] = (0.0, 0.0)) -> None:
         self.disc, self.flux, self.radius = disc, flux, radius
+        self.ops = disc.ops
         self.compliance = compliance
         self.cavitation = cavitation
         self.load, self.gap = load, gap
@@ -215,16 +229,6 @@ class LineProblem(ScaledResidual):
         h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (self.disc.spacing / (2.0 * eps0 * self.p_ref))[self.free]
-
-    @property
-    def _reduced(self) -> bool:
-        """True if the Poiseuille term is rho h^3/(12 eta0) dq_h/dx (reduced pressure)."""
-        return getattr(self.flux, "reduced_alpha", None) is not None
-
-    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray]:
-        """(dq_h/dx,) at the quadrature points [Pa/m], q_h the P1 interpolant of the nodal
-        reduced pressure q(p) (:meth:`~bearing_fem.reynolds.UpwindFluxModel.reduced`)."""
-        return (self.disc.ops.grad[0] @ self.flux.reduced(p),)
 
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^2/s] (all nodes)."""

@@ -46,7 +46,7 @@ from __future__ import annotations
 import logging
 import math
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -580,6 +580,7 @@ class PointProblem(ScaledResidual):
                  near_field_cells: int = NEAR_FIELD_CELLS,
                  tolerance: float | None = None) -> None:
         self.grid, self.flux = grid, flux
+        self.ops = grid.ops
         self.tolerance = tolerance
         self.rx, self.ry = rx, ry
         self.compliance = compliance
@@ -652,16 +653,6 @@ class PointProblem(ScaledResidual):
         if v is None:
             self._fields_cache = (np.array(p, dtype=float, copy=True), float(h0), out)
         return out
-
-    @property
-    def _reduced(self) -> bool:
-        return getattr(self.flux, "reduced_alpha", None) is not None
-
-    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Gradient of the bilinear interpolant of the nodal reduced pressure [Pa/m]."""
-        ops = self.grid.ops
-        q = self.flux.reduced(p)
-        return ops.grad[0] @ q, ops.grad[1] @ q
 
     # -- NonlinearProblem ------------------------------------------------------------------
     def prepare(self, z: np.ndarray) -> None:
@@ -852,13 +843,12 @@ class PointProblem(ScaledResidual):
 def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
     if setup.compliance is not None:
         lub = scene.lubricant
-        base = UpwindFluxModel.from_lubricant(lub, scene.kinematics.mean_speed,
-                                              compliance=0.0, piezo_scale=piezo_scale)
         reduced = None
         if REDUCED_POISEUILLE and (lub.viscosity_law == "barus" or lub.effective_piezo == 0.0):
             reduced = lub.effective_piezo * piezo_scale
-        return replace(base, upwind_compliance=UPWIND_COMPLIANCE_FACTOR * setup.stab_compliance,
-                       reduced_alpha=reduced, viscosity0=lub.viscosity)
+        return UpwindFluxModel.elastic(lub, scene.kinematics.mean_speed,
+                                       UPWIND_COMPLIANCE_FACTOR * setup.stab_compliance,
+                                       piezo_scale=piezo_scale, reduced_alpha=reduced)
     return FluxModel.from_lubricant(scene.lubricant, scene.kinematics.mean_speed,
                                     compliance=setup.stab_compliance, piezo_scale=piezo_scale)
 
@@ -883,8 +873,14 @@ def _initial_guess(scene, setup: PointSetup, problem: PointProblem) -> np.ndarra
         v0 = float(grid.interpolate(problem.displacement(p), np.array([0.0]),
                                     np.array([0.0]))[0])
         return problem.pack(p, setup.h_estimate - v0)
-    h0 = scene.load.gap if scene.load.gap is not None else setup.h_ref
-    q, _, _ = reduced_pressure_solve(grid, h0, scene.contact.rx, scene.contact.ry,
+    return _rigid_start(scene, setup, problem,
+                       scene.load.gap if scene.load.gap is not None else setup.h_ref)
+
+
+def _rigid_start(scene, setup: PointSetup, problem: PointProblem, h0: float) -> np.ndarray:
+    """Isoviscous rigid (Kapitsa-type) solution at the offset h0 [m], with the
+    problem's Dirichlet data and squeeze velocity, as packed unknowns of ``problem``."""
+    q, _, _ = reduced_pressure_solve(setup.grid, h0, scene.contact.rx, scene.contact.ry,
                                      scene.kinematics.mean_speed, scene.lubricant.viscosity,
                                      problem.p_bc, scene.model.cavitation, problem.squeeze)
     if scene.model.cavitation == "reynolds":

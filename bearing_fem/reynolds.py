@@ -31,7 +31,7 @@ rounding), so any analytic viscosity or density law can be plugged in.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
@@ -182,6 +182,28 @@ class UpwindFluxModel(FluxModel):
     #: eta0 [Pa s] of the reduced-pressure Poiseuille term.
     viscosity0: float = 0.0
 
+    @classmethod
+    def elastic(cls, lubricant, mean_speed: float, upwind_compliance: float,
+                piezo_scale: float = 1.0,
+                reduced_alpha: float | None = None) -> "UpwindFluxModel":
+        """Flux of an elastic (half-space) contact.
+
+        Parameters
+        ----------
+        lubricant : Lubricant
+        mean_speed : float
+            u_m [m/s].
+        upwind_compliance : float
+            c of the Peclet fade-out [m/Pa].
+        piezo_scale : float
+            Multiplies alpha (continuation parameter) [-].
+        reduced_alpha : float or None
+            Barus alpha [1/Pa] of the reduced-pressure Poiseuille term (None: pointwise).
+        """
+        return replace(cls.from_lubricant(lubricant, mean_speed, piezo_scale=piezo_scale),
+                       upwind_compliance=upwind_compliance, reduced_alpha=reduced_alpha,
+                       viscosity0=lubricant.viscosity)
+
     def reduced(self, p: np.ndarray) -> np.ndarray:
         """Kapitsa reduced pressure q(p) = int_0^p eta0/eta ds = (1 - exp(-alpha p))/alpha
         [Pa] (Barus; q = p when alpha = 0)."""
@@ -194,14 +216,9 @@ class UpwindFluxModel(FluxModel):
         return np.ones_like(p, dtype=float) if not a else np.exp(-a * np.asarray(p))
 
     def _coefficients(self, p, h, dx):
-        """rho [-], eps [m^3/(Pa s)], d rho/dp [1/Pa] and the upwind factor
-        (dx/2) u_m xi [m^2/s] at the quadrature points (real or complex-step input)."""
-        rho, eps, drho, c, _ = self._coefficients_and_peclet(p, h, dx)
-        return rho, eps, drho, c
-
-    def _coefficients_and_peclet(self, p, h, dx):
-        """:meth:`_coefficients` and the cell Peclet number Pe [-] (None without the
-        Peclet fade-out)."""
+        """rho [-], eps [m^3/(Pa s)], d rho/dp [1/Pa], the upwind factor (dx/2) u_m xi
+        [m^2/s] and the cell Peclet number Pe [-] (None without the Peclet fade-out) at
+        the quadrature points (real or complex-step input)."""
         rho = self.density(p)
         eps = rho * (h * h * h) / (12.0 * self.viscosity(p))  # h*h*h: pow() is slow
         dp = 1e3  # Pa; smooth density laws
@@ -235,7 +252,7 @@ class UpwindFluxModel(FluxModel):
         """Flux at the quadrature points [m^2/s]; with ``gq`` (gradient of the
         interpolated nodal reduced pressure [Pa/m]) the Poiseuille term is
         rho h^3/(12 eta0) grad q instead of eps grad p."""
-        return self._assemble_flux(*self._coefficients(p, h, dx), h, gp, gh, gq)
+        return self._assemble_flux(*self._coefficients(p, h, dx)[:4], h, gp, gh, gq)
 
     def _assemble_flux(self, rho, eps, drho, c, h, gp, gh, gq):
         if gq is None:
@@ -251,42 +268,41 @@ class UpwindFluxModel(FluxModel):
         """Flux with the reduced-pressure Poiseuille term and its derivatives: as
         :meth:`flux_and_derivatives`, plus dF/d(grad q) (list over gradient components
         of tuples over flux components) as a sixth item."""
-        rho, eps, drho, c, pe = self._coefficients_and_peclet(p, h, dx)
+        rho, eps, drho, c, pe = self._coefficients(p, h, dx)
         base = self._assemble_flux(rho, eps, drho, c, h, gp, gh, gq)
         vmax = float(np.max(np.abs(p))) if np.size(p) else 0.0
         step = _STEP * (vmax if vmax > 0.0 else 1.0)
         d_p = tuple(np.imag(f) / step for f in self.flux(p + 1j * step, h, gp, gh, dx, gq))
-        steps = [d_p, self._flux_dh(rho, eps, drho, c, pe, h, gp, gh, gq, dx)]
+        d_h = self._flux_dh(rho, eps, drho, c, pe, h, gp, gh, gq, dx)
         k = rho * (h * h * h) / (12.0 * self.viscosity0)
         dim = len(gp)
         zero = np.zeros_like(np.real(base[0]))
-        dgp = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgh = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgq = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgp[0] = (c * h * drho + zero,) + dgp[0][1:]
-        dgh[0] = (c * rho + zero,) + dgh[0][1:]
-        for k_ in range(dim):
-            dgq[k_] = dgq[k_][:k_] + (k + zero,) + dgq[k_][k_ + 1:]
-        return base, steps[0], steps[1], dgp, dgh, dgq
+        return (base, d_p, d_h, _diagonal(dim, c * h * drho + zero, zero),
+                _diagonal(dim, c * rho + zero, zero), _diagonal(dim, k + zero, k + zero))
 
     def flux_and_derivatives(self, p, h, gp, gh, dx):
         """As :meth:`FluxModel.flux_and_derivatives`; the flux is affine in grad p and
         grad h at fixed (p, h), so those derivatives are the coefficients themselves
         (dF_x/dp_x = eps + c h drho/dp, dF_x/dh_x = c rho, dF_y/dp_y = eps, others 0);
         d/dh is analytic (:meth:`_flux_dh`); only d/dp takes a complex step."""
-        rho, eps, drho, c, pe = self._coefficients_and_peclet(p, h, dx)
+        rho, eps, drho, c, pe = self._coefficients(p, h, dx)
         base = self._assemble_flux(rho, eps, drho, c, h, gp, gh, None)
         d_p = self._complex_step(p, h, gp, gh, dx, "p")
         d_h = self._flux_dh(rho, eps, drho, c, pe, h, gp, gh, None, dx)
-        dim = len(gp)
         zero = np.zeros_like(np.real(base[0]))
-        dgp = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgh = [tuple(zero for _ in range(dim)) for _ in range(dim)]
-        dgp[0] = (eps + c * h * drho,) + dgp[0][1:]
-        for k in range(1, dim):
-            dgp[k] = dgp[k][:k] + (eps + zero,) + dgp[k][k + 1:]
-        dgh[0] = (c * rho + zero,) + dgh[0][1:]
-        return base, d_p, d_h, dgp, dgh
+        return (base, d_p, d_h, _diagonal(len(gp), eps + c * h * drho, eps + zero),
+                _diagonal(len(gp), c * rho + zero, zero))
+
+
+def _diagonal(dim: int, first: np.ndarray, others: np.ndarray) -> list[tuple]:
+    """Derivatives of the flux with respect to a gradient that enters each flux component
+    only through its own direction: entry [k][k] is ``first`` for k = 0 (x, which carries
+    the wedge and upwind terms) and ``others`` for k > 0; off-diagonal entries are zero.
+    Layout of ``flux_and_derivatives``: a list over gradient components k of tuples over
+    flux components."""
+    zero = np.zeros_like(first)
+    return [tuple((first if k == 0 else others) if i == k else zero for i in range(dim))
+            for k in range(dim)]
 
 
 def _coth_minus_inverse(pe):

@@ -17,7 +17,7 @@ from __future__ import annotations
 import logging
 import math
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
@@ -195,9 +195,8 @@ def _make_problem(scene: Scene, setup: LineSetup, bp, piezo_scale: float = 1.0,
         reduced = None
         if REDUCED_POISEUILLE_LINE and lub.viscosity_law == "barus" and lub.effective_piezo > 0:
             reduced = lub.effective_piezo * piezo_scale
-        flux = replace(UpwindFluxModel.from_lubricant(lub, u_m, piezo_scale=piezo_scale),
-                       upwind_compliance=setup.stab_compliance, reduced_alpha=reduced,
-                       viscosity0=lub.viscosity)
+        flux = UpwindFluxModel.elastic(lub, u_m, setup.stab_compliance,
+                                       piezo_scale=piezo_scale, reduced_alpha=reduced)
     else:
         flux = FluxModel.from_lubricant(scene.lubricant, u_m,
                                         compliance=setup.stab_compliance,

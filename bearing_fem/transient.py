@@ -73,7 +73,7 @@ from .errors import SceneError
 from .line import fischer_burmeister
 from .newton import continuation, damped_newton, outcome_message
 from .point import (PointGrid, PointProblem, PointSetup, SqueezeSeries, _boundary_values,
-                    _finish, _flux, reduced_pressure_solve)
+                    _finish, _flux, _rigid_start)
 from .result import Result
 
 log = logging.getLogger(__name__)
@@ -333,23 +333,12 @@ def _make_step_problem(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, *
         coefficients=coefficients, history=history)
 
 
-def _rigid_guess(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, squeeze: float,
-                 problem: TransientPointProblem) -> np.ndarray:
-    """Isoviscous rigid (Kapitsa-type) solution at the gap: the start of the t0 solve."""
-    q, _, _ = reduced_pressure_solve(setup.grid, gap, scene.contact.rx, scene.contact.ry,
-                                     scene.kinematics.mean_speed, scene.lubricant.viscosity,
-                                     p_bc, scene.model.cavitation, squeeze)
-    if scene.model.cavitation == "reynolds":
-        q = np.maximum(q, 0.0)
-    return problem.pack(q, gap)
-
-
 def _solve_start(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, squeeze: float,
                  max_iterations: int):
     """Steady elastic solution at the gap (direct Newton, then continuation in 1/E')."""
     tol = scene.solver.tolerance
     problem = _make_step_problem(scene, setup, gap, p_bc, squeeze=squeeze)
-    z0 = _rigid_guess(scene, setup, gap, p_bc, squeeze, problem)
+    z0 = _rigid_start(scene, setup, problem, gap)  # the problem carries p_bc and squeeze
     out = damped_newton(problem, z0, tol=tol, max_iterations=max_iterations)
     if out.converged or not scene.solver.continuation:
         return out.z, out.status, out.iterations, problem, [], list(out.history)
