@@ -634,6 +634,102 @@ class HalfSpacePoint(Compliance):
                 f"Dx={self.dx:.4g} m, Dy={self.dy:.4g} m, e_prime={self.e_prime:.4g} Pa)")
 
 
+class MirroredHalfSpacePoint(Compliance):
+    """:class:`HalfSpacePoint` for pressures even in y, on the half grid y >= 0.
+
+    A point contact rolling along x is symmetric about y = 0, so its pressure is even in
+    y and the problem can be solved on the nodes with y >= 0 only. This operator maps the
+    pressure on those nodes to their displacement under the whole (mirrored) pressure
+    field:
+
+        v_(j, i) = sum_(l, k) (K[|j - l|, |i - k|] + [l > 0] K[j + l, |i - k|]) p_(l, k),
+
+    the second term being the image node (-y_l). ``apply`` mirrors the field and uses the
+    full grid's FFT product, so the result equals the full operator's on the half grid
+    (to rounding).
+
+    Parameters
+    ----------
+    x : array_like, shape (nx,)
+        Uniform node coordinates along the rolling direction, m.
+    y : array_like, shape (ny,)
+        Uniform node coordinates 0 = y_0 < y_1 < ... across it, m.
+    e_prime : float
+        Reduced modulus E', Pa.
+
+    Attributes
+    ----------
+    full : HalfSpacePoint
+        The operator on the whole grid, y from -y[-1] to y[-1] (2 ny - 1 rows).
+    """
+
+    kind = "half-space"
+
+    def __init__(self, x: np.ndarray, y: np.ndarray, e_prime: float) -> None:
+        ys, _ = _check_grid("y", y)
+        if ys[0] != 0.0:
+            raise ValueError(f"y must start at the symmetry line y = 0 m, got y[0] = {ys[0]!r} m")
+        self.full = HalfSpacePoint(x, np.concatenate([-ys[:0:-1], ys]), e_prime)
+        self.x, self.dx = self.full.x, self.full.dx
+        self.y, self.dy = ys, self.full.dy
+        self.e_prime = self.full.e_prime
+        self.shape = (ys.size, self.x.size)
+        self._kernel = self.full.kernel()  # offsets up to 2 (ny - 1): direct and image
+
+    def mirror(self, p: np.ndarray) -> np.ndarray:
+        """The even extension of a half-grid field to the full grid, shape (2 ny - 1, nx)."""
+        half = self._check_p(p).reshape(self.shape)
+        return np.concatenate([half[:0:-1], half])
+
+    def kernel(self) -> np.ndarray:
+        """The full grid's influence coefficients (see :meth:`HalfSpacePoint.kernel`)."""
+        return self.full.kernel()
+
+    def apply(self, p: np.ndarray) -> np.ndarray:
+        v = self.full.apply(self.mirror(p))[self.shape[0] - 1:]
+        return v.reshape(np.shape(p)) if np.ndim(p) == 1 else np.ascontiguousarray(v)
+
+    def diagonal(self, n: int | None = None) -> np.ndarray:
+        self._require_size(n)
+        ny, nx = self.shape
+        k = self._kernel
+        j = np.arange(ny)
+        return np.repeat(k[0, 0] + np.where(j > 0, k[2 * j, 0], 0.0), nx)
+
+    def matrix(self, n: int | None = None) -> np.ndarray:
+        """Dense C (N, N), m/Pa, flat layout ``j*nx + i``; only for N <= DENSE_POINT_CAP."""
+        self._require_size(n)
+        if self.size > DENSE_POINT_CAP:
+            raise ValueError(
+                f"MirroredHalfSpacePoint.matrix: a dense matrix of {self.size} x {self.size} "
+                f"unknowns exceeds the cap of {DENSE_POINT_CAP}; use apply() (FFT)")
+        ny, nx = self.shape
+        k = self._kernel
+        j = np.arange(ny)
+        di = np.abs(np.arange(nx)[:, None] - np.arange(nx)[None, :])
+        direct = k[np.abs(j[:, None] - j[None, :])[:, None, :, None], di[None, :, None, :]]
+        image = k[(j[:, None] + j[None, :])[:, None, :, None], di[None, :, None, :]]
+        image = image * (j > 0)[None, None, :, None]
+        return (direct + image).reshape(self.size, self.size)
+
+    def near_field(self, radius_cells: int = 1, n: int | None = None) -> scipy.sparse.csr_matrix:
+        """The entries of :meth:`matrix` with ``|j-l|, |i-k| <= radius_cells``, csr (N, N)."""
+        r = _check_radius_cells(radius_cells)
+        self._require_size(n)
+        ny, nx = self.shape
+        mat = HalfSpacePoint.near_field(self, r)  # pattern and direct term on the half grid
+        rows = np.repeat(np.arange(self.size, dtype=mat.indices.dtype), np.diff(mat.indptr))
+        row_j, row_i = np.divmod(rows, nx)
+        col_j, col_i = np.divmod(mat.indices, nx)
+        image = np.where(col_j > 0, self._kernel[row_j + col_j, np.abs(row_i - col_i)], 0.0)
+        mat.data = mat.data + image
+        return mat
+
+    def __repr__(self) -> str:
+        return (f"MirroredHalfSpacePoint(ny x nx = {self.shape[0]} x {self.shape[1]} of "
+                f"{self.full.shape[0]} x {self.full.shape[1]}, e_prime={self.e_prime:.4g} Pa)")
+
+
 _KINDS = ("rigid", "local", "half-space")
 
 

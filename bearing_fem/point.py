@@ -74,6 +74,12 @@ ELASTIC_NODES = 129
 ELASTIC_RANGE = ((-4.5, 1.5), (-3.0, 3.0))
 #: Grid sequencing: coarsest grid (nodes per direction) of the elastic Newton solve.
 COARSEST_NODES = 65
+#: Elastic loaded scenes with zero boundary pressure, a domain symmetric in y and an odd
+#: node count across it are solved on the half grid y >= 0 (the rolling contact is
+#: symmetric about y = 0; the y = 0 row is a symmetry line, not a boundary) and the
+#: result is mirrored to the whole grid, where the residual of the whole discrete system
+#: is evaluated and reported. Same equations, half the unknowns. False: whole grid.
+Y_SYMMETRY = True
 #: Near-field radius (cells) of the compliance block in the preconditioner.
 NEAR_FIELD_CELLS = 0
 #: Upwinding of the wedge term fades as xi(Pe) = coth(Pe) - 1/Pe with
@@ -153,6 +159,8 @@ class PointGrid:
     ----------
     x, y : ndarray
         Node coordinates [m], strictly increasing.
+    mirror_y : bool
+        True for the half y >= 0 of a y-symmetric domain (row 0 is the symmetry line).
     mesh : skfem.MeshQuad
     basis : skfem.CellBasis
     ops : QuadratureOperators
@@ -163,10 +171,16 @@ class PointGrid:
     mesh: MeshQuad
     basis: CellBasis
     ops: QuadratureOperators
+    mirror_y: bool = False
 
     @classmethod
-    def tensor(cls, x: np.ndarray, y: np.ndarray, intorder: int | None = None) -> "PointGrid":
-        """Build the grid from node coordinates x (nx,), y (ny,) [m]."""
+    def tensor(cls, x: np.ndarray, y: np.ndarray, intorder: int | None = None,
+               mirror_y: bool = False) -> "PointGrid":
+        """Build the grid from node coordinates x (nx,), y (ny,) [m].
+
+        ``mirror_y``: the grid is the half y >= 0 (``y[0] = 0``) of a domain symmetric in
+        y; its first row is the symmetry line (free nodes, natural condition).
+        """
         x = np.asarray(x, dtype=float)
         y = np.asarray(y, dtype=float)
         for name, v in (("x", x), ("y", y)):
@@ -183,7 +197,10 @@ class PointGrid:
         mesh = MeshQuad(p, t)
         kw = {} if intorder is None else {"intorder": intorder}
         basis = CellBasis(mesh, ElementQuad1(), **kw)
-        return cls(x=x, y=y, mesh=mesh, basis=basis, ops=quadrature_operators(basis))
+        if mirror_y and y[0] != 0.0:
+            raise ValueError(f"a mirrored grid starts at y = 0 m, got y[0] = {y[0]!r} m")
+        return cls(x=x, y=y, mesh=mesh, basis=basis, ops=quadrature_operators(basis),
+                   mirror_y=mirror_y)
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -203,6 +220,8 @@ class PointGrid:
         """Flat boolean mask of the boundary nodes."""
         m = np.zeros(self.shape, dtype=bool)
         m[0, :] = m[-1, :] = m[:, 0] = m[:, -1] = True
+        if self.mirror_y:
+            m[0, 1:-1] = False  # symmetry line
         return m.ravel()
 
     def interpolate(self, field: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -274,15 +293,25 @@ def _nodes(scene, default: int) -> tuple[int, int]:
     return int(n[0]), int(n[1])
 
 
-def point_setup(scene, nodes: tuple[int, int] | None = None) -> PointSetup:
+def _mirrorable(y_range: tuple[float, float], ny: int) -> bool:
+    """True if a uniform grid of ``ny`` nodes on ``y_range`` has a node row at y = 0 and
+    is symmetric about it."""
+    return y_range[0] == -y_range[1] and ny % 2 == 1
+
+
+def point_setup(scene, nodes: tuple[int, int] | None = None,
+                symmetric: bool = False) -> PointSetup:
     """Reference scales, default grid and compliance of a point scene.
 
     Rigid scenes: lengths in sqrt(2 rx h0) (x) and sqrt(2 ry h0) (y), sinh-graded grid.
     Elastic scenes: lengths in the Hertz semi-axes a_x, a_y, uniform grid (FFT compliance).
-    ``nodes`` overrides ``scene.mesh.nodes`` (grid sequencing).
+    ``nodes`` overrides ``scene.mesh.nodes`` (grid sequencing). ``symmetric`` (elastic
+    scenes under load with a y-symmetric grid, see :func:`_symmetric`): the half grid
+    y >= 0 with :class:`~bearing_fem.elasticity.MirroredHalfSpacePoint`; ``nodes`` still
+    counts the whole grid.
     """
     from . import units
-    from .elasticity import HalfSpacePoint
+    from .elasticity import HalfSpacePoint, MirroredHalfSpacePoint
     from .formulas import point_central_film_nvm
 
     rx, ry = scene.contact.rx, scene.contact.ry
@@ -304,9 +333,21 @@ def point_setup(scene, nodes: tuple[int, int] | None = None) -> PointSetup:
         xr = scene.mesh.x_range or (-inlet, 1.5)
         yr = scene.mesh.y_range or (-side, side)
         nxy = nodes or _nodes(scene, ELASTIC_NODES)
-        grid = PointGrid.tensor(np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0]),
-                                np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1]))
-        comp = HalfSpacePoint(grid.x, grid.y, scene.e_prime)
+        x = np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0])
+        if _mirrorable(yr, nxy[1]):  # rows mirror each other exactly about y = 0
+            y_half = np.linspace(0.0, yr[1] * y_unit, (nxy[1] + 1) // 2)
+            y = np.concatenate([-y_half[:0:-1], y_half])
+        elif symmetric:
+            raise ValueError(f"a symmetric point setup needs mesh.y_range symmetric about 0 "
+                             f"and an odd node count across, got {yr} and {nxy[1]}")
+        else:
+            y = np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1])
+        if symmetric:
+            grid = PointGrid.tensor(x, y_half, mirror_y=True)
+            comp = MirroredHalfSpacePoint(x, y_half, scene.e_prime)
+        else:
+            grid = PointGrid.tensor(x, y)
+            comp = HalfSpacePoint(grid.x, grid.y, scene.e_prime)
         # grid-scale compliance: the displacement of a node per unit pressure on its own
         # cell, C_00 = (2/(pi E')) K(0, 0) ~ 2.2 dx/E' (the line solver's analogue is
         # 4 dx/(pi E')); see UPWIND_COMPLIANCE_FACTOR
@@ -599,7 +640,14 @@ class PointProblem(ScaledResidual):
         self.gy_q = yq / ry
         X, Y = grid.node_coordinates()
         self.g_nodes = X**2 / (2 * rx) + Y**2 / (2 * ry)
-        self.mass = ops.mass
+        # a mirrored half grid stands for the whole one: the load integral counts both
+        # halves, and a symmetry-line row (half a test function) is weighted by 2 so that
+        # every scaled row equals the whole grid's row of the same node
+        self.mass = ops.mass * (2.0 if grid.mirror_y else 1.0)
+        weight = np.ones(n)
+        if grid.mirror_y:
+            weight[:grid.x.size] = 2.0
+        self._row_weight = weight[self.free]
         self.has_h0 = load is not None
         self.n_unknowns = self.free.size + (1 if self.has_h0 else 0)
         # Q1 stiffness diagonal / eps on the local cell (Laplacian): (4/3)(hy/hx + hx/hy)
@@ -659,7 +707,8 @@ class PointProblem(ScaledResidual):
         p, h0 = self.unpack(z)
         h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
         eps0 = h**3 / (12.0 * self.eta0)
-        self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free]
+        self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free] \
+            * self._row_weight
 
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^3/s] (all nodes)."""
@@ -971,18 +1020,33 @@ def _transfer(z: np.ndarray, coarse: PointProblem, fine: PointProblem) -> np.nda
     return fine.pack(p_f, h0_f)
 
 
+def _symmetric(scene, setup: PointSetup, boundary_pressure) -> bool:
+    """True if the elastic Newton solve may run on the half grid y >= 0 (``Y_SYMMETRY``):
+    a loaded elastic scene with zero boundary pressure on a grid whose rows mirror each
+    other about y = 0. The contact geometry (x^2/(2 rx) + y^2/(2 ry)), rolling along x and
+    the half-space kernel are even in y, so the discrete problem maps even pressures to
+    even residuals."""
+    y = setup.grid.y
+    return (Y_SYMMETRY and setup.compliance is not None and scene.load.force is not None
+            and boundary_pressure is None and y.size % 2 == 1
+            and np.array_equal(y, -y[::-1]))
+
+
 def _solve_newton(scene, setup: PointSetup, p_bc_fn, squeeze: float, t0: float,
                   max_iterations: int | None) -> Result:
     sol = scene.solver
     maxit = max_iterations or sol.max_iterations
     n_fine = (setup.grid.x.size, setup.grid.y.size)
     levels = _levels(n_fine) if setup.compliance is not None else [n_fine]
+    symmetric = _symmetric(scene, setup, p_bc_fn)
+    # the setup the Newton iterations run on at the finest level (whole or half grid)
+    work = point_setup(scene, nodes=n_fine, symmetric=True) if symmetric else setup
     iterations, history, steps = 0, [], []
     z, prev, status = None, None, "max_iterations"
     linear_its = 0
     problem = None
     for n in levels:
-        lvl = setup if n == n_fine else point_setup(scene, nodes=n)
+        lvl = work if n == n_fine else point_setup(scene, nodes=n, symmetric=symmetric)
         p_bc = _boundary_values(lvl.grid, p_bc_fn)
         problem = _make_problem(scene, lvl, p_bc, squeeze)
         if z is None:
@@ -1005,23 +1069,30 @@ def _solve_newton(scene, setup: PointSetup, p_bc_fn, squeeze: float, t0: float,
         prev = problem
         if status != "converged":
             break
-    if status != "converged" and len(levels) > 1 and problem.grid.size != setup.grid.size:
-        p_bc = _boundary_values(setup.grid, p_bc_fn)
-        problem = _make_problem(scene, setup, p_bc, squeeze)
+    if status != "converged" and len(levels) > 1 and problem.grid.size != work.grid.size:
+        p_bc = _boundary_values(work.grid, p_bc_fn)
+        problem = _make_problem(scene, work, p_bc, squeeze)
         z, status, it, hist, st, problem, lin = _attempt(
-            scene, setup, p_bc, squeeze, _initial_guess(scene, setup, problem), maxit,
-            initial_shift=START_SHIFT if setup.compliance is not None else 0.0)
+            scene, work, p_bc, squeeze, _initial_guess(scene, work, problem), maxit,
+            initial_shift=START_SHIFT if work.compliance is not None else 0.0)
         linear_its += lin
         iterations += it
         history += hist
         steps += [(s, f"{stat} ({n_fine[0]}x{n_fine[1]} nodes)", i) for s, stat, i in st]
+    if symmetric:  # mirror to the whole grid; the residual below is the whole system's
+        p_half, h0 = problem.unpack(z)
+        whole = _make_problem(scene, setup, _boundary_values(setup.grid, p_bc_fn), squeeze)
+        z = whole.pack(problem.compliance.mirror(p_half).ravel(), h0)
+        problem = whole
     p, h0 = problem.unpack(z)
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
     n_cont = sum(1 for s in steps if s[0] < 1.0)
     note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
+    half = ", each solved on its half y >= 0 by symmetry" if symmetric else ""
     msg = outcome_message(status, iterations, resid, sol.tolerance,
-                          detail=f" (grids {[f'{a}x{b}' for a, b in levels]}{note})", cap=maxit)
+                          detail=f" (grids {[f'{a}x{b}' for a, b in levels]}{half}{note})",
+                          cap=maxit)
     if scene.model.cavitation == "reynolds":
         p = np.maximum(p, 0.0)
     res = _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,

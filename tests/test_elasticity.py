@@ -20,6 +20,7 @@ from bearing_fem.elasticity import (
     HalfSpaceLine,
     HalfSpacePoint,
     LocalCompliance,
+    MirroredHalfSpacePoint,
     RigidCompliance,
     kodnir_local_coefficient,
     line_kernel,
@@ -327,6 +328,43 @@ def test_near_field_is_truncated_kernel():
     k = np.abs(np.subtract.outer(np.arange(10), np.arange(10)))
     np.testing.assert_array_equal(band, np.where(k <= 3, line.matrix(), 0.0),
                                   err_msg="line near_field is the band |i-j| <= radius")
+
+
+def test_mirrored_point_operator_equals_whole_grid_on_even_pressures():
+    # half grid y >= 0 of a y-symmetric grid; dx != dy, nx != ny catch transpositions
+    rng = np.random.default_rng(11)
+    nx, ny = 17, 7
+    x = -2.0e-5 + np.arange(nx) * 1.3e-6
+    y = np.arange(ny) * 2.1e-6
+    op = MirroredHalfSpacePoint(x, y, E_PRIME)
+    assert op.shape == (ny, nx) and op.full.shape == (2 * ny - 1, nx)
+    half = rng.uniform(0.0, 1.0e9, size=(ny, nx))
+    whole = np.concatenate([half[:0:-1], half])     # even extension, rows -y .. +y
+    # direct double sum over the whole grid (physical offsets), restricted to y >= 0
+    yf_all = np.concatenate([-y[:0:-1], y])
+    xf, yf = np.tile(x, 2 * ny - 1), np.repeat(yf_all, nx)
+    c = (2.0 / (math.pi * E_PRIME)) * point_kernel(
+        xf[:, None] - xf[None, :], yf[:, None] - yf[None, :], x[1] - x[0], y[1] - y[0])
+    v_direct = (c @ whole.ravel()).reshape(2 * ny - 1, nx)[ny - 1:]
+    np.testing.assert_allclose(op.apply(half), v_direct, rtol=1e-10, atol=0,
+                               err_msg="half-grid product = whole-grid direct sum of the "
+                                       "mirrored pressure, to FFT rounding")
+    np.testing.assert_allclose(op.apply(half.ravel()), v_direct.ravel(), rtol=1e-10, atol=0,
+                               err_msg="flat input (index j*nx + i) gives the same field")
+    m = op.matrix()
+    np.testing.assert_allclose(m @ half.ravel(), v_direct.ravel(), rtol=1e-12, atol=0,
+                               err_msg="dense matrix = direct plus image coefficients")
+    np.testing.assert_array_equal(op.diagonal(), np.diag(m),
+                                  err_msg="diagonal() is the matrix diagonal (image included)")
+    r = 2
+    jf, if_ = np.divmod(np.arange(nx * ny), nx)
+    in_stencil = ((np.abs(jf[:, None] - jf[None, :]) <= r)
+                  & (np.abs(if_[:, None] - if_[None, :]) <= r))
+    np.testing.assert_allclose(op.near_field(r).toarray(), np.where(in_stencil, m, 0.0),
+                               rtol=1e-15, atol=0,
+                               err_msg="near_field = dense matrix inside the square stencil")
+    with pytest.raises(ValueError, match="y must start at the symmetry line"):
+        MirroredHalfSpacePoint(x, y + 1e-6, E_PRIME)
 
 
 def test_dense_point_matrix_cap():

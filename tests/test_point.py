@@ -5,6 +5,7 @@ so only the discretisation error is measured.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -217,6 +218,50 @@ def test_fine_level_never_restarts_alpha_continuation_from_scratch():
     assert res.newton_iterations < 60, f"cost cap: {res.newton_iterations} Newton iterations"
 
 
+@pytest.mark.parametrize("ry_over_rx", [1.0, 3.0])
+def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
+    # The y-symmetric scene is solved on its half y >= 0 and mirrored; the same scene on
+    # the whole grid must give the same Newton history and fields, and the reported
+    # residual is the whole grid's.
+    import bearing_fem.point as pt
+
+    scene = _moes_scene(100, 10, 65, ry_over_rx)
+    half = solve_point(scene)
+    monkeypatch.setattr(pt, "Y_SYMMETRY", False)
+    whole = solve_point(scene)
+    assert half.status == whole.status == "converged", half.message
+    assert "by symmetry" in half.message and "by symmetry" not in whole.message
+    assert half.newton_iterations == whole.newton_iterations, (half.continuation,
+                                                               whole.continuation)
+    assert half.pressure.shape == whole.pressure.shape == (65, 65)
+    np.testing.assert_allclose(half.pressure, whole.pressure, rtol=0,
+                               atol=1e-7 * whole.quantities["p_max"],
+                               err_msg="same discrete equations: fields agree to the Newton "
+                                       "tolerance (1e-8 scaled), not to the discretisation")
+    np.testing.assert_array_equal(half.pressure, half.pressure[::-1],
+                                  err_msg="the mirrored result is exactly even in y")
+    for key in ("h_central", "h_min", "p_max", "load", "friction_force"):
+        np.testing.assert_allclose(half.quantities[key], whole.quantities[key], rtol=1e-7,
+                                   err_msg=f"{key}: same solution to the Newton tolerance")
+    residual = float(half.message.split("residual ")[1].split()[0])
+    assert residual <= scene.solver.tolerance, half.message
+
+
+def test_half_grid_needs_a_symmetric_scene():
+    import bearing_fem.point as pt
+
+    scene = _moes_scene(100, 10, 65)
+    setup = pt.point_setup(scene)
+    assert pt._symmetric(scene, setup, None)
+    assert not pt._symmetric(scene, setup, lambda x, y: 0.0 * x), "Dirichlet data given"
+    even = dataclasses.replace(scene, mesh=MeshSpec(nodes=(65, 64)))
+    assert not pt._symmetric(even, pt.point_setup(even), None), "no node row at y = 0"
+    shifted = dataclasses.replace(scene, mesh=MeshSpec(nodes=(65, 65), y_range=(-3.0, 2.5)))
+    assert not pt._symmetric(shifted, pt.point_setup(shifted), None), "asymmetric range"
+    with pytest.raises(ValueError, match="y_range symmetric"):
+        pt.point_setup(shifted, symmetric=True)
+
+
 def test_elastic_squeeze_thickens_film_at_fixed_load():
     # An approaching surface (dh0/dt < 0) builds squeeze pressure that carries part of
     # the load, so at a fixed load the wedge needs less pressure: the film is thicker.
@@ -276,6 +321,14 @@ def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
     assert errs[-1] == 0.0 and errs[0] > errs[1] > 0.0, (
         f"h_c error against the finest grid falls with refinement: {errs}")
     assert np.isfinite(out["growth_exponent"])
+    assert [r["grid_solved"] for r in rows] == ["half"] * 3
+    whole = out["rows_whole_grid"]
+    assert [r["grid_solved"] for r in whole] == ["whole"] * 3
+    for h, w in zip(rows, whole):
+        assert w["unknowns_solved"] == h["unknowns"] > h["unknowns_solved"]
+        np.testing.assert_allclose(h["h_central_m"], w["h_central_m"], rtol=1e-6,
+                                   err_msg="half and whole grid solve the same equations "
+                                           "(Newton tolerance 1e-8 scaled)")
     assert "h_c err" in (tmp_path / "point_benchmark.txt").read_text()
 
 
