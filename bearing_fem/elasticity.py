@@ -664,6 +664,8 @@ class MirroredHalfSpacePoint(Compliance):
     """
 
     kind = "half-space"
+    #: C[(j, i), (0, k)] has no image term, C[(0, k), (j, i)] has one: not symmetric
+    is_symmetric = False
 
     def __init__(self, x: np.ndarray, y: np.ndarray, e_prime: float) -> None:
         ys, _ = _check_grid("y", y)

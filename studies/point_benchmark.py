@@ -64,6 +64,7 @@ def _run(grids: tuple[int, ...], M: float, L: float, symmetric: bool) -> list[di
         for n in grids:
             scene = moes_scene(M, L, n)
             load_before = os.getloadavg()[0]
+            rss_before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
             t0, c0 = time.perf_counter(), time.process_time()
             res = solve_point(scene)
             wall, cpu = time.perf_counter() - t0, time.process_time() - c0
@@ -84,7 +85,10 @@ def _run(grids: tuple[int, ...], M: float, L: float, symmetric: bool) -> list[di
                          "h_central_m": res.quantities.get("h_central"),
                          "h_min_m": res.quantities.get("h_min"),
                          "p_max_Pa": res.quantities.get("p_max"),
-                         "peak_rss_mb": rss_mb})
+                         "peak_rss_mb": rss_mb,
+                         # ru_maxrss is the process's peak so far: this solve's own
+                         # peak only if it raised it
+                         "peak_rss_is_this_solve": bool(rss_mb > rss_before)})
     finally:
         point.Y_SYMMETRY = saved
     return rows
@@ -129,8 +133,12 @@ def main(outdir, quick: bool = False, *, M: float = 100.0, L: float = 10.0,
                          f"{r['wall_time_s']:8.1f} {r['cpu_time_s']:7.1f} "
                          f"{r['newton_iterations_finest']:9d} "
                          f"{r['time_per_iteration_s']:7.2f} {r['gmres_iterations_total']:6.0f} "
-                         f"{r['peak_rss_mb']:8.0f} {r['h_central_error_vs_finest']:8.1e} "
+                         f"{r['peak_rss_mb']:7.0f}{' ' if r['peak_rss_is_this_solve'] else '*'} "
+                         f"{r['h_central_error_vs_finest']:8.1e} "
                          f"{r['h_min_error_vs_finest']:9.1e} {lb:9.2f}/{la:<8.2f}")
+    if not all(r["peak_rss_is_this_solve"] for rows in runs.values() for r in rows):
+        lines.append("* peak MB of an earlier, larger solve in this process (the solve itself "
+                     "stayed below it)")
     for k, e in exponents.items():
         lines.append(f"growth exponent of time per Newton iteration vs unknowns ({k} grid): "
                      f"{e:.2f}")

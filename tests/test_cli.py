@@ -5,8 +5,6 @@ import json
 import subprocess
 import sys
 
-import pytest
-
 from bearing_fem import analytic, cli
 from bearing_fem.io import read_result, scene_to_toml
 
