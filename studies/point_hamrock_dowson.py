@@ -14,8 +14,11 @@ Expected outcome
     scatter of about 5-10 %, and its minimum-film fit is the weaker one).
 
 Run ``python studies/point_hamrock_dowson.py [outdir] [nodes] [M L] [--density=LAW]
-[--ratios=1,2]``; ``--density=dowson-higginson`` adds the compressibility of the lubricant
-(default: incompressible, as the Moes map).
+[--ratios=1,2] [--domain-scale=S]``; ``--density=dowson-higginson`` adds the
+compressibility of the lubricant (default: incompressible, as the Moes map);
+``--domain-scale=1.5`` enlarges the solver's default domain 1.5 times in every direction
+(inlet, outlet and sides, in Hertz semi-axes) at the same grid spacing, (nodes - 1) S + 1
+nodes per direction: do the films depend on where the domain ends?
 """
 from __future__ import annotations
 
@@ -28,7 +31,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bearing_fem.formulas import point_films_hamrock_dowson  # noqa: E402
-from bearing_fem.point import solve_point  # noqa: E402
+from bearing_fem.point import point_setup, solve_point  # noqa: E402
+from bearing_fem.scene import MeshSpec  # noqa: E402
 from point_ehl_map import moes_scene  # noqa: E402
 
 RATIOS = (1.0, 2.0, 4.0, 8.0)
@@ -36,11 +40,18 @@ RATIOS = (1.0, 2.0, 4.0, 8.0)
 
 def main(outdir: str | Path = "out/point_hamrock_dowson", nodes: int = 65,
          M: float = 100.0, L: float = 10.0, ratios: tuple[float, ...] = RATIOS,
-         density: str | None = None) -> dict:
+         density: str | None = None, domain_scale: float = 1.0) -> dict:
     """Solve each ellipse, compare with Hamrock-Dowson, write JSON and a markdown table.
 
     ``density``: the lubricant's density law (None: the scene default, incompressible).
+    ``domain_scale``: the default domain enlarged this many times about the contact
+    centre at the same spacing ((nodes - 1) domain_scale + 1 must be an odd integer).
     """
+    grid_nodes = (nodes - 1) * domain_scale + 1
+    if abs(grid_nodes - round(grid_nodes)) > 1e-9 or round(grid_nodes) % 2 == 0:
+        raise ValueError(f"(nodes - 1) * domain_scale + 1 must be an odd integer, got "
+                         f"{grid_nodes:g} for nodes = {nodes}, domain_scale = {domain_scale}")
+    grid_nodes = int(round(grid_nodes))
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     rows = []
@@ -48,10 +59,21 @@ def main(outdir: str | Path = "out/point_hamrock_dowson", nodes: int = 65,
         scene = moes_scene(M, L, nodes, ry_over_rx=ratio, max_iterations=60)
         if density is not None:
             scene = replace(scene, lubricant=replace(scene.lubricant, density=density))
+        if domain_scale != 1.0:
+            setup = point_setup(scene)
+            xr = (setup.grid.x[0] / setup.x_unit, setup.grid.x[-1] / setup.x_unit)
+            yr = (setup.grid.y[0] / setup.y_unit, setup.grid.y[-1] / setup.y_unit)
+            scene = replace(scene, mesh=MeshSpec(
+                nodes=(grid_nodes, grid_nodes),
+                x_range=tuple(domain_scale * v for v in xr),
+                y_range=tuple(domain_scale * v for v in yr)))
         t0 = time.perf_counter()
         r = solve_point(scene)
         row = {"ry_over_rx": ratio, "status": r.status, "iterations": r.newton_iterations,
-               "seconds": time.perf_counter() - t0}
+               "seconds": time.perf_counter() - t0, "nodes": grid_nodes,
+               "domain_scale": domain_scale,  # ranges in Hertz semi-axes; None: default
+               "x_range": list(scene.mesh.x_range) if scene.mesh.x_range else None,
+               "y_range": list(scene.mesh.y_range) if scene.mesh.y_range else None}
         if r.success:
             lub, kin = scene.lubricant, scene.kinematics
             h_min_hd, h_c_hd = point_films_hamrock_dowson(
@@ -64,8 +86,11 @@ def main(outdir: str | Path = "out/point_hamrock_dowson", nodes: int = 65,
         rows.append(row)
         print(row, flush=True)
     nan = float("nan")
+    domain = "" if domain_scale == 1.0 else (
+        f", default domain x {domain_scale:g} ({grid_nodes} x {grid_nodes} nodes, the "
+        f"spacing of {nodes} x {nodes})")
     lines = [f"Moes M = {M}, L = {L}, {nodes} x {nodes} nodes, density "
-             f"{density or 'incompressible'}", "",
+             f"{density or 'incompressible'}{domain}", "",
              "| Ry/Rx | status | Newton its | s | h_c vs HD % | h_min vs HD % | h_min/h_c |",
              "|---|---|---|---|---|---|---|"]
     for row in rows:
@@ -86,4 +111,5 @@ if __name__ == "__main__":
          *(float(v) for v in args[2:4]),
          ratios=tuple(float(v) for v in opts["ratios"].split(",")) if "ratios" in opts
          else RATIOS,
-         density=opts.get("density"))
+         density=opts.get("density"),
+         domain_scale=float(opts.get("domain-scale", 1.0)))

@@ -312,6 +312,26 @@ def test_hamrock_dowson_study_density_option(tmp_path, load_study):
     assert "dowson-higginson" in (tmp_path / "dh" / "point_hamrock_dowson.md").read_text()
 
 
+def test_hamrock_dowson_study_domain_scale(tmp_path, load_study):
+    mod = load_study("point_hamrock_dowson")
+    base = mod.main(tmp_path / "base", nodes=65, ratios=(1.0,))["rows"][0]
+    big = mod.main(tmp_path / "big", nodes=65, ratios=(1.0,), domain_scale=1.5)["rows"][0]
+    assert base["status"] == big["status"] == "converged"
+    assert base["x_range"] is None and big["nodes"] == 97
+    # default domain: outlet 1.5 a_x, inlet max(4.5, 8 sqrt(2 rx h_c)/a_x), sides half that
+    assert big["x_range"][1] == pytest.approx(1.5 * 1.5) and big["x_range"][0] <= 1.5 * -4.5
+    inlet = -big["x_range"][0] / 1.5
+    assert big["y_range"] == pytest.approx([-1.5 * max(3.0, inlet / 2), 1.5 * max(3.0, inlet / 2)])
+    np.testing.assert_allclose(big["h_min"], base["h_min"], rtol=0.02,
+                               err_msg="same spacing, 1.5x domain: the films do not depend on "
+                                       "where the domain ends (measured 0.4 points at most on "
+                                       "257^2 spacing)")
+    assert "default domain x 1.5 (97 x 97 nodes" in (
+        tmp_path / "big" / "point_hamrock_dowson.md").read_text()
+    with pytest.raises(ValueError, match="odd integer"):
+        mod.main(tmp_path / "bad", nodes=65, ratios=(1.0,), domain_scale=1.3)
+
+
 def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
     out = load_study("point_benchmark").main(tmp_path, quick=True)
     rows = out["rows"]
