@@ -205,23 +205,26 @@ def quadrature_operators(basis: CellBasis) -> QuadratureOperators:
     nel = basis.mesh.nelements
     dofs = basis.element_dofs  # (n_local, nel)
     nq = basis.dx.shape[1]
-    rows = np.arange(nel * nq).reshape(nel, nq)
+    nl = dofs.shape[0]
     dim = basis.mesh.dim()
     vals, grads = [], [[] for _ in range(dim)]
-    rr, cc = [], []
-    for k in range(dofs.shape[0]):
+    for k in range(nl):
         phi = basis.basis[k][0]
-        rr.append(rows.ravel())
-        cc.append(np.repeat(dofs[k], nq))
-        vals.append(np.asarray(phi).ravel())  # DiscreteField is array-like (its values)
+        vals.append(np.asarray(phi).reshape(nel, nq))  # DiscreteField is array-like
         for d in range(dim):
-            grads[d].append(np.asarray(phi.grad[d]).ravel())
-    rr = np.concatenate(rr)
-    cc = np.concatenate(cc)
+            grads[d].append(np.asarray(phi.grad[d]).reshape(nel, nq))
     shape = (nel * nq, basis.N)
+    # CSR built directly: row (e, q) holds the element's nl nodes in increasing order
+    # (what a COO -> CSR conversion with sorted indices gives; no duplicates to sum)
+    order = np.argsort(dofs, axis=0, kind="stable").T                      # (nel, nl)
+    idx = np.int32 if max(basis.N, nel * nq * nl) < 2**31 - 1 else np.int64
+    indices = np.repeat(np.take_along_axis(dofs.T, order, axis=1)[:, None, :], nq,
+                        axis=1).ravel().astype(idx)
+    indptr = (np.arange(nel * nq + 1, dtype=np.int64) * nl).astype(idx)
 
     def build(data: list[np.ndarray]) -> sp.csr_matrix:
-        return sp.csr_matrix((np.concatenate(data), (rr, cc)), shape=shape)
+        values = np.take_along_axis(np.stack(data, axis=-1), order[:, None, :], axis=2)
+        return sp.csr_matrix((values.ravel(), indices, indptr), shape=shape)
 
     points = np.asarray(basis.mapping.F(basis.X)).reshape(dim, -1)
     # element extent along x (the streamline direction of the Reynolds equation)

@@ -376,6 +376,42 @@ def test_seed001_study_quick(tmp_path, load_study):
 # ---------------------------------------------------------------------------------------
 # solver internals: fast assembly, preconditioner ordering, flux derivatives
 # ---------------------------------------------------------------------------------------
+@pytest.mark.parametrize("kind", ["quad", "line-p2", "tri"])
+def test_quadrature_operators_equal_coo_assembly(kind):
+    # the maps are built directly in CSR (sorted element nodes per row); the plain COO
+    # assembly of the same basis values must give the same matrices entry for entry
+    from skfem import (CellBasis, ElementLineP2, ElementQuad1, ElementTriP1, MeshLine,
+                       MeshQuad, MeshTri)
+
+    from bearing_fem.fe import quadrature_operators
+
+    basis = {"quad": lambda: CellBasis(MeshQuad.init_tensor(np.linspace(0, 1, 7),
+                                                            np.linspace(0, 2, 5)),
+                                       ElementQuad1()),
+             "line-p2": lambda: CellBasis(MeshLine(np.linspace(0, 1, 11)), ElementLineP2()),
+             "tri": lambda: CellBasis(MeshTri().refined(2), ElementTriP1())}[kind]()
+    ops = quadrature_operators(basis)
+    nel, nq = basis.mesh.nelements, basis.dx.shape[1]
+    dofs = basis.element_dofs
+    rows = np.tile(np.arange(nel * nq), dofs.shape[0])
+    cols = np.concatenate([np.repeat(d, nq) for d in dofs])
+
+    def coo(fields):
+        return sp.csr_matrix((np.concatenate([np.asarray(f).ravel() for f in fields]),
+                              (rows, cols)), shape=(nel * nq, basis.N))
+
+    phis = [basis.basis[k][0] for k in range(dofs.shape[0])]
+    refs = [coo(phis)] + [coo([phi.grad[d] for phi in phis])
+                          for d in range(basis.mesh.dim())]
+    for got, ref in zip((ops.value,) + tuple(ops.grad), refs):
+        ref.sort_indices()
+        assert got.has_sorted_indices
+        np.testing.assert_array_equal(got.indptr, ref.indptr)
+        np.testing.assert_array_equal(got.indices, ref.indices)
+        np.testing.assert_array_equal(got.data, ref.data,
+                                      err_msg="same values, no summation: bitwise equal")
+
+
 def test_element_assembler_matches_sparse_products():
     # graded in y, uniform in x: the element-wise sum must equal the sparse-product form
     grid = PointGrid.tensor(np.linspace(-1e-3, 2e-3, 9), 1e-3 * np.sinh(np.linspace(-1, 1, 12)))
