@@ -227,7 +227,8 @@ def main(outdir: str | Path = "out/point_fmg_crosscheck", fmg: str | Path | None
               f"{r['H_min']:.4f} | {r['H_c']:.4f}") if r else \
             f"none accepted | {w['fmg_failed_settings']} | - | - | - | -"
         lines.append(
-            f"| {w['M']:g} | {w['L']:g} | {w['nodes']}^2 | {fm} | {w['H_min']:.4f} | {w['H_c']:.4f} | "
+            f"| {w['M']:g} | {w['L']:g} | {w['nodes']}^2 | {fm} | {w['H_min']:.4f} | "
+            f"{w['H_c']:.4f} | "
             f"{w['H_min_vs_fmg']:+.1f} | {w['H_c_vs_fmg']:+.1f} | {w['H_min_hd']:.4f} | "
             f"{w['H_c_hd']:.4f} | "
             f"{_pct(r['H_min'], w['H_min_hd']) if r else math.nan:+.1f} | "
