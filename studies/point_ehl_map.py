@@ -280,6 +280,12 @@ def _write(outdir: Path, cases: list[dict], grids: tuple[int, ...], t_start: flo
     return out
 
 
+def map_cases() -> list[tuple[float, float]]:
+    """The (M, L) cases of the map that are solved (alpha p_h <= MAX_ALPHA_PH)."""
+    return [(float(M), float(L)) for M in M_VALUES for L in L_VALUES
+            if _formulas(moes_scene(M, L, 65))["moes"]["alpha_ph"] <= MAX_ALPHA_PH]
+
+
 def hamrock_groups() -> str:
     """Hamrock-Dowson groups U, W, G (mean speed, rx) of the map cases, and their spans.
 
@@ -287,11 +293,9 @@ def hamrock_groups() -> str:
     varied U over nearly two orders of magnitude and W over one).
     """
     rows = []
-    for M in M_VALUES:
-        for L in L_VALUES:
-            g = _formulas(moes_scene(M, L, 65))["moes"]
-            if g["alpha_ph"] <= MAX_ALPHA_PH:
-                rows.append((M, L, g["U"], g["W"], g["G"]))
+    for M, L in map_cases():
+        g = _formulas(moes_scene(M, L, 65))["moes"]
+        rows.append((M, L, g["U"], g["W"], g["G"]))
     lines = ["| M | L | U | W | G |", "|---|---|---|---|---|"]
     lines += [f"| {M:g} | {L:g} | {U:.3g} | {W:.3g} | {G:.0f} |" for M, L, U, W, G in rows]
     us, ws = [r[2] for r in rows], [r[3] for r in rows]

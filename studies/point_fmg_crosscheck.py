@@ -55,11 +55,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from point_ehl_map import L_VALUES, M_VALUES, MAX_ALPHA_PH, moes_scene  # noqa: E402
+from point_ehl_map import _formulas, map_cases, moes_scene  # noqa: E402
 
-from bearing_fem.formulas import point_films_hamrock_dowson  # noqa: E402
 from bearing_fem.point import solve_point  # noqa: E402
-from bearing_fem.units import moes_point  # noqa: E402
 
 #: Settings tried for the multigrid program, in order: (start level, cycles per level,
 #: cycle type 1 = V, 2 = W). Six W cycles close the force balance best (|g| ~ 1e-6);
@@ -148,16 +146,6 @@ def run_fmg(program: str | Path, M: float, L: float, levels: int = FMG_LEVELS[0]
     return {"result": None, "failed_settings": len(tried), "tried": tried}
 
 
-def map_cases() -> list[tuple[float, float]]:
-    """The (M, L) cases of the circular map (alpha p_h <= 40)."""
-    cases = []
-    for M in M_VALUES:
-        for L in L_VALUES:
-            if L / math.pi * (1.5 * M) ** (1.0 / 3.0) <= MAX_ALPHA_PH:   # PHYSICS.md 4
-                cases.append((float(M), float(L)))
-    return cases
-
-
 def _pct(a: float, b: float) -> float:
     return 100.0 * (a / b - 1.0) if (a is not None and b and math.isfinite(a)) else math.nan
 
@@ -189,13 +177,12 @@ def main(outdir: str | Path = "out/point_fmg_crosscheck", fmg: str | Path | None
         base = moes_scene(M, L, n)
         scene = replace(base, mesh=replace(base.mesh, x_range=FMG_X_RANGE,
                                            y_range=FMG_Y_RANGE))
-        c, lub, u = scene.contact, scene.lubricant, scene.kinematics.mean_speed
-        args = (scene.load.force, c.rx, c.ry, scene.e_prime, lub.viscosity, u, lub.piezo)
         t0 = time.perf_counter()
         res = solve_point(scene)
         wall = time.perf_counter() - t0
-        scale = 1.0 / (c.rx * math.sqrt(moes_point(*args)["U_sum"]))  # h -> H_Moes
-        h_min_hd, h_c_hd = point_films_hamrock_dowson(*args)
+        f = _formulas(scene)
+        h_min_hd, h_c_hd = f["h_min_hd_m"], f["h_central_hd_m"]
+        scale = 1.0 / (scene.contact.rx * math.sqrt(f["moes"]["U_sum"]))  # h -> H_Moes
         q = res.quantities
         row = {"M": M, "L": L, "nodes": n, "status": res.status,
                "newton_iterations": res.newton_iterations, "wall_time_s": wall,
