@@ -68,6 +68,13 @@ class Result:
     wall_time_s : float
     extra_fields : dict
         Further nodal fields written to the exports, name -> array (names carry units).
+    warnings : list of str
+        Short sentences on anything the user should know about the numbers (generic
+        model defaults, inputs outside the usual physical range, quantities whose
+        estimated discretisation error is large); empty when all is well.
+    error_estimate : dict or None
+        Estimated relative discretisation error of the main quantities (see
+        :meth:`summary` and ``docs/accuracy.md``); None where no estimate was made.
     """
 
     success: bool
@@ -86,6 +93,8 @@ class Result:
     wall_time_s: float = 0.0
     continuation: list[tuple[float, str, int]] = field(default_factory=list)
     extra_fields: dict[str, np.ndarray] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    error_estimate: dict[str, Any] | None = None
 
     def __repr__(self) -> str:
         return (f"Result(message={self.message!r}, success={self.success}, "
@@ -103,7 +112,14 @@ class Result:
         return self
 
     def summary(self) -> dict[str, Any]:
-        """Flat dict with the keys of INTERFACE.md section 3 (SI units)."""
+        """The result as a flat dict of SI numbers (``docs/api.md`` lists every key).
+
+        Besides the numbers: ``status``, ``success``, ``message``, ``warnings`` (list of
+        str), ``error_estimate`` (dict or None), ``units`` (unit of every dimensional
+        key), ``dimensionless`` (Moes/Hamrock groups), ``version`` and ``scene``.
+        A quantity that is undefined (e.g. a friction coefficient without a positive
+        load) is ``None``, never NaN.
+        """
         from . import __version__
 
         kind = self.scene.contact.kind
@@ -112,17 +128,27 @@ class Result:
             "success": bool(self.success),
             "message": self.message,
         }
-        out.update({k: float(v) for k, v in self.quantities.items()})
+        out.update({k: _number_or_none(v) for k, v in self.quantities.items()})
         out["h0"] = float(self.h0)
         out["newton_iterations"] = int(self.newton_iterations)
         out["linear_solves"] = int(self.linear_solves)
         out["wall_time_s"] = float(self.wall_time_s)
         out["dofs"] = self.dofs
+        out["warnings"] = [str(w) for w in self.warnings]
+        out["error_estimate"] = None if self.error_estimate is None else dict(self.error_estimate)
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
         out["dimensionless"] = dimensionless_groups(self.scene)
         out["version"] = __version__
         out["scene"] = self.scene.to_dict()
         return out
+
+
+def _number_or_none(value: Any) -> Any:
+    """A float, a string label as it is, or None for a missing or non-finite number."""
+    if value is None or isinstance(value, str):
+        return value
+    v = float(value)
+    return v if np.isfinite(v) else None
 
 
 def dimensionless_groups(scene) -> dict[str, float]:
