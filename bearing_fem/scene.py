@@ -331,12 +331,21 @@ class SolverSpec:
     continuation : bool
         Fall back to continuation in the pressure-viscosity coefficient when a direct
         attempt stalls.
+    iteration_budget : int
+        Newton iterations allowed to the whole solve: every grid level, attempt and
+        continuation step together. The solve stops with status ``budget_exhausted``
+        when they are spent, and the message says what was spent.
+    time_limit : float or None
+        Wall-clock limit of the solve [s] (checked between Newton iterations), or None
+        for no limit; status ``time_limit`` when it is reached.
     """
 
     _section = "solver"
     tolerance: float = 1e-8
     max_iterations: int = 50
     continuation: bool = True
+    iteration_budget: int = 400
+    time_limit: float | None = None
 
     def __post_init__(self) -> None:
         _positive(self, "tolerance", "(dimensionless)")
@@ -347,6 +356,12 @@ class SolverSpec:
             raise SceneError(f"solver.max_iterations must be an integer in [1, 10000], got {m!r}")
         if not isinstance(self.continuation, bool):
             raise SceneError(f"solver.continuation must be true or false, got {self.continuation!r}")
+        b = self.iteration_budget
+        if isinstance(b, bool) or not isinstance(b, int) or not 1 <= b <= 100000:
+            raise SceneError(f"solver.iteration_budget must be an integer in [1, 100000] "
+                             f"(Newton iterations), got {b!r}")
+        if self.time_limit is not None:
+            _positive(self, "time_limit", "s")
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -200,6 +200,12 @@ CASES = [
     _case("solver.continuation-type", {"solver.continuation": "yes"},
           "solver.continuation"),
     _case("solver.continuation-int", {"solver.continuation": 1}, "solver.continuation"),
+    _case("solver.iteration_budget-zero", {"solver.iteration_budget": 0},
+          "solver.iteration_budget"),
+    _case("solver.iteration_budget-float", {"solver.iteration_budget": 40.5},
+          "solver.iteration_budget"),
+    _case("solver.time_limit-negative", {"solver.time_limit": -1.0}, "solver.time_limit", " s"),
+    _case("solver.time_limit-type", {"solver.time_limit": "soon"}, "solver.time_limit"),
     # --- thermal (model.thermal = "patch") -------------------------------------------
     _case("unknown-key-thermal", {"thermal.colour": 1}, "thermal.colour", base="thermal"),
     *[_case(f"thermal.{k}-missing", {f"thermal.{k}": DELETE}, f"thermal.{k}",
