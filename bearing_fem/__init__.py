@@ -23,6 +23,8 @@ _LAZY = {
     "solve": ("bearing_fem.solver", "solve"),
     "Result": ("bearing_fem.result", "Result"),
     "export": ("bearing_fem.io", "export"),
+    "Bearing": ("bearing_fem.bearing", "Bearing"),
+    "solve_bearing": ("bearing_fem.bearing", "solve_bearing"),
 }
 _SUBMODULES = {"kodnir", "thermal", "analytic", "formulas", "units", "rheology",
                "elasticity", "reynolds", "newton", "post", "io", "plot", "scene",

@@ -715,3 +715,115 @@ def blok_semielliptic_maximum() -> tuple[float, float]:
     res = minimize_scalar(lambda xi: -g(xi), bounds=(0.0, 1.5), method="bounded",
                           options={"xatol": 1e-10})
     return float(res.x), float(-res.fun / np.sqrt(np.pi))
+
+
+# ----------------------------------------------------------------------------------------
+# Section D: rolling-bearing load distribution in the continuous (many-element) limit
+# (Stribeck 1901; Sjovall 1933; Harris & Kotzalas, "Rolling Bearing Analysis"). The
+# discrete load distribution of bearing_fem.bearing.loads is checked against these.
+# ----------------------------------------------------------------------------------------
+def stribeck_constant(exponent: float) -> float:
+    """Z Q_max / F_r of a zero-clearance radial bearing, continuous limit (Stribeck).
+
+    With Q(psi) = Q_max cos(psi)^n on |psi| < pi/2 and F_r = sum Q cos(psi) ~
+    (Z/2pi) int Q cos(psi) dpsi:  Z Q_max/F_r = 1 / J_r(1/2), where
+    (1/2pi) int_{-pi/2}^{pi/2} cos^(n+1) = Gamma(n/2 + 1) / (2 sqrt(pi) Gamma(n/2 + 3/2)).
+    n = 3/2 (point contact) gives 4.37, n = 10/9 (line contact) 4.08.
+
+    Parameters
+    ----------
+    exponent : float
+        Load-deflection exponent n [-] of Q = K delta^n, > 0.
+
+    Returns
+    -------
+    float
+        Z Q_max / F_r [-].
+    """
+    from scipy.special import gammaln
+
+    _a_pos("exponent", exponent, "(dimensionless)")
+    n = float(exponent)
+    return float(2.0 * np.sqrt(np.pi) * np.exp(gammaln(0.5 * n + 1.5) - gammaln(0.5 * n + 1.0)))
+
+
+def harris_radial_integral(epsilon: float, exponent: float) -> float:
+    """Harris's radial load integral J_r(epsilon) = F_r / (Z Q_max) (continuous limit).
+
+    J_r = (1/2pi) int [1 - (1 - cos psi)/(2 epsilon)]^n cos psi dpsi over the loaded arc
+    |psi| <= psi_l, cos psi_l = 1 - 2 epsilon (the whole circle for epsilon >= 1), with
+    the load-zone factor epsilon = (1 - c_r/delta_r)/2 of a radial displacement delta_r
+    and a radial clearance c_r (Harris & Kotzalas). J_r(1/2) = 1/stribeck_constant(n).
+
+    Parameters
+    ----------
+    epsilon : float
+        Load-zone factor [-], > 0.
+    exponent : float
+        Load-deflection exponent n [-].
+
+    Returns
+    -------
+    float
+        J_r [-].
+    """
+    from scipy.integrate import quad
+
+    _a_pos("epsilon", epsilon, "(dimensionless)")
+    _a_pos("exponent", exponent, "(dimensionless)")
+    eps, n = float(epsilon), float(exponent)
+    lim = np.pi if eps >= 1.0 else float(np.arccos(1.0 - 2.0 * eps))
+
+    def f(t: float) -> float:  # psi = lim t; 1 - cos psi = 2 sin^2(psi/2) (no cancellation)
+        psi = lim * t
+        base = 1.0 - np.sin(0.5 * psi) ** 2 / eps
+        return max(base, 0.0) ** n * np.cos(psi)
+
+    val = lim * quad(f, 0.0, 1.0, epsabs=0.0, epsrel=1e-10, limit=200)[0]
+    return float(val / np.pi)
+
+
+def harris_load_zone(radial_load: float, elements: int, stiffness: float, exponent: float,
+                     clearance: float) -> dict[str, float]:
+    """Load zone of a radial bearing with clearance, continuous limit (Harris).
+
+    Solves F_r = Z K (delta_r - c_r)^n J_r(epsilon), epsilon = (1 - c_r/delta_r)/2, for
+    the radial displacement delta_r (Brent), then psi_l = arccos(c_r/delta_r).
+
+    Parameters
+    ----------
+    radial_load : float
+        F_r [N] (per row).
+    elements : int
+        Z per row.
+    stiffness : float
+        K of Q = K delta^n for the element (both contacts in series) [N/m^n].
+    exponent : float
+        n [-].
+    clearance : float
+        Radial clearance c_r [m], >= 0.
+
+    Returns
+    -------
+    dict
+        ``radial_displacement`` [m], ``epsilon`` [-], ``half_angle`` psi_l [rad],
+        ``max_load`` Q_max [N].
+    """
+    _a_pos("radial_load", radial_load, "N")
+    _a_pos("stiffness", stiffness, "N/m^n")
+    _a_nonneg("clearance", clearance, "m")
+    z, k, n, c = int(elements), float(stiffness), float(exponent), float(clearance)
+
+    def resid(dr: float) -> float:
+        eps = 0.5 * (1.0 - c / dr)
+        return z * k * (dr - c) ** n * harris_radial_integral(eps, n) - radial_load
+
+    lo = c * (1.0 + 1e-12) if c > 0 else 1e-15
+    hi = max(2.0 * c, (radial_load / (z * k)) ** (1.0 / n) * 10.0 + c)
+    while resid(hi) < 0.0:
+        hi *= 2.0
+    dr = _brentq(resid, lo, hi, xtol=1e-20, rtol=1e-14, maxiter=500)
+    eps = 0.5 * (1.0 - c / dr)
+    return {"radial_displacement": float(dr), "epsilon": float(eps),
+            "half_angle": float(np.arccos(min(c / dr, 1.0))),
+            "max_load": float(k * (dr - c) ** n)}

@@ -1,0 +1,871 @@
+"""Bearing descriptions: frozen, keyword-only, SI dataclasses, validated when built.
+
+A bearing file is TOML with a top-level ``[bearing]`` table (the internal geometry; a
+contact scene file has ``[contact]`` instead) and the sections ``[materials]``,
+``[lubricant]``, ``[operation]`` (required), ``[model]``, ``[mesh]``, ``[solver]``,
+``[traction]``, ``[thermal]`` and ``[empirical]`` (optional). Every key, its unit and
+its default are listed in ``docs/bearing.md``. Every invalid value raises
+:class:`~bearing_fem.errors.SceneError` naming the field, the value and the unit; an
+unknown key lists the known ones.
+
+Units: lengths in m, forces in N, moduli in Pa, viscosity in Pa s, speeds in 1/min
+(``inner_rpm``), angles in degrees (``contact_angle``, ``first_element_azimuth``) and
+temperatures in deg C (the Prokofiev law of Yachikov & Vostrikov 2015 is written in them).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import MISSING, dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any, Literal, Mapping
+
+from ..errors import SceneError
+from ..scene import SolverSpec, Traction
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover
+    import tomli as tomllib  # type: ignore[no-redef]
+
+__all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
+           "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
+           "BEARING_TYPES", "MATERIAL_PRESETS", "load_example", "example_names"]
+
+#: Bearing types: radial deep-groove and angular-contact ball bearings (one row),
+#: cylindrical roller bearings (any number of rows) and tapered roller bearings
+#: (simplified: both raceways at one contact angle, rib contact neglected).
+BEARING_TYPES = ("deep-groove-ball", "angular-contact-ball", "cylindrical-roller",
+                 "tapered-roller")
+BALL_TYPES = ("deep-groove-ball", "angular-contact-ball")
+ROLLER_TYPES = ("cylindrical-roller", "tapered-roller")
+
+#: Material presets: name -> (Young's modulus [Pa], Poisson ratio [-], density [kg/m^3]).
+#: Bearing steel (AISI 52100) and hot-isostatically pressed silicon nitride (Si3N4).
+MATERIAL_PRESETS: dict[str, tuple[float, float, float]] = {
+    "steel": (2.08e11, 0.30, 7850.0),
+    "si3n4": (3.10e11, 0.26, 3200.0),
+}
+
+
+# ---------------------------------------------------------------------------------------
+# validation helpers (module-local; same messages as the scene validators)
+# ---------------------------------------------------------------------------------------
+def _where(obj: Any, name: str) -> str:
+    return f"{getattr(obj, '_section', type(obj).__name__.lower())}.{name}"
+
+
+def _number(obj: Any, name: str, unit: str) -> float:
+    value = getattr(obj, name)
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SceneError(f"{_where(obj, name)} must be a number in {unit}, got {value!r} "
+                         f"({type(value).__name__})")
+    value = float(value)
+    if not math.isfinite(value):
+        raise SceneError(f"{_where(obj, name)} must be finite ({unit}), got {value!r}")
+    object.__setattr__(obj, name, value)
+    return value
+
+
+def _positive(obj: Any, name: str, unit: str) -> float:
+    value = _number(obj, name, unit)
+    if value <= 0.0:
+        raise SceneError(f"{_where(obj, name)} must be > 0 {unit}, got {value!r}")
+    return value
+
+
+def _nonneg(obj: Any, name: str, unit: str) -> float:
+    value = _number(obj, name, unit)
+    if value < 0.0:
+        raise SceneError(f"{_where(obj, name)} must be >= 0 {unit}, got {value!r}")
+    return value
+
+
+def _optional_positive(obj: Any, name: str, unit: str) -> None:
+    if getattr(obj, name) is not None:
+        _positive(obj, name, unit)
+
+
+def _integer(obj: Any, name: str, lo: int, hi: int, what: str) -> int:
+    value = getattr(obj, name)
+    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
+        raise SceneError(f"{_where(obj, name)} must be an integer in [{lo}, {hi}] ({what}), "
+                         f"got {value!r}")
+    return value
+
+
+def _choice(obj: Any, name: str, allowed: tuple[str, ...]) -> str:
+    value = getattr(obj, name)
+    if not isinstance(value, str) or value not in allowed:
+        raise SceneError(f"{_where(obj, name)} must be one of "
+                         f"{', '.join(map(repr, allowed))}, got {value!r}")
+    return value
+
+
+def _bool(obj: Any, name: str) -> bool:
+    value = getattr(obj, name)
+    if not isinstance(value, bool):
+        raise SceneError(f"{_where(obj, name)} must be true or false, got {value!r}")
+    return value
+
+
+def _range(obj: Any, name: str) -> None:
+    r = getattr(obj, name)
+    if r is None:
+        return
+    if (not isinstance(r, (list, tuple)) or len(r) != 2
+            or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
+        raise SceneError(f"{_where(obj, name)} must be two numbers [start, end] (in Hertz "
+                         f"half-widths), got {r!r}")
+    lo, hi = float(r[0]), float(r[1])
+    if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
+        raise SceneError(f"{_where(obj, name)} must satisfy start < 0 < end (in Hertz "
+                         f"half-widths), got {r!r}")
+    object.__setattr__(obj, name, (lo, hi))
+
+
+# ---------------------------------------------------------------------------------------
+# sections
+# ---------------------------------------------------------------------------------------
+@dataclass(frozen=True, kw_only=True)
+class Geometry:
+    """Internal geometry of the bearing (the ``[bearing]`` table).
+
+    Parameters
+    ----------
+    type : {"deep-groove-ball", "angular-contact-ball", "cylindrical-roller", "tapered-roller"}
+    bore, outside_diameter : float
+        d and D [m] (catalogue dimensions; used by the empirical models).
+    element_diameter : float
+        Ball or roller diameter D_w [m] (tapered: the mean roller diameter).
+    elements : int
+        Rolling elements per row Z.
+    pitch_diameter : float or None
+        d_m [m]; None: (d + D)/2.
+    rows : int
+        Rows of rolling elements (ball bearings: 1). The rows share the radial load
+        equally (rigid rings, no tilt).
+    width : float or None
+        Bearing width B [m] (informative).
+    contact_angle : float
+        Nominal (unloaded) contact angle [deg]: angular-contact ball and tapered roller
+        bearings; must be 0 for deep-groove (its free angle follows from the clearance)
+        and cylindrical roller bearings.
+    radial_clearance : float
+        Radial internal clearance c_r [m] (half the diametral clearance P_d), >= 0.
+        Angular-contact ball bearings take it from the contact angle instead.
+    inner_conformity, outer_conformity : float or None
+        Groove radius over ball diameter f = r/D_w [-], in (0.5, 0.6]; balls only,
+        default 0.52 and 0.53.
+    effective_length : float or None
+        Effective roller length l_we [m]; rollers only (required).
+    profile : {"straight", "crowned", "logarithmic"}
+        Roller profile; a profiled roller is cut into ``slices`` along its length.
+    crown_drop : float or None
+        Crown drop at the roller ends [m] (profile "crowned").
+    flat_length : float
+        Straight middle part of a crowned roller [m] (default 0: fully crowned).
+    design_load : float or None
+        Design roller load Q_d [N] of a logarithmic (Johns-Gohar) profile.
+    slices : int or None
+        Slices along a profiled roller (default 11; 1 for a straight roller).
+    first_element_azimuth : float
+        Azimuth of element 0 [deg] from the direction of the radial load.
+    static_load_rating : float or None
+        C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1).
+    """
+
+    _section = "bearing"
+    type: Literal["deep-groove-ball", "angular-contact-ball", "cylindrical-roller",
+                  "tapered-roller"]
+    bore: float
+    outside_diameter: float
+    element_diameter: float
+    elements: int
+    pitch_diameter: float | None = None
+    rows: int = 1
+    width: float | None = None
+    contact_angle: float = 0.0
+    radial_clearance: float = 0.0
+    inner_conformity: float | None = None
+    outer_conformity: float | None = None
+    effective_length: float | None = None
+    profile: Literal["straight", "crowned", "logarithmic"] = "straight"
+    crown_drop: float | None = None
+    flat_length: float = 0.0
+    design_load: float | None = None
+    slices: int | None = None
+    first_element_azimuth: float = 0.0
+    static_load_rating: float | None = None
+
+    def __post_init__(self) -> None:
+        _choice(self, "type", BEARING_TYPES)
+        d = _positive(self, "bore", "m")
+        big_d = _positive(self, "outside_diameter", "m")
+        if big_d <= d:
+            raise SceneError(f"bearing.outside_diameter = {big_d!r} m must exceed "
+                             f"bearing.bore = {d!r} m")
+        dw = _positive(self, "element_diameter", "m")
+        _integer(self, "elements", 3, 500, "rolling elements per row")
+        _integer(self, "rows", 1, 8, "rows")
+        if self.pitch_diameter is not None:
+            dm = _positive(self, "pitch_diameter", "m")
+            if not d < dm < big_d:
+                raise SceneError(f"bearing.pitch_diameter = {dm!r} m must lie between the "
+                                 f"bore {d!r} m and the outside diameter {big_d!r} m")
+        dm = self.mean_diameter
+        if dw >= 0.5 * (big_d - d) or dw >= dm:
+            raise SceneError(f"bearing.element_diameter = {dw!r} m does not fit between the "
+                             f"rings (D - d)/2 = {0.5 * (big_d - d)!r} m")
+        z = self.elements
+        if z * dw > math.pi * dm * (1.0 + 1e-9):
+            raise SceneError(f"bearing.elements = {z} elements of {dw!r} m do not fit on "
+                             f"the pitch circle pi d_m = {math.pi * dm!r} m")
+        _optional_positive(self, "width", "m")
+        alpha = _number(self, "contact_angle", "deg")
+        _nonneg(self, "radial_clearance", "m")
+        _number(self, "first_element_azimuth", "deg")
+        _optional_positive(self, "static_load_rating", "N")
+        if self.type in BALL_TYPES:
+            self._check_ball()
+        else:
+            self._check_roller()
+        if self.type in ("angular-contact-ball", "tapered-roller"):
+            if not 0.0 < alpha < 60.0:
+                raise SceneError(f"bearing.contact_angle must lie in (0, 60) deg for a "
+                                 f"{self.type} bearing, got {alpha!r} deg")
+        elif alpha != 0.0:
+            raise SceneError(f"bearing.contact_angle applies to angular-contact ball and "
+                             f"tapered roller bearings, got {alpha!r} deg for {self.type!r}")
+
+    def _check_ball(self) -> None:
+        if self.rows != 1:
+            raise SceneError(f"bearing.rows must be 1 for a ball bearing, got {self.rows!r}")
+        for name, default in (("inner_conformity", 0.52), ("outer_conformity", 0.53)):
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, default)
+            f = _number(self, name, "(dimensionless)")
+            if not 0.5 < f <= 0.6:
+                raise SceneError(f"bearing.{name} = r/D_w must lie in (0.5, 0.6] "
+                                 f"(dimensionless), got {f!r}")
+        for name in ("effective_length", "crown_drop", "design_load", "slices"):
+            if getattr(self, name) is not None:
+                raise SceneError(f"bearing.{name} applies to roller bearings only, got "
+                                 f"{getattr(self, name)!r} for {self.type!r}")
+        if self.profile != "straight" or self.flat_length != 0.0:
+            raise SceneError("bearing.profile and bearing.flat_length apply to roller "
+                             f"bearings only, got {self.profile!r}, {self.flat_length!r} m")
+        if self.type == "angular-contact-ball" and self.radial_clearance != 0.0:
+            raise SceneError("bearing.radial_clearance of an angular-contact ball bearing "
+                             "follows from bearing.contact_angle (deg); give only the angle, "
+                             f"got {self.radial_clearance!r} m")
+
+    def _check_roller(self) -> None:
+        for name in ("inner_conformity", "outer_conformity"):
+            if getattr(self, name) is not None:
+                raise SceneError(f"bearing.{name} applies to ball bearings only, got "
+                                 f"{getattr(self, name)!r} for {self.type!r}")
+        if self.effective_length is None:
+            raise SceneError(f"bearing.effective_length (m) is required for a {self.type} "
+                             "bearing")
+        lw = _positive(self, "effective_length", "m")
+        _choice(self, "profile", ("straight", "crowned", "logarithmic"))
+        flat = _nonneg(self, "flat_length", "m")
+        if flat >= lw and self.profile == "crowned":
+            raise SceneError(f"bearing.flat_length = {flat!r} m must be shorter than "
+                             f"bearing.effective_length = {lw!r} m")
+        if self.profile == "crowned":
+            if self.crown_drop is None:
+                raise SceneError("bearing.crown_drop (m) is required for profile = 'crowned'")
+            _positive(self, "crown_drop", "m")
+        elif self.crown_drop is not None:
+            raise SceneError(f"bearing.crown_drop applies to profile = 'crowned', got "
+                             f"{self.crown_drop!r} m with profile {self.profile!r}")
+        if self.profile == "logarithmic":
+            if self.design_load is None:
+                raise SceneError("bearing.design_load (N) is required for profile = "
+                                 "'logarithmic' (Johns-Gohar)")
+            _positive(self, "design_load", "N")
+        elif self.design_load is not None:
+            raise SceneError(f"bearing.design_load applies to profile = 'logarithmic', got "
+                             f"{self.design_load!r} N")
+        if self.profile != "straight" and flat != 0.0 and self.profile != "crowned":
+            raise SceneError("bearing.flat_length applies to profile = 'crowned'")
+        if self.slices is None:
+            object.__setattr__(self, "slices", 1 if self.profile == "straight" else 11)
+        n = _integer(self, "slices", 1, 101, "slices along the roller")
+        if self.profile == "straight" and n != 1:
+            raise SceneError(f"bearing.slices = {n} needs a roller profile ('crowned' or "
+                             "'logarithmic'); a straight roller is one line contact")
+
+    @property
+    def mean_diameter(self) -> float:
+        """Pitch diameter d_m [m] (given, or (d + D)/2)."""
+        if self.pitch_diameter is not None:
+            return float(self.pitch_diameter)
+        return 0.5 * (float(self.bore) + float(self.outside_diameter))
+
+    @property
+    def is_ball(self) -> bool:
+        """True for ball bearings (point contacts)."""
+        return self.type in BALL_TYPES
+
+
+@dataclass(frozen=True, kw_only=True)
+class BearingMaterials:
+    """Rings and rolling elements: a preset name and optional overrides.
+
+    Parameters
+    ----------
+    rings, elements : {"steel", "si3n4"}
+        Material presets (:data:`MATERIAL_PRESETS`).
+    ring_modulus, element_modulus : float or None
+        Young's moduli [Pa]; None: from the preset.
+    ring_poisson, element_poisson : float or None
+        Poisson ratios [-]; None: from the preset.
+    element_density : float or None
+        Density of the rolling elements [kg/m^3] (centrifugal load); None: preset.
+    """
+
+    _section = "materials"
+    rings: Literal["steel", "si3n4"] = "steel"
+    elements: Literal["steel", "si3n4"] = "steel"
+    ring_modulus: float | None = None
+    ring_poisson: float | None = None
+    element_modulus: float | None = None
+    element_poisson: float | None = None
+    element_density: float | None = None
+
+    def __post_init__(self) -> None:
+        _choice(self, "rings", tuple(MATERIAL_PRESETS))
+        _choice(self, "elements", tuple(MATERIAL_PRESETS))
+        for name in ("ring_modulus", "element_modulus"):
+            _optional_positive(self, name, "Pa")
+        _optional_positive(self, "element_density", "kg/m^3")
+        for name in ("ring_poisson", "element_poisson"):
+            if getattr(self, name) is not None:
+                v = _number(self, name, "(dimensionless)")
+                if not -1.0 < v <= 0.5:
+                    raise SceneError(f"materials.{name} must lie in (-1, 0.5] "
+                                     f"(dimensionless), got {v!r}")
+
+    @property
+    def ring(self) -> tuple[float, float]:
+        """(E [Pa], nu [-]) of the rings."""
+        e, nu, _ = MATERIAL_PRESETS[self.rings]
+        return (self.ring_modulus if self.ring_modulus is not None else e,
+                self.ring_poisson if self.ring_poisson is not None else nu)
+
+    @property
+    def element(self) -> tuple[float, float]:
+        """(E [Pa], nu [-]) of the rolling elements."""
+        e, nu, _ = MATERIAL_PRESETS[self.elements]
+        return (self.element_modulus if self.element_modulus is not None else e,
+                self.element_poisson if self.element_poisson is not None else nu)
+
+    @property
+    def density(self) -> float:
+        """Density of the rolling elements [kg/m^3]."""
+        if self.element_density is not None:
+            return float(self.element_density)
+        return MATERIAL_PRESETS[self.elements][2]
+
+
+@dataclass(frozen=True, kw_only=True)
+class BearingLubricant:
+    """Oil, with its viscosity at the oil temperature or a Prokofiev temperature law.
+
+    Parameters
+    ----------
+    viscosity : float or None
+        eta0 [Pa s] at the oil temperature (``temperature_law = "none"``).
+    piezo : float
+        Barus alpha [1/Pa] (``temperature_law = "none"`` or no alpha table).
+    viscosity_law : {"barus", "roelands", "constant"}
+    compressibility : {"incompressible", "dowson-higginson"}
+        Density-pressure law of the contact scenes.
+    density : float
+        Oil density at ambient pressure [kg/m^3] (kinematic viscosity of the empirical
+        models, Nikitin's criteria).
+    temperature_law : {"none", "prokofiev"}
+        ``prokofiev``: eta0(t) = reference_viscosity (reference_temperature/t)^exponent,
+        t in deg C (Yachikov & Vostrikov 2015).
+    reference_viscosity : float or None
+        eta_ref [Pa s] at ``reference_temperature``.
+    reference_temperature : float
+        t_ref [deg C].
+    exponent : float or None
+        Prokofiev exponent n [-].
+    piezo_temperatures, piezo_values : list of float or None
+        alpha(t) table [deg C], [1/Pa]: ln(alpha) linear in t.
+    thermal_conductivity : float
+        Oil conductivity [W/(m K)] (Nikitin's Prandtl number).
+    specific_heat : float
+        Oil specific heat [J/(kg K)] (Nikitin's Prandtl number).
+    """
+
+    _section = "lubricant"
+    viscosity: float | None = None
+    piezo: float = 0.0
+    viscosity_law: Literal["barus", "roelands", "constant"] = "barus"
+    compressibility: Literal["incompressible", "dowson-higginson"] = "incompressible"
+    density: float = 870.0
+    temperature_law: Literal["none", "prokofiev"] = "none"
+    reference_viscosity: float | None = None
+    reference_temperature: float = 40.0
+    exponent: float | None = None
+    piezo_temperatures: tuple[float, ...] | None = None
+    piezo_values: tuple[float, ...] | None = None
+    thermal_conductivity: float = 0.13
+    specific_heat: float = 2000.0
+
+    def __post_init__(self) -> None:
+        _nonneg(self, "piezo", "1/Pa")
+        if self.piezo > 1e-6:
+            raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils "
+                             f"1e-8..3e-8), got {self.piezo!r}")
+        _choice(self, "viscosity_law", ("barus", "roelands", "constant"))
+        _choice(self, "compressibility", ("incompressible", "dowson-higginson"))
+        _positive(self, "density", "kg/m^3")
+        _choice(self, "temperature_law", ("none", "prokofiev"))
+        _positive(self, "reference_temperature", "deg C")
+        _positive(self, "thermal_conductivity", "W/(m K)")
+        _positive(self, "specific_heat", "J/(kg K)")
+        if self.temperature_law == "none":
+            if self.viscosity is None:
+                raise SceneError("lubricant.viscosity (Pa s at the oil temperature) is "
+                                 "required unless lubricant.temperature_law = 'prokofiev'")
+            _positive(self, "viscosity", "Pa s")
+            for name in ("reference_viscosity", "exponent", "piezo_temperatures"):
+                if getattr(self, name) is not None:
+                    raise SceneError(f"lubricant.{name} needs lubricant.temperature_law = "
+                                     "'prokofiev'")
+        else:
+            if self.viscosity is not None:
+                raise SceneError("lubricant.viscosity is set by the temperature law: give "
+                                 "lubricant.reference_viscosity (Pa s) instead")
+            for name, unit in (("reference_viscosity", "Pa s"), ("exponent", "(dimensionless)")):
+                if getattr(self, name) is None:
+                    raise SceneError(f"lubricant.{name} ({unit}) is required for "
+                                     "temperature_law = 'prokofiev'")
+                _positive(self, name, unit)
+        ts, vs = self.piezo_temperatures, self.piezo_values
+        if (ts is None) != (vs is None):
+            raise SceneError("lubricant: give both piezo_temperatures (deg C) and "
+                             f"piezo_values (1/Pa), or neither; got {ts!r}, {vs!r}")
+        if ts is not None:
+            ok = (isinstance(ts, (list, tuple)) and isinstance(vs, (list, tuple))
+                  and len(ts) == len(vs) >= 1
+                  and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                          and math.isfinite(v) for v in (*ts, *vs)))
+            if not ok:
+                raise SceneError("lubricant.piezo_temperatures (deg C) and piezo_values "
+                                 f"(1/Pa) must be equal-length lists of numbers, got {ts!r}, "
+                                 f"{vs!r}")
+            if any(b <= a for a, b in zip(ts, ts[1:])):
+                raise SceneError("lubricant.piezo_temperatures must be strictly ascending "
+                                 f"(deg C), got {ts!r}")
+            if any(not 0.0 < v <= 1e-6 for v in vs):
+                raise SceneError(f"lubricant.piezo_values must lie in (0, 1e-6] 1/Pa, got "
+                                 f"{vs!r}")
+            object.__setattr__(self, "piezo_temperatures", tuple(float(v) for v in ts))
+            object.__setattr__(self, "piezo_values", tuple(float(v) for v in vs))
+
+
+@dataclass(frozen=True, kw_only=True)
+class Operation:
+    """Operating point: inner ring rotating, outer ring fixed.
+
+    Parameters
+    ----------
+    inner_rpm : float
+        Inner-ring speed n [1/min], > 0.
+    radial_load, axial_load : float
+        Fr, Fa [N], >= 0, not both zero. The radial load acts along azimuth 0.
+    oil_temperature : float or None
+        Oil (and bearing) temperature [deg C]; required by a temperature law and by the
+        thermal model.
+    """
+
+    _section = "operation"
+    inner_rpm: float
+    radial_load: float = 0.0
+    axial_load: float = 0.0
+    oil_temperature: float | None = None
+
+    def __post_init__(self) -> None:
+        _positive(self, "inner_rpm", "1/min")
+        fr = _nonneg(self, "radial_load", "N")
+        fa = _nonneg(self, "axial_load", "N")
+        if fr == 0.0 and fa == 0.0:
+            raise SceneError("operation: radial_load and axial_load are both 0 N; give a "
+                             "load (an unloaded bearing has no EHL contacts)")
+        if self.oil_temperature is not None:
+            t = _number(self, "oil_temperature", "deg C")
+            if t <= 0.0:
+                raise SceneError(f"operation.oil_temperature must be > 0 deg C (Prokofiev "
+                                 f"law), got {t!r}")
+
+    @property
+    def inner_speed(self) -> float:
+        """Inner-ring angular speed omega_i [rad/s]."""
+        return 2.0 * math.pi * float(self.inner_rpm) / 60.0
+
+
+@dataclass(frozen=True, kw_only=True)
+class BearingModel:
+    """Model options of the bearing solve.
+
+    Parameters
+    ----------
+    centrifugal : bool
+        Add the centrifugal force of the rolling elements (orbiting with the cage) to the
+        load distribution (outer contacts then carry more than inner ones).
+    thermal : {"none", "patch"}
+        ``patch``: thermally coupled contact solves (line contacts only; needs the
+        Prokofiev law in ``[lubricant]`` and ``operation.oil_temperature``).
+    elasticity : {"half-space", "local"}
+        Elastic model of every contact scene (``local``: Kodnir's compliance, line
+        contacts only).
+    roughness : float or None
+        Composite rms roughness sigma = sqrt(Rq1^2 + Rq2^2) [m] for the film parameter
+        lambda = h_min / sigma; None: lambda not reported.
+    min_load_fraction : float
+        Elements whose load is below this fraction of the largest element load are not
+        solved (reported as excluded, with the reason) [-]. 0: solve every element
+        with a load.
+    """
+
+    _section = "model"
+    centrifugal: bool = False
+    thermal: Literal["none", "patch"] = "none"
+    elasticity: Literal["half-space", "local"] = "half-space"
+    roughness: float | None = None
+    min_load_fraction: float = 1e-3
+
+    def __post_init__(self) -> None:
+        _bool(self, "centrifugal")
+        _choice(self, "thermal", ("none", "patch"))
+        _choice(self, "elasticity", ("half-space", "local"))
+        _optional_positive(self, "roughness", "m")
+        v = _nonneg(self, "min_load_fraction", "(dimensionless)")
+        if v >= 1.0:
+            raise SceneError(f"model.min_load_fraction must be < 1 (dimensionless), got {v!r}")
+
+
+@dataclass(frozen=True, kw_only=True)
+class BearingMesh:
+    """Mesh of every contact scene (defaults: the contact solver's own).
+
+    Parameters
+    ----------
+    line_nodes : int or None
+        Nodes of each line-contact scene.
+    point_nodes : (int, int) or None
+        (nx, ny) of each point-contact scene.
+    x_range, y_range : (float, float) or None
+        Domain in Hertz half-widths (``y_range``: point contacts).
+    """
+
+    _section = "mesh"
+    line_nodes: int | None = None
+    point_nodes: tuple[int, int] | None = None
+    x_range: tuple[float, float] | None = None
+    y_range: tuple[float, float] | None = None
+
+    def __post_init__(self) -> None:
+        if self.line_nodes is not None:
+            _integer(self, "line_nodes", 9, 20001, "nodes")
+        n = self.point_nodes
+        if n is not None:
+            if (not isinstance(n, (list, tuple)) or len(n) != 2
+                    or any(isinstance(v, bool) or not isinstance(v, int) or not 9 <= v <= 2049
+                           for v in n)):
+                raise SceneError(f"mesh.point_nodes must be two integers [nx, ny] in "
+                                 f"[9, 2049], got {n!r}")
+            object.__setattr__(self, "point_nodes", (int(n[0]), int(n[1])))
+        _range(self, "x_range")
+        _range(self, "y_range")
+
+
+@dataclass(frozen=True, kw_only=True)
+class BearingThermal:
+    """Options of the thermal patch (``model.thermal = "patch"``; see docs/coupling.md).
+
+    Parameters
+    ----------
+    conductivity, density, heat_capacity : float
+        Body lambda [W/(m K)], rho [kg/m^3], c [J/(kg K)] (bearing steel defaults).
+    source_model : {"jaeger", "fe"}
+    contact_temperature : {"mean", "max"}
+    max_iterations : int
+    tolerance : float
+        [K].
+    relaxation : float
+        [-], in (0, 1].
+    """
+
+    _section = "thermal"
+    conductivity: float = 46.0
+    density: float = 7850.0
+    heat_capacity: float = 470.0
+    source_model: Literal["jaeger", "fe"] = "jaeger"
+    contact_temperature: Literal["mean", "max"] = "mean"
+    max_iterations: int = 30
+    tolerance: float = 0.05
+    relaxation: float = 0.7
+
+    def __post_init__(self) -> None:
+        _positive(self, "conductivity", "W/(m K)")
+        _positive(self, "density", "kg/m^3")
+        _positive(self, "heat_capacity", "J/(kg K)")
+        _choice(self, "source_model", ("jaeger", "fe"))
+        _choice(self, "contact_temperature", ("mean", "max"))
+        _integer(self, "max_iterations", 1, 1000, "thermal iterations")
+        _positive(self, "tolerance", "K")
+        r = _positive(self, "relaxation", "(dimensionless)")
+        if r > 1.0:
+            raise SceneError(f"thermal.relaxation must lie in (0, 1] (dimensionless), got {r!r}")
+
+
+@dataclass(frozen=True, kw_only=True)
+class EmpiricalOptions:
+    """Coefficients of the empirical torque models (see docs/bearing.md).
+
+    Parameters
+    ----------
+    palmgren_f0 : float or None
+        Palmgren's lubrication factor f0 [-]; None: the typical value for the type and
+        an oil bath (:data:`bearing_fem.bearing.empirical.PALMGREN_F0`).
+    palmgren_f1 : float or None
+        Palmgren's load factor f1 [-]; None: from the type
+        (:func:`bearing_fem.bearing.empirical.palmgren_f1`).
+    friction_coefficient : float or None
+        Reduced friction coefficient f_pr [-] of the bore-based form M1 = f_pr P d/2
+        (Yachikov & Vostrikov 2015); None: that model is not evaluated.
+    skf_series : str or None
+        Bearing series for the SKF four-component model's geometry constants
+        (:data:`bearing_fem.bearing.empirical.SKF_GEOMETRY_CONSTANTS`).
+    skf_r1, skf_r2, skf_s1, skf_s2 : float or None
+        Geometry constants given directly (override the series).
+    lubrication : {"oil-bath", "oil-jet", "oil-air", "grease"}
+        Lubrication method (SKF replenishment constant).
+    nikitin_flow_ratio : float or None
+        q/q_nom [-] of Nikitin's (2011) criterial loss model (ball bearings); None: not
+        evaluated.
+    nikitin_set : {"steel", "ceramic", "joint"}
+        Nikitin's coefficient set.
+    """
+
+    _section = "empirical"
+    palmgren_f0: float | None = None
+    palmgren_f1: float | None = None
+    friction_coefficient: float | None = None
+    skf_series: str | None = None
+    skf_r1: float | None = None
+    skf_r2: float | None = None
+    skf_s1: float | None = None
+    skf_s2: float | None = None
+    lubrication: Literal["oil-bath", "oil-jet", "oil-air", "grease"] = "oil-bath"
+    nikitin_flow_ratio: float | None = None
+    nikitin_set: Literal["steel", "ceramic", "joint"] = "joint"
+
+    def __post_init__(self) -> None:
+        for name in ("palmgren_f0", "palmgren_f1", "friction_coefficient", "skf_r1",
+                     "skf_r2", "skf_s1", "skf_s2", "nikitin_flow_ratio"):
+            _optional_positive(self, name, "(dimensionless)" if not name.startswith("skf")
+                               else "(catalogue units)")
+        if self.skf_series is not None and not isinstance(self.skf_series, str):
+            raise SceneError(f"empirical.skf_series must be a string, got {self.skf_series!r}")
+        _choice(self, "lubrication", ("oil-bath", "oil-jet", "oil-air", "grease"))
+        _choice(self, "nikitin_set", ("steel", "ceramic", "joint"))
+
+
+# ---------------------------------------------------------------------------------------
+# the bearing
+# ---------------------------------------------------------------------------------------
+#: TOML table name -> (attribute of Bearing, section class). ``[bearing]`` is the geometry.
+_SECTIONS: dict[str, tuple[str, type]] = {
+    "bearing": ("geometry", Geometry),
+    "materials": ("materials", BearingMaterials),
+    "lubricant": ("lubricant", BearingLubricant),
+    "operation": ("operation", Operation),
+    "model": ("model", BearingModel),
+    "mesh": ("mesh", BearingMesh),
+    "solver": ("solver", SolverSpec),
+    "traction": ("traction", Traction),
+    "thermal": ("thermal", BearingThermal),
+    "empirical": ("empirical", EmpiricalOptions),
+}
+_REQUIRED = ("bearing", "lubricant", "operation")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Bearing:
+    """A complete, validated bearing with its operating point (SI; see docs/bearing.md).
+
+    Attributes
+    ----------
+    title : str
+    geometry : Geometry
+        The ``[bearing]`` table.
+    materials, lubricant, operation, model, mesh, solver, traction, thermal, empirical
+        The sections of the same names (``solver`` and ``traction`` are the contact
+        scene's :class:`~bearing_fem.scene.SolverSpec` and
+        :class:`~bearing_fem.scene.Traction`, applied to every contact).
+    """
+
+    title: str = ""
+    geometry: Geometry
+    materials: BearingMaterials = field(default_factory=BearingMaterials)
+    lubricant: BearingLubricant
+    operation: Operation
+    model: BearingModel = field(default_factory=BearingModel)
+    mesh: BearingMesh = field(default_factory=BearingMesh)
+    solver: SolverSpec = field(default_factory=SolverSpec)
+    traction: Traction = field(default_factory=Traction)
+    thermal: BearingThermal = field(default_factory=BearingThermal)
+    empirical: EmpiricalOptions = field(default_factory=EmpiricalOptions)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.title, str):
+            raise SceneError(f"title must be a string, got {self.title!r}")
+        g, op, lub, model = self.geometry, self.operation, self.lubricant, self.model
+        if op.axial_load > 0.0 and g.type in ROLLER_TYPES:
+            raise SceneError(f"operation.axial_load = {op.axial_load!r} N: axial loads of "
+                             f"{g.type} bearings (ribs, paired rows) are not modelled; give "
+                             "0 N")
+        if g.type == "angular-contact-ball" and op.axial_load <= 0.0:
+            raise SceneError("operation.axial_load must be > 0 N for a single-row "
+                             "angular-contact ball bearing (it cannot carry a radial load "
+                             "without an axial reaction), got 0 N")
+        if g.type in ROLLER_TYPES and op.radial_load <= 0.0:
+            raise SceneError(f"operation.radial_load must be > 0 N for a {g.type} bearing, "
+                             "got 0 N")
+        if lub.temperature_law == "prokofiev" and op.oil_temperature is None:
+            raise SceneError("operation.oil_temperature (deg C) is required by "
+                             "lubricant.temperature_law = 'prokofiev'")
+        if model.thermal == "patch":
+            if g.is_ball:
+                raise SceneError("model.thermal = 'patch' is available for line contacts "
+                                 f"(roller bearings) only, got {g.type!r}")
+            if lub.temperature_law != "prokofiev":
+                raise SceneError("model.thermal = 'patch' needs lubricant.temperature_law "
+                                 "= 'prokofiev' (reference_viscosity, exponent)")
+        if model.elasticity == "local" and g.is_ball:
+            raise SceneError("model.elasticity = 'local' (Kodnir) is defined for line "
+                             f"contacts only, got {g.type!r}")
+        if model.centrifugal and g.type in ROLLER_TYPES and g.profile != "straight":
+            raise SceneError("model.centrifugal with a profiled roller is not modelled; "
+                             "use bearing.profile = 'straight' or model.centrifugal = false")
+        if self.mesh.point_nodes is not None and not g.is_ball:
+            raise SceneError("mesh.point_nodes applies to ball bearings; use mesh.line_nodes")
+        if self.mesh.line_nodes is not None and g.is_ball:
+            raise SceneError("mesh.line_nodes applies to roller bearings; use mesh.point_nodes")
+        if self.mesh.y_range is not None and not g.is_ball:
+            raise SceneError("mesh.y_range applies to point contacts (ball bearings) only")
+
+    # ------------------------------------------------------------------------------
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> "Bearing":
+        """Build a bearing from a nested mapping with the TOML layout (docs/bearing.md)."""
+        if not isinstance(data, Mapping):
+            raise SceneError(f"a bearing must be a table of sections, got "
+                             f"{type(data).__name__}")
+        known = ("title",) + tuple(_SECTIONS)
+        unknown = [k for k in data if k not in known]
+        if unknown:
+            hint = (" (this looks like a contact scene file: use Scene.from_toml)"
+                    if "contact" in data else "")
+            raise SceneError(f"unknown bearing section(s) {', '.join(map(repr, unknown))}; "
+                             f"known: {', '.join(known)}{hint}")
+        for name in _REQUIRED:
+            if name not in data:
+                raise SceneError(f"missing bearing section [{name}]")
+        kwargs: dict[str, Any] = {}
+        if "title" in data:
+            kwargs["title"] = data["title"]
+        for table, (attr, klass) in _SECTIONS.items():
+            if table not in data:
+                continue
+            section = data[table]
+            if not isinstance(section, Mapping):
+                raise SceneError(f"[{table}] must be a table, got {section!r}")
+            names = [f.name for f in fields(klass) if not f.name.startswith("_")]
+            bad = [k for k in section if k not in names]
+            if bad:
+                raise SceneError(f"unknown key(s) {', '.join(f'{table}.{k}' for k in bad)}; "
+                                 f"known keys of [{table}]: {', '.join(names)}")
+            required = [f.name for f in fields(klass) if not f.name.startswith("_")
+                        and f.default is MISSING and f.default_factory is MISSING]
+            missing = [k for k in required if k not in section]
+            if missing:
+                raise SceneError(f"missing key(s) {', '.join(f'{table}.{k}' for k in missing)}")
+            try:
+                kwargs[attr] = klass(**dict(section))
+            except SceneError as exc:
+                if table in ("solver", "traction"):
+                    raise SceneError(str(exc)) from None
+                raise
+        return cls(**kwargs)
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> "Bearing":
+        """Read and validate a TOML bearing file."""
+        path = Path(path)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise SceneError(f"cannot read bearing file {str(path)!r}: {exc.strerror}") from None
+        return cls.from_toml_string(text, source=str(path))
+
+    @classmethod
+    def from_toml_string(cls, text: str, source: str = "<string>") -> "Bearing":
+        """Parse and validate a bearing given as TOML text."""
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise SceneError(f"{source} is not valid TOML: {exc}") from None
+        return cls.from_dict(data)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Nested dict with the TOML layout (None entries omitted); round-trips via from_dict."""
+        out: dict[str, Any] = {}
+        if self.title:
+            out["title"] = self.title
+        for table, (attr, _) in _SECTIONS.items():
+            section = getattr(self, attr)
+            entries = {}
+            for f in fields(section):
+                if f.name.startswith("_"):
+                    continue
+                v = getattr(section, f.name)
+                if v is None:
+                    continue
+                entries[f.name] = list(v) if isinstance(v, tuple) else v
+            out[table] = entries
+        return out
+
+    def replace(self, **sections: Any) -> "Bearing":
+        """Copy with whole sections replaced (``dataclasses.replace``)."""
+        return replace(self, **sections)
+
+
+def example_names() -> list[str]:
+    """Names of the example bearings shipped in ``bearing_fem/bearings/``."""
+    from importlib import resources
+
+    files = resources.files("bearing_fem") / "bearings"
+    return sorted(p.name[:-5] for p in files.iterdir() if p.name.endswith(".toml"))
+
+
+def load_example(name: str) -> Bearing:
+    """Load an example bearing shipped with the package (e.g. ``"6209"``)."""
+    from importlib import resources
+
+    available = example_names()
+    if name not in available:
+        raise SceneError(f"unknown example bearing {name!r}; available: "
+                         f"{', '.join(available)}")
+    text = (resources.files("bearing_fem") / "bearings" / f"{name}.toml").read_text(
+        encoding="utf-8")
+    return Bearing.from_toml_string(text, source=f"example bearing {name!r}")

@@ -1,0 +1,420 @@
+"""Internal load distribution of a bearing with rigid rings (Harris & Kotzalas).
+
+The inner ring is displaced radially by delta_r along azimuth psi = 0 (the direction of
+the radial load) and, for ball bearings under axial load, axially; the ring
+displacement is found so that the element loads balance the applied loads.
+
+Ball bearings (one row): the inner groove curvature centre of the ball at azimuth psi
+sits, relative to the outer groove curvature centre, at the axial offset z_a and the
+radial offset r_0 + delta_r cos(psi), with r_0 = A - c_r (A = (f_i + f_o - 1) D_w,
+c_r the radial clearance; for an angular-contact bearing c_r = A (1 - cos alpha_0)).
+Their distance s gives the elastic approach delta = s - A and the contact angle
+alpha = atan2(z_a, r_0 + delta_r cos psi): contact angles change with load. The load
+is Q = K_n(alpha) delta^(3/2), K_n the series Hertz stiffness of the inner and outer
+contacts (exact elliptical Hertz). Equilibrium of the inner ring:
+
+    sum_j Q_j cos(alpha_j) cos(psi_j) = F_r,      sum_j Q_j sin(alpha_j) = F_a.
+
+With ``model.centrifugal`` each ball is in equilibrium between its inner and outer
+contact forces and its centrifugal force F_c = m d_m omega_c^2 / 2 (Jones-Harris, no
+gyroscopic moment): the two contact angles then differ.
+
+Roller bearings (any number of rows sharing the radial load; tapered rollers with both
+raceways at the contact angle beta, paired rows, rib contact neglected): the element
+approach is delta = (delta_r cos psi - c_r) cos beta; straight rollers follow
+Palmgren's delta = 2 c Q^0.9 (both contacts), profiled rollers are cut into slices,
+each contact's slice approach delta/2 - z(y) (z the profile drop) loading the slice with
+q = (approach / c_l)^(10/9) per unit length, c_l = c l^0.9. Row equilibrium:
+sum_j Q_j cos(beta) cos(psi_j) = F_r / rows.
+
+Only numpy/scipy, :mod:`bearing_fem.units` and the bearing geometry here.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+from scipy.optimize import brentq
+
+from .description import Bearing
+from .geometry import (ball_stiffness, free_contact_angle, groove_centre_distance,
+                       radial_clearance, roller_compliance, reduced_modulus)
+
+__all__ = ["LoadDistribution", "distribute_loads", "element_azimuths", "profile_drop",
+           "series_ball_stiffness", "centrifugal_force", "LOAD_EXPONENT_BALL",
+           "LOAD_EXPONENT_LINE"]
+
+#: Load-deflection exponents: point (Hertz) and line (Palmgren) contacts.
+LOAD_EXPONENT_BALL = 1.5
+LOAD_EXPONENT_LINE = 10.0 / 9.0
+#: Relative tolerance of the load balance (Brent on the ring displacement).
+BALANCE_RTOL = 1e-12
+
+
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Element loads and contact angles of a bearing (every element of every row).
+
+    Attributes
+    ----------
+    azimuth : ndarray
+        psi_j [rad], measured from the direction of the radial load.
+    row : ndarray of int
+    load_inner, load_outer : ndarray
+        Normal contact loads Q_i, Q_o [N] (equal without centrifugal force).
+    alpha_inner, alpha_outer : ndarray
+        Contact angles [rad].
+    approach : ndarray
+        Total elastic approach of the element's two contacts [m]; <= 0 outside the load
+        zone (a gap, or the clearance not taken up).
+    in_load_zone : ndarray of bool
+        True where the element carries a load transmitted from the inner ring.
+    radial_displacement, axial_displacement : float
+        delta_r [m] and the axial displacement of the inner ring [m]: for angular-contact
+        ball bearings from the position where the balls just touch at the nominal angle
+        (z_a - A sin alpha_0), for deep-groove bearings from the centred ring (z_a); 0 for
+        rollers.
+    axial_offset : float
+        z_a [m] (balls; 0 for rollers).
+    load_zone_half_angle : float
+        psi_l [rad] where the (continuous) approach vanishes; pi for a full load zone.
+    radial_sum, axial_sum : float
+        sum Q_i cos(alpha_i) cos(psi) and sum Q_i sin(alpha_i) over all elements [N].
+    centrifugal_force : float
+        F_c per element [N] (0 unless ``model.centrifugal``).
+    slice_positions, slice_widths : ndarray or None
+        Profiled rollers: slice centres along the roller from its middle, and widths [m].
+    slice_loads : ndarray or None
+        (elements, slices) slice loads [N] (rollers with a profile).
+    exponent : float
+        Load-deflection exponent used (3/2 or 10/9).
+    stiffness : float
+        Series element stiffness K_n at the nominal contact angle [N/m^n] (straight
+        rollers and balls), for the load-zone oracle.
+    clearance : float
+        Radial clearance c_r [m] used.
+    """
+
+    azimuth: np.ndarray
+    row: np.ndarray
+    load_inner: np.ndarray
+    load_outer: np.ndarray
+    alpha_inner: np.ndarray
+    alpha_outer: np.ndarray
+    approach: np.ndarray
+    in_load_zone: np.ndarray
+    radial_displacement: float
+    axial_displacement: float
+    axial_offset: float
+    load_zone_half_angle: float
+    radial_sum: float
+    axial_sum: float
+    centrifugal_force: float
+    slice_positions: np.ndarray | None
+    slice_widths: np.ndarray | None
+    slice_loads: np.ndarray | None
+    exponent: float
+    stiffness: float
+    clearance: float
+
+    @property
+    def max_load(self) -> float:
+        """Largest inner-contact load [N]."""
+        return float(np.max(self.load_inner))
+
+
+def element_azimuths(bearing: Bearing) -> tuple[np.ndarray, np.ndarray]:
+    """(azimuth [rad], row index) of every element: psi_j = psi_0 + 2 pi j / Z per row."""
+    g = bearing.geometry
+    z = g.elements
+    psi = math.radians(g.first_element_azimuth) + 2.0 * math.pi * np.arange(z) / z
+    psi = np.angle(np.exp(1j * psi))  # wrap to (-pi, pi]
+    return np.tile(psi, g.rows), np.repeat(np.arange(g.rows), z)
+
+
+def centrifugal_force(bearing: Bearing) -> float:
+    """F_c = m (d_m/2) omega_c^2 [N] of one element orbiting at the pure-rolling cage speed
+    omega_c = omega_i (1 - gamma)/2 at the nominal contact angle (0 unless
+    ``model.centrifugal``)."""
+    if not bearing.model.centrifugal:
+        return 0.0
+    g = bearing.geometry
+    dw, dm = g.element_diameter, g.mean_diameter
+    rho = bearing.materials.density
+    if g.is_ball:
+        mass = rho * math.pi * dw**3 / 6.0
+    else:
+        mass = rho * math.pi * dw**2 / 4.0 * g.effective_length
+    gamma = dw * math.cos(free_contact_angle(bearing)) / dm
+    omega_c = bearing.operation.inner_speed * (1.0 - gamma) / 2.0
+    return float(mass * 0.5 * dm * omega_c**2)
+
+
+def profile_drop(bearing: Bearing, y: np.ndarray) -> np.ndarray:
+    """Roller profile drop z(y) [m] at positions y [m] from the roller middle.
+
+    ``crowned``: z = crown_drop ((|y| - f/2)/(l/2 - f/2))^2 outside the flat part f (a
+    parabolic crown reaching crown_drop at the roller ends); ``logarithmic``
+    (Lundberg/Johns-Gohar form): z = (2 Q_d/(pi l E')) ln[1/(1 - (2y/l)^2)], Q_d the
+    design load; ``straight``: 0.
+    """
+    g = bearing.geometry
+    y = np.abs(np.asarray(y, dtype=float))
+    lw = g.effective_length
+    if g.profile == "crowned":
+        half_flat = 0.5 * g.flat_length
+        s = np.clip((y - half_flat) / (0.5 * lw - half_flat), 0.0, None)
+        return g.crown_drop * s**2
+    if g.profile == "logarithmic":
+        x = np.clip(2.0 * y / lw, 0.0, 1.0 - 1e-12)
+        return 2.0 * g.design_load / (math.pi * lw * reduced_modulus(bearing)) \
+            * np.log(1.0 / (1.0 - x**2))
+    return np.zeros_like(y)
+
+
+def series_ball_stiffness(bearing: Bearing):
+    """K_n(alpha) [N/m^1.5] of a ball's inner and outer Hertz contacts in series,
+    K_n = (K_i^(-2/3) + K_o^(-2/3))^(-3/2), as a cubic spline in alpha [rad] on 0..75 deg,
+    and the two contact stiffnesses (K_i(alpha), K_o(alpha)) as splines."""
+    grid = np.radians(np.linspace(0.0, 75.0, 31))
+    k_i, k_o = ball_stiffness(bearing, grid)
+    k_n = (k_i ** (-2.0 / 3.0) + k_o ** (-2.0 / 3.0)) ** -1.5
+    return CubicSpline(grid, k_n), CubicSpline(grid, k_i), CubicSpline(grid, k_o)
+
+
+def _bracket_root(fun, lo: float, hi: float, what: str) -> float:
+    """Brent root of an increasing ``fun`` on [lo, hi], growing hi until it brackets."""
+    f_hi = fun(hi)
+    grow = 0
+    while f_hi < 0.0:
+        hi *= 2.0
+        f_hi = fun(hi)
+        grow += 1
+        if grow > 200:
+            raise RuntimeError(f"no {what} balances the load (bracket grew to {hi!r} m)")
+    return brentq(fun, lo, hi, xtol=1e-22, rtol=BALANCE_RTOL * 1e-2, maxiter=500)
+
+
+# ---------------------------------------------------------------------------------------
+# ball bearings
+# ---------------------------------------------------------------------------------------
+class _BallModel:
+    """Element loads of a ball bearing for a given ring displacement (delta_r, z_a)."""
+
+    def __init__(self, bearing: Bearing):
+        self.b = bearing
+        g = bearing.geometry
+        self.psi, self.row = element_azimuths(bearing)
+        self.cos_psi = np.cos(self.psi)
+        self.A = groove_centre_distance(bearing)
+        self.cr = radial_clearance(bearing)
+        self.r0 = self.A - self.cr
+        self.alpha0 = free_contact_angle(bearing)
+        self.kn, self.ki, self.ko = series_ball_stiffness(bearing)
+        self.fc = centrifugal_force(bearing)
+        dw = g.element_diameter
+        self.lo = (g.outer_conformity - 0.5) * dw   # outer groove centre -> ball centre
+        self.li = (g.inner_conformity - 0.5) * dw   # ball centre -> inner groove centre
+
+    def state(self, dr: float, za: float) -> dict[str, np.ndarray]:
+        rad = self.r0 + dr * self.cos_psi
+        if self.fc > 0.0:
+            return self._centrifugal(rad, za)
+        s = np.hypot(za, rad)
+        delta = s - self.A
+        alpha = np.arctan2(za, rad)
+        q = np.where(delta > 0.0, self.kn(alpha) * np.clip(delta, 0.0, None) ** 1.5, 0.0)
+        return {"qi": q, "qo": q, "ai": alpha, "ao": alpha, "delta": delta}
+
+    def _centrifugal(self, rad: np.ndarray, za: float) -> dict[str, np.ndarray]:
+        """Jones-Harris ball equilibrium with centrifugal force (vectorised Newton).
+
+        Unknowns: ball centre (X1 axial, X2 radial) from the outer groove curvature centre.
+        Residuals: Q_i sin a_i - Q_o sin a_o = 0 and Q_i cos a_i - Q_o cos a_o + F_c = 0.
+        """
+        fc, lo, li = self.fc, self.lo, self.li
+        s = np.hypot(za, rad)
+        # start: the ball on the line of the groove centres, outer contact loaded by F_c
+        x1 = za / s * lo
+        x2 = rad / s * lo
+
+        def forces(x1, x2):
+            do = np.hypot(x1, x2) - lo
+            di = np.hypot(za - x1, rad - x2) - li
+            ao = np.arctan2(x1, x2)
+            ai = np.arctan2(za - x1, rad - x2)
+            qo = self.ko(ao) * np.clip(do, 0.0, None) ** 1.5
+            qi = self.ki(ai) * np.clip(di, 0.0, None) ** 1.5
+            r1 = qi * np.sin(ai) - qo * np.sin(ao)
+            r2 = qi * np.cos(ai) - qo * np.cos(ao) + fc
+            return r1, r2, qi, qo, ai, ao, di, do
+
+        scale = max(fc, 1e-3)
+        h = 1e-9 * self.A
+        for _ in range(100):
+            r1, r2, *_ = forces(x1, x2)
+            if np.max(np.abs(np.concatenate([r1, r2]))) < 1e-10 * scale:
+                break
+            a1, a2, *_ = forces(x1 + h, x2)
+            b1, b2, *_ = forces(x1, x2 + h)
+            j11, j21 = (a1 - r1) / h, (a2 - r2) / h
+            j12, j22 = (b1 - r1) / h, (b2 - r2) / h
+            det = j11 * j22 - j12 * j21
+            det = np.where(np.abs(det) > 0.0, det, 1.0)
+            d1 = -(j22 * r1 - j12 * r2) / det
+            d2 = -(-j21 * r1 + j11 * r2) / det
+            step = np.hypot(d1, d2)
+            cap = 0.05 * lo
+            fac = np.where(step > cap, cap / np.maximum(step, 1e-300), 1.0)
+            x1 = x1 + fac * d1
+            x2 = x2 + fac * d2
+        r1, r2, qi, qo, ai, ao, di, do = forces(x1, x2)
+        # a ball that has lost its inner contact rides on the outer race with Q_o = F_c
+        lost = di <= 0.0
+        if np.any(lost):
+            qi = np.where(lost, 0.0, qi)
+            qo = np.where(lost, fc, qo)
+            ao = np.where(lost, 0.0, ao)
+            ai = np.where(lost, np.arctan2(za, rad), ai)
+            do = np.where(lost, (fc / self.ko(0.0)) ** (2.0 / 3.0), do)
+        return {"qi": qi, "qo": qo, "ai": ai, "ao": ao, "delta": di + do}
+
+    def sums(self, dr: float, za: float) -> tuple[float, float]:
+        st = self.state(dr, za)
+        fr = float(np.sum(st["qi"] * np.cos(st["ai"]) * self.cos_psi))
+        fa = float(np.sum(st["qi"] * np.sin(st["ai"])))
+        return fr, fa
+
+
+def _ball_distribution(bearing: Bearing) -> LoadDistribution:
+    m = _BallModel(bearing)
+    op = bearing.operation
+    fr, fa = op.radial_load, op.axial_load
+    scale = max(fr, fa)
+    # series stiffness at the nominal angle (0 for a deep-groove bearing without axial load)
+    k0 = float(m.kn(m.alpha0 if fa > 0.0 else 0.0))
+    d_guess = (5.0 * scale / (bearing.geometry.elements * k0)) ** (2.0 / 3.0)
+
+    def solve_dr(za: float) -> float:
+        if fr <= 0.0:
+            return 0.0
+        return _bracket_root(lambda d: m.sums(d, za)[0] - fr, 0.0,
+                             max(d_guess + 2.0 * m.cr, 1e-9), "radial displacement")
+
+    if fa <= 0.0:
+        za = 0.0
+    else:
+        # axial offset of first contact when delta_r = 0 (sqrt(A^2 - r0^2)); below it, only
+        # the radial displacement can load balls, and the axial sum grows with z_a
+        z_lo = 0.0
+
+        def axial_resid(za: float) -> float:
+            return m.sums(solve_dr(za), za)[1] - fa
+
+        z_hi = math.sqrt(max(m.A**2 - m.r0**2, 0.0)) + d_guess + 1e-9
+        za = _bracket_root(axial_resid, z_lo, z_hi, "axial displacement")
+    dr = solve_dr(za)
+    st = m.state(dr, za)
+    sum_r, sum_a = m.sums(dr, za)
+    # continuous load-zone boundary: s(psi) = A  ->  r0 + dr cos psi = sqrt(A^2 - za^2)
+    if za >= m.A:
+        half = math.pi
+    elif dr > 0.0:
+        c = (math.sqrt(m.A**2 - za**2) - m.r0) / dr
+        half = math.pi if c <= -1.0 else (0.0 if c >= 1.0 else math.acos(c))
+    else:
+        half = math.pi if za > math.sqrt(max(m.A**2 - m.r0**2, 0.0)) else 0.0
+    in_zone = st["qi"] > 0.0
+    return LoadDistribution(
+        azimuth=m.psi, row=m.row, load_inner=st["qi"], load_outer=st["qo"],
+        alpha_inner=st["ai"], alpha_outer=st["ao"], approach=st["delta"],
+        in_load_zone=in_zone, radial_displacement=float(dr),
+        axial_displacement=float(za - (m.A * math.sin(m.alpha0)
+                                      if bearing.geometry.type == "angular-contact-ball" else 0.0)),
+        axial_offset=float(za),
+        load_zone_half_angle=float(half), radial_sum=sum_r, axial_sum=sum_a,
+        centrifugal_force=m.fc, slice_positions=None, slice_widths=None, slice_loads=None,
+        exponent=LOAD_EXPONENT_BALL, stiffness=k0, clearance=float(m.cr))
+
+
+# ---------------------------------------------------------------------------------------
+# roller bearings
+# ---------------------------------------------------------------------------------------
+def _roller_distribution(bearing: Bearing) -> LoadDistribution:
+    g = bearing.geometry
+    psi, row = element_azimuths(bearing)
+    cos_psi = np.cos(psi)
+    beta = math.radians(g.contact_angle)
+    cb = math.cos(beta)
+    cr = float(g.radial_clearance)
+    c = roller_compliance(bearing)          # delta_contact = c Q^0.9
+    fc = centrifugal_force(bearing) * cb    # normal component at the outer raceway
+    fr_row = bearing.operation.radial_load / g.rows
+    n_sl = int(g.slices)
+    lw = g.effective_length
+    if n_sl > 1:
+        w = lw / n_sl
+        y = -0.5 * lw + w * (np.arange(n_sl) + 0.5)
+        drop = profile_drop(bearing, y)
+        c_l = c * lw**0.9                  # per unit length: approach = c_l q^0.9
+        widths = np.full(n_sl, w)
+    else:
+        y = widths = drop = None
+        c_l = None
+
+    def loads(dr: float):
+        delta = (dr * cos_psi - cr) * cb
+        if n_sl > 1:
+            app = np.clip(0.5 * delta[:, None] - drop[None, :], 0.0, None)
+            q = (app / c_l) ** (1.0 / 0.9) * widths[None, :]
+            qi = q.sum(axis=1)
+            return qi, qi, delta, q
+        if fc > 0.0:
+            qi = np.zeros_like(delta)
+            onset = c * fc**0.9
+            for j in np.nonzero(delta > onset)[0]:
+                dj = delta[j]
+                qi[j] = brentq(lambda qq: c * qq**0.9 + c * (qq + fc) ** 0.9 - dj, 0.0,
+                               (dj / c) ** (1.0 / 0.9), xtol=1e-12, rtol=1e-14)
+            return qi, qi + fc, delta, None
+        qi = np.where(delta > 0.0, (np.clip(delta, 0.0, None) / (2.0 * c)) ** (1.0 / 0.9), 0.0)
+        return qi, qi, delta, None
+
+    def resid(dr: float) -> float:
+        qi = loads(dr)[0]
+        return float(np.sum(qi[row == 0] * cb * cos_psi[row == 0])) - fr_row
+
+    d_guess = 2.0 * c * (5.0 * fr_row / (g.elements * cb)) ** 0.9 / cb + cr
+    dr = _bracket_root(resid, 0.0, d_guess, "radial displacement")
+    qi, qo, delta, sl = loads(dr)
+    half = math.pi if dr <= cr else math.acos(cr / dr)
+    alpha = np.full(psi.shape, beta)
+    k_n = (2.0 * c) ** (-1.0 / 0.9)
+    return LoadDistribution(
+        azimuth=psi, row=row, load_inner=qi, load_outer=qo, alpha_inner=alpha,
+        alpha_outer=alpha.copy(), approach=delta, in_load_zone=qi > 0.0,
+        radial_displacement=float(dr), axial_displacement=0.0, axial_offset=0.0,
+        load_zone_half_angle=float(half),
+        radial_sum=float(np.sum(qi * cb * cos_psi)), axial_sum=0.0, centrifugal_force=fc,
+        slice_positions=y, slice_widths=widths, slice_loads=sl,
+        exponent=LOAD_EXPONENT_LINE, stiffness=float(k_n), clearance=cr)
+
+
+def distribute_loads(bearing: Bearing) -> LoadDistribution:
+    """Element loads that balance the bearing's radial and axial loads (rigid rings).
+
+    Parameters
+    ----------
+    bearing : Bearing
+
+    Returns
+    -------
+    LoadDistribution
+        ``radial_sum`` and ``axial_sum`` equal the applied loads to ~1e-12 relative
+        (Brent on the ring displacement).
+    """
+    if bearing.geometry.is_ball:
+        return _ball_distribution(bearing)
+    return _roller_distribution(bearing)

@@ -1,0 +1,345 @@
+"""``solve_bearing(bearing)``: load distribution, kinematics, EHL at every loaded contact,
+totals and the empirical models side by side.
+
+Steps (docs/bearing.md):
+
+1. internal load distribution with rigid rings (:mod:`~bearing_fem.bearing.loads`);
+2. pure-rolling kinematics at the loaded contact angles (:mod:`~bearing_fem.bearing.kinematics`);
+3. one EHL scene per loaded contact (per slice of a profiled roller), identical scenes
+   solved once (:mod:`~bearing_fem.bearing.contacts`, :func:`bearing_fem.solve`);
+4. per-contact totals, the bearing friction torque from forces and moment arms, heat
+   power, films and pressures (:mod:`~bearing_fem.bearing.totals`);
+5. the empirical models (:mod:`~bearing_fem.bearing.empirical`).
+
+Never raises for an unsuccessful contact solve: the status says so. Raises
+:class:`~bearing_fem.errors.SceneError` for input it cannot accept.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+
+from ..errors import SceneError
+from .contacts import ContactSpec, contact_specs, solve_unique
+from .description import Bearing
+from .empirical import empirical_models, film_formulas
+from .kinematics import ElementKinematics, element_kinematics
+from .loads import LoadDistribution, distribute_loads
+from .totals import bearing_totals, contact_summary
+
+__all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
+
+log = logging.getLogger(__name__)
+
+#: Relative tolerance of the reported energy balance check (torque x omega vs heat).
+ENERGY_BALANCE_RTOL = 1e-3
+
+#: Units of the dimensional keys of :meth:`BearingResult.summary`.
+BEARING_UNITS = {
+    "friction_torque": "N m", "friction_torque_inner": "N m", "friction_torque_outer": "N m",
+    "heat_power": "W", "heat_power_inner": "W", "heat_power_outer": "W", "h_min": "m",
+    "p_max": "Pa", "radial_load": "N", "axial_load": "N", "inner_rpm": "1/min",
+    "film_parameter_min": "1", "wall_time_s": "s",
+    "elements.azimuth_deg": "deg", "elements.load": "N", "elements.load_outer": "N",
+    "elements.contact_angle_deg": "deg", "elements.torque": "N m",
+    "elements.heat_power": "W", "elements.inner/outer.h_min": "m",
+    "elements.inner/outer.p_max": "Pa", "elements.inner/outer.rolling_resistance": "N",
+    "elements.inner/outer.heat_power": "W", "elements.inner/outer.entrainment_speed": "m/s",
+    "load_distribution.radial_displacement": "m", "load_distribution.axial_displacement": "m",
+    "kinematics.cage_rpm": "1/min", "kinematics.entrainment_speed": "m/s",
+    "empirical.*.torque": "N m", "empirical.*.heat_power": "W",
+}
+
+
+@dataclass
+class BearingResult:
+    """Outcome of :func:`solve_bearing`.
+
+    Attributes
+    ----------
+    bearing : Bearing
+    success : bool
+        Every loaded contact solved and the loads balanced.
+    status : str
+        ``converged``, ``contacts_failed`` (some contact solve unsuccessful: the totals
+        are None, the per-contact statuses say which) or ``load_distribution_failed``.
+    message : str
+    distribution : LoadDistribution or None
+    kinematics : ElementKinematics or None
+    specs : list of ContactSpec
+        Two per element (inner, outer), with their scenes.
+    contacts : dict
+        Scene key -> :class:`~bearing_fem.result.Result` of every distinct scene solved.
+    elements : list of dict
+        Per element: ``index``, ``row``, ``azimuth_deg``, ``load`` (inner contact),
+        ``load_outer``, ``contact_angle_deg``, ``contact_angle_outer_deg``,
+        ``in_load_zone``, ``approach``, ``torque`` [N m], ``heat_power`` [W] and the
+        ``inner`` and ``outer`` contact summaries (:func:`~bearing_fem.bearing.totals.contact_summary`).
+    totals : dict
+        :func:`~bearing_fem.bearing.totals.bearing_totals`.
+    empirical : dict
+        :func:`~bearing_fem.bearing.empirical.empirical_models`.
+    films : dict
+        Film formulas at the most loaded element's inner and outer contacts.
+    warnings : list of str
+    wall_time_s : float
+    """
+
+    bearing: Bearing
+    success: bool
+    status: str
+    message: str
+    distribution: LoadDistribution | None = None
+    kinematics: ElementKinematics | None = None
+    specs: list[ContactSpec] = field(default_factory=list)
+    contacts: dict[str, Any] = field(default_factory=dict)
+    elements: list[dict[str, Any]] = field(default_factory=list)
+    totals: dict[str, Any] = field(default_factory=dict)
+    empirical: dict[str, Any] = field(default_factory=dict)
+    films: dict[str, Any] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    wall_time_s: float = 0.0
+
+    def __repr__(self) -> str:
+        return (f"BearingResult(message={self.message!r}, success={self.success}, "
+                f"status={self.status!r}, elements={len(self.elements)}, "
+                f"friction_torque={self.totals.get('friction_torque')!r})")
+
+    # ------------------------------------------------------------------------------
+    def most_loaded_element(self) -> int:
+        """Index of the element with the largest inner-contact load."""
+        return int(np.argmax(self.distribution.load_inner))
+
+    def contact_results(self, element: int, raceway: str) -> list[Any]:
+        """The contact solver's results of one contact (one per slice; [] if excluded)."""
+        for spec in self.specs:
+            if spec.element == element and spec.raceway == raceway:
+                return [self.contacts[k] for k in spec.keys if k in self.contacts]
+        raise KeyError(f"no contact ({element}, {raceway!r})")
+
+    def contact_spec(self, element: int, raceway: str) -> ContactSpec:
+        """The :class:`ContactSpec` of one contact."""
+        for spec in self.specs:
+            if spec.element == element and spec.raceway == raceway:
+                return spec
+        raise KeyError(f"no contact ({element}, {raceway!r})")
+
+    def element_table(self) -> list[dict[str, Any]]:
+        """One flat row per element (the columns of ``elements.csv``; SI, unit in names)."""
+        rows = []
+        for e in self.elements:
+            row = {"element": e["index"], "row": e["row"], "azimuth_deg": e["azimuth_deg"],
+                   "load_N": e["load"], "load_outer_N": e["load_outer"],
+                   "contact_angle_deg": e["contact_angle_deg"],
+                   "contact_angle_outer_deg": e["contact_angle_outer_deg"],
+                   "in_load_zone": e["in_load_zone"], "approach_m": e["approach"],
+                   "torque_N_m": e.get("torque"), "heat_power_W": e.get("heat_power")}
+            for race in ("inner", "outer"):
+                c = e[race]
+                row.update({
+                    f"{race}_status": c["status"], f"{race}_h_min_m": c["h_min"],
+                    f"{race}_h_central_m": c["h_central"], f"{race}_p_max_Pa": c["p_max"],
+                    f"{race}_rolling_resistance_N": c["rolling_resistance"],
+                    f"{race}_heat_power_W": c["heat_power"],
+                    f"{race}_entrainment_speed_m_s": c["entrainment_speed"],
+                    f"{race}_film_parameter": c["film_parameter"],
+                    f"{race}_newton_iterations": c["newton_iterations"]})
+            rows.append(row)
+        return rows
+
+    def summary(self) -> dict[str, Any]:
+        """The result as a JSON-able dict (SI; ``units`` names every unit).
+
+        Keys: ``status``, ``success``, ``message``, ``warnings``, ``wall_time_s``,
+        ``friction_torque`` [N m], ``heat_power`` [W], ``h_min`` [m], ``p_max`` [Pa],
+        ``radial_load``, ``axial_load`` [N], ``inner_rpm``, ``elements`` (per element:
+        ``azimuth_deg``, ``load`` [N], ``contact_angle_deg``, ``inner``/``outer`` contact
+        summaries ...), ``empirical`` (models' ``torque`` and ``heat_power``), and the
+        per-raceway totals, the energy balance, the locations of h_min and p_max, the
+        load balance, the load distribution, the kinematics, the film formulas at the
+        most loaded element, ``units``, ``version`` and ``bearing``.
+        """
+        from .. import __version__
+
+        op = self.bearing.operation
+        t = self.totals
+        d = self.distribution
+        out: dict[str, Any] = {
+            "status": self.status, "success": bool(self.success), "message": self.message,
+            "warnings": list(self.warnings), "wall_time_s": float(self.wall_time_s),
+            "friction_torque": t.get("friction_torque"), "heat_power": t.get("heat_power"),
+            "h_min": t.get("h_min"), "p_max": t.get("p_max"),
+            "radial_load": float(op.radial_load), "axial_load": float(op.axial_load),
+            "inner_rpm": float(op.inner_rpm),
+            "friction_torque_inner": t.get("friction_torque_inner"),
+            "friction_torque_outer": t.get("friction_torque_outer"),
+            "heat_power_inner": t.get("heat_power_inner"),
+            "heat_power_outer": t.get("heat_power_outer"),
+            "energy_balance": t.get("energy_balance"),
+            "h_min_location": t.get("h_min_location"),
+            "p_max_location": t.get("p_max_location"),
+            "film_parameter_min": t.get("film_parameter_min"),
+            "elements": self.elements, "empirical": self.empirical,
+            "film_formulas": self.films,
+        }
+        if d is not None:
+            fr, fa = float(op.radial_load), float(op.axial_load)
+            out["load_balance"] = {
+                "radial_sum": d.radial_sum, "axial_sum": d.axial_sum,
+                "radial_relative_error": (d.radial_sum - fr) / fr if fr > 0 else None,
+                "axial_relative_error": (d.axial_sum - fa) / fa if fa > 0 else None}
+            out["load_distribution"] = {
+                "radial_displacement": d.radial_displacement,
+                "axial_displacement": d.axial_displacement,
+                "load_zone_half_angle_deg": math.degrees(d.load_zone_half_angle),
+                "max_element_load": d.max_load, "centrifugal_force": d.centrifugal_force,
+                "radial_clearance": d.clearance, "load_exponent": d.exponent,
+                "elements_loaded": int(np.count_nonzero(d.in_load_zone))}
+        if self.kinematics is not None and d is not None:
+            j = self.most_loaded_element()
+            k = self.kinematics
+            out["kinematics"] = {
+                "cage_rpm": float(k.cage_speed[j]) * 60.0 / (2.0 * math.pi),
+                "element_rpm": float(k.element_speed[j]) * 60.0 / (2.0 * math.pi),
+                "entrainment_speed": float(k.entrainment_speed[j]),
+                "slide_to_roll": 0.0,
+                "note": "pure rolling; values of the most loaded element"}
+        n_scenes = sum(len(s.keys) for s in self.specs)
+        out["contact_solves"] = {"scenes": n_scenes, "distinct_solved": len(self.contacts),
+                                 "reused": n_scenes - len(self.contacts)}
+        out["units"] = dict(BEARING_UNITS)
+        out["version"] = __version__
+        out["bearing"] = self.bearing.to_dict()
+        return _jsonable(out)
+
+
+def _jsonable(value: Any) -> Any:
+    """Plain-Python copy with numpy scalars converted and non-finite floats as None."""
+    if isinstance(value, dict):
+        return {str(k): _jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _jsonable(value.tolist())
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        v = float(value)
+        return v if math.isfinite(v) else None
+    return value
+
+
+def solve_bearing(bearing: Bearing, *,
+                  progress: Callable[[int, int, str], None] | None = None,
+                  blas_threads: int | None = 1) -> BearingResult:
+    """Solve a bearing: load distribution, kinematics, EHL at every loaded contact, totals.
+
+    Parameters
+    ----------
+    bearing : Bearing
+    progress : callable, optional
+        ``progress(done, total, title)`` after each contact solve.
+    blas_threads : int or None
+        BLAS threads during the contact solves (default 1; None: unchanged); see
+        :func:`~bearing_fem.bearing.contacts.solve_unique`.
+
+    Returns
+    -------
+    BearingResult
+        Never raises for an unsuccessful solve: see ``status`` and ``message``.
+    """
+    if not isinstance(bearing, Bearing):
+        raise SceneError(f"solve_bearing() needs a Bearing, got {type(bearing).__name__}")
+    t0 = time.perf_counter()
+    g, op = bearing.geometry, bearing.operation
+    warnings: list[str] = []
+    try:
+        dist = distribute_loads(bearing)
+    except (RuntimeError, ValueError) as exc:
+        return BearingResult(bearing=bearing, success=False, status="load_distribution_failed",
+                             message=f"no ring displacement balances the loads: {exc}",
+                             wall_time_s=time.perf_counter() - t0)
+    kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
+                             dist.alpha_inner, dist.alpha_outer)
+    specs = contact_specs(bearing, dist, kin)
+    results = solve_unique(specs, progress=progress, blas_threads=blas_threads)
+    by_element: dict[int, dict[str, Any]] = {}
+    for spec in specs:
+        by_element.setdefault(spec.element, {})[spec.raceway] = contact_summary(
+            bearing, spec, results)
+    elements = []
+    for j in range(dist.azimuth.size):
+        elements.append({
+            "index": j, "row": int(dist.row[j]),
+            "azimuth_deg": math.degrees(float(dist.azimuth[j])),
+            "load": float(dist.load_inner[j]), "load_outer": float(dist.load_outer[j]),
+            "contact_angle_deg": math.degrees(float(dist.alpha_inner[j])),
+            "contact_angle_outer_deg": math.degrees(float(dist.alpha_outer[j])),
+            "in_load_zone": bool(dist.in_load_zone[j]), "approach": float(dist.approach[j]),
+            "torque": None, "heat_power": None,
+            "inner": by_element[j]["inner"], "outer": by_element[j]["outer"]})
+    totals = bearing_totals(bearing, dist.azimuth, kin.race_radius_inner, elements)
+    loaded = dist.in_load_zone
+    mean_alpha = math.degrees(float(np.average(dist.alpha_inner[loaded],
+                                               weights=dist.load_inner[loaded])))
+    emp = empirical_models(bearing, mean_alpha)
+    films = _films_at_most_loaded(bearing, specs, dist)
+    failed = [(s.element, s.raceway) for s in specs
+              if s.excluded is None and not all(results[k].success for k in s.keys)]
+    excluded = [s for s in specs if s.excluded is not None and s.load > 0.0]
+    if excluded:
+        warnings.append(f"{len(excluded)} lightly loaded contact(s) below "
+                        f"model.min_load_fraction = {bearing.model.min_load_fraction:g} were "
+                        "not solved (see their messages)")
+    eb = totals["energy_balance"]["relative_difference"]
+    if eb is not None and abs(eb) > ENERGY_BALANCE_RTOL:
+        warnings.append(f"friction torque x omega differs from the contacts' heat power by "
+                        f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
+                        "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
+    for spec in specs:
+        for key in spec.keys:
+            for w in results[key].warnings:
+                msg = f"contact {spec.element} {spec.raceway}: {w}"
+                if msg not in warnings:
+                    warnings.append(msg)
+    n_solved = len(results)
+    n_scenes = sum(len(s.keys) for s in specs)
+    if failed:
+        status, success = "contacts_failed", False
+        message = (f"{len(failed)} contact(s) unsuccessful, e.g. element {failed[0][0]} "
+                   f"{failed[0][1]}; totals not formed ({n_solved} distinct scenes solved)")
+    else:
+        status, success = "converged", True
+        m = totals["friction_torque"]
+        message = (f"{int(np.count_nonzero(loaded))} of {dist.azimuth.size} elements loaded; "
+                   f"{n_solved} distinct contact scenes solved ({n_scenes - n_solved} reused by "
+                   f"symmetry); friction torque {m:.4g} N m, heat power "
+                   f"{totals['heat_power']:.4g} W")
+    return BearingResult(bearing=bearing, success=success, status=status, message=message,
+                         distribution=dist, kinematics=kin, specs=specs, contacts=results,
+                         elements=elements, totals=totals, empirical=emp, films=films,
+                         warnings=warnings, wall_time_s=time.perf_counter() - t0)
+
+
+def _films_at_most_loaded(bearing: Bearing, specs: list[ContactSpec],
+                          dist: LoadDistribution) -> dict[str, Any]:
+    """Film formulas at the most loaded element's contacts (the most loaded slice)."""
+    j = int(np.argmax(dist.load_inner))
+    out: dict[str, Any] = {"element": j}
+    for spec in specs:
+        if spec.element != j or spec.excluded is not None:
+            continue
+        k = int(np.argmax([s.load.force for s in spec.scenes]))
+        sc = spec.scenes[k]
+        kind = "point" if spec.ry is not None else "line"
+        out[spec.raceway] = film_formulas(kind, sc.load.force, spec.rx, sc.e_prime,
+                                          sc.lubricant.viscosity, spec.entrainment_speed,
+                                          sc.lubricant.effective_piezo, ry=spec.ry)
+    return out
