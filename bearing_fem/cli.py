@@ -218,6 +218,53 @@ def _cmd_plot(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _cmd_bearing(args: argparse.Namespace) -> int:
+    """``bearing-fem bearing FILE --out DIR``: solve a bearing file (docs/bearing.md)."""
+    from .bearing import Bearing, example_names, load_example, solve_bearing
+    from .io import export_bearing
+
+    path = Path(args.bearing)
+    if not path.is_file() and args.bearing in example_names():
+        bearing = load_example(args.bearing)
+    else:
+        bearing = Bearing.from_toml(path)
+    result = solve_bearing(bearing)
+    out = Path(args.out)
+    try:
+        files = export_bearing(result, out)
+        if not args.no_figures:
+            from .plot_bearing import write_figures
+
+            files.update(write_figures(result, out))
+    except OSError as exc:
+        raise _InputError(f"cannot write results to {str(out)!r}: {exc.strerror or exc}") \
+            from None
+    s = result.summary()
+    print(bearing.title or bearing.geometry.type)
+    loc = s.get("h_min_location") or {}
+    rows = [("status", f"{s['status']} ({'success' if s['success'] else 'no success'})"),
+            ("friction torque", _fmt(s["friction_torque"], "N m")),
+            ("heat power", _fmt(s["heat_power"], "W")),
+            ("h_min", _fmt(s["h_min"], "m") + (f" (element {loc['element']}, "
+                                                f"{loc['raceway']})" if loc else "")),
+            ("p_max", _fmt(s["p_max"], "Pa"))]
+    for name, m in s["empirical"].items():
+        if m.get("torque") is not None:
+            rows.append((f"{name} torque", _fmt(m["torque"], "N m")))
+    rows.append(("wall time", _fmt(s["wall_time_s"], "s")))
+    for name, value in rows:
+        print(f"  {name:<24} {value}")
+    print(f"  {'message':<24} {s['message']}")
+    for w in s["warnings"]:
+        print(f"  {'warning':<24} {w}")
+    print(f"  {'wrote':<24} " + ", ".join(str(p) for p in files.values()))
+    if result.success:
+        return EXIT_OK
+    print(f"bearing-fem: no complete bearing solution (status {result.status}): "
+          f"{result.message}", file=sys.stderr)
+    return EXIT_NO_SOLUTION
+
+
 # ---------------------------------------------------------------------------------------
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``bearing-fem`` (subcommands solve, demo, plot)."""
@@ -263,6 +310,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help="figure kind (default: line for line contacts, map for point "
                         "contacts)")
     p.set_defaults(func=_cmd_plot)
+
+    p = sub.add_parser("bearing", help="solve a bearing file: EHL at every rolling element",
+                       description="Solve a bearing file (docs/bearing.md; a shipped example "
+                                   "name such as 6209 also works) and write "
+                                   "DIR/bearing_summary.json, elements.csv, contacts.vtm, "
+                                   "the most loaded element's contact files and figures.")
+    p.add_argument("bearing", metavar="BEARING.toml", help="bearing file or example name")
+    p.add_argument("--out", "-o", metavar="DIR", required=True, help="output directory")
+    p.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
+    p.set_defaults(func=_cmd_bearing)
     return parser
 
 

@@ -400,3 +400,182 @@ def read_result(path: str | Path) -> dict[str, Any]:
         out["wall_time_s"] = float(g.attrs["wall_time_s"])
         out["continuation"] = json.loads(str(g.attrs["continuation"]))
     return out
+
+
+# =======================================================================================
+# Bearing exports (results of bearing_fem.bearing.solve_bearing)
+# =======================================================================================
+#: Files written by :func:`export_bearing` in the output directory, keyed as returned.
+BEARING_FILES = {"summary": "bearing_summary.json", "elements": "elements.csv",
+                 "vtm": "contacts.vtm"}
+#: Subdirectory of the per-contact VTK blocks referenced by ``contacts.vtm``.
+BEARING_VTK_DIR = "contacts_vtk"
+
+__all__ += ["export_bearing", "write_bearing_summary", "write_elements_csv", "BEARING_FILES"]
+
+
+def write_bearing_summary(result: Any, path: str | Path) -> Path:
+    """Write ``result.summary()`` of a bearing result as strict JSON (not atomic)."""
+    path = Path(path)
+    text = json.dumps(_json_safe(result.summary()), indent=2, allow_nan=False)
+    path.write_text(text + "\n", encoding="utf-8")
+    return path
+
+
+def write_elements_csv(result: Any, path: str | Path) -> Path:
+    """Write the per-element table (:meth:`BearingResult.element_table`) as CSV (not atomic).
+
+    One row per element; column names carry their unit (``load_N``, ``inner_h_min_m``);
+    an undefined number (excluded or failed contact) is an empty field.
+    """
+    import csv
+
+    rows = result.element_table()
+    path = Path(path)
+    with path.open("w", newline="", encoding="utf-8") as fh:
+        writer = csv.writer(fh)
+        cols = list(rows[0]) if rows else []
+        writer.writerow(cols)
+        for row in rows:
+            out = []
+            for c in cols:
+                v = _json_safe(row[c])
+                out.append("" if v is None else (repr(v) if isinstance(v, float) else v))
+            writer.writerow(out)
+    return path
+
+
+def _contact_block_points(res: Any, azimuth: float, race_radius: float, alpha: float,
+                          raceway: str, element_radius: float, position: float,
+                          width: float | None) -> tuple[np.ndarray, list, dict[str, np.ndarray]]:
+    """3D points, cells and point data of one contact result placed on its raceway.
+
+    The contact centre sits at the raceway radius ``race_radius`` from the bearing axis
+    (z) at azimuth ``azimuth`` [rad] and axial position -+ (D_w/2) sin(alpha) (inner,
+    outer); local x runs along the entrainment (the inner ring's rotation direction at
+    an inner contact, against it at an outer one), local y across it in the contact
+    plane. Line contacts are extruded over their length (slice width) at ``position``.
+    """
+    sgn = 1.0 if raceway == "inner" else -1.0
+    radial = np.array([math.cos(azimuth), math.sin(azimuth), 0.0])
+    tangent = np.array([-math.sin(azimuth), math.cos(azimuth), 0.0])
+    axial = np.array([0.0, 0.0, 1.0])
+    centre = race_radius * radial - sgn * element_radius * math.sin(alpha) * axial
+    ex = sgn * tangent
+    ey = math.cos(alpha) * axial + sgn * math.sin(alpha) * radial
+    x = np.asarray(res.x, dtype=float)
+    p = np.asarray(res.pressure, dtype=float)
+    h = np.asarray(res.film, dtype=float)
+    if res.y is None:
+        half = 0.5 * (width or 0.0)
+        ys = np.array([position - half, position + half])
+        xx, yy = np.meshgrid(x, ys)
+        pp = np.vstack([p, p])
+        hh = np.vstack([h, h])
+    else:
+        y = np.asarray(res.y, dtype=float)
+        xx, yy = np.meshgrid(x, y)
+        pp, hh = p.reshape(xx.shape), h.reshape(xx.shape)
+    pts = centre[None, :] + xx.ravel()[:, None] * ex[None, :] + yy.ravel()[:, None] * ey[None, :]
+    ny, nx = xx.shape
+    index = np.arange(nx * ny).reshape(ny, nx)
+    quads = np.column_stack([index[:-1, :-1].ravel(), index[:-1, 1:].ravel(),
+                             index[1:, 1:].ravel(), index[1:, :-1].ravel()])
+    data = {"pressure_Pa": pp.ravel(), "film_m": hh.ravel()}
+    return pts, [("quad", quads)], data
+
+
+def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
+    """Write the files of a bearing result into ``outdir``, all atomically.
+
+    Files: ``bearing_summary.json`` (:meth:`BearingResult.summary`), ``elements.csv``
+    (one row per element), ``contacts.vtm`` (VTK multi-block of every solved contact,
+    placed on its raceway in 3D, blocks in ``contacts_vtk/``) and the per-contact result
+    files (``summary.json``, ``result.h5``, ``fields.vtu``) of the most loaded element's
+    contacts in ``contact_<element>_<raceway>[_slice<k>]/``. Every file is written under a
+    temporary name first and moved into place with :func:`os.replace` once all are
+    complete; on failure the temporary files are removed.
+
+    Parameters
+    ----------
+    result : BearingResult
+    outdir : str or Path
+        Created with its parents if needed.
+
+    Returns
+    -------
+    dict[str, Path]
+        ``summary``, ``elements``, ``vtm``, and ``contact_<element>_<raceway>...`` ->
+        the directory of each exported contact.
+    """
+    import meshio
+
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    stages: list[_Staging] = []
+
+    def stage(d: Path) -> _Staging:
+        d.mkdir(parents=True, exist_ok=True)
+        st = _Staging(d)
+        stages.append(st)
+        return st
+
+    files: dict[str, Path] = {}
+    try:
+        top = stage(outdir)
+        write_bearing_summary(result, top.temp(BEARING_FILES["summary"]))
+        files["summary"] = outdir / BEARING_FILES["summary"]
+        if result.elements:
+            write_elements_csv(result, top.temp(BEARING_FILES["elements"]))
+            files["elements"] = outdir / BEARING_FILES["elements"]
+        # VTK multi-block of every solved contact
+        blocks = []
+        if result.contacts and result.distribution is not None:
+            vtk = stage(outdir / BEARING_VTK_DIR)
+            dist = result.distribution
+            r_el = 0.5 * result.bearing.geometry.element_diameter
+            for spec in result.specs:
+                for k, key in enumerate(spec.keys):
+                    res = result.contacts[key]
+                    name = f"element_{spec.element:03d}_{spec.raceway}"
+                    if len(spec.keys) > 1:
+                        name += f"_slice{k:02d}"
+                    pts, cells, data = _contact_block_points(
+                        res, float(dist.azimuth[spec.element]), spec.race_radius,
+                        spec.contact_angle, spec.raceway, r_el,
+                        spec.positions[k] if spec.positions else 0.0,
+                        spec.widths[k] if spec.widths else None)
+                    tmp = vtk.temp(name + ".vtu")
+                    meshio.write(str(tmp), meshio.Mesh(pts, cells, point_data=data),
+                                 file_format="vtu")
+                    blocks.append(name)
+            lines = ['<?xml version="1.0"?>',
+                     '<VTKFile type="vtkMultiBlockDataSet" version="1.0" '
+                     'byte_order="LittleEndian">', "  <vtkMultiBlockDataSet>"]
+            for i, name in enumerate(blocks):
+                lines.append(f'    <DataSet index="{i}" name="{name}" '
+                             f'file="{BEARING_VTK_DIR}/{name}.vtu"/>')
+            lines += ["  </vtkMultiBlockDataSet>", "</VTKFile>"]
+            top.temp(BEARING_FILES["vtm"]).write_text("\n".join(lines) + "\n",
+                                                       encoding="utf-8")
+            files["vtm"] = outdir / BEARING_FILES["vtm"]
+            # per-contact files of the most loaded element
+            j = result.most_loaded_element()
+            for race in ("inner", "outer"):
+                spec = result.contact_spec(j, race)
+                for k, key in enumerate(spec.keys):
+                    name = f"contact_{j:03d}_{race}" + (f"_slice{k:02d}" if len(spec.keys) > 1
+                                                         else "")
+                    st = stage(outdir / name)
+                    res = result.contacts[key]
+                    write_summary(res, st.temp(FILES["summary"]))
+                    write_h5(res, st.temp(FILES["h5"]))
+                    write_vtu(res, st.temp(FILES["vtu"]))
+                    files[name] = outdir / name
+        for st in stages:
+            st.commit()
+    except BaseException:
+        for st in stages:
+            st.discard()
+        raise
+    return files

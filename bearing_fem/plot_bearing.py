@@ -1,0 +1,149 @@
+"""Figures of a bearing result (matplotlib, Agg backend; imported only when plotting).
+
+* :func:`plot_load_distribution` - element load (and contact angle for ball bearings)
+  over azimuth, with the load zone;
+* :func:`plot_films` - minimum film and maximum pressure of every loaded element's inner
+  and outer contact over azimuth;
+* :func:`plot_torque_comparison` - EHL friction torque (inner and outer contacts) beside
+  the empirical models;
+* :func:`write_figures` - all three into a directory (each written under a temporary
+  name and moved into place).
+"""
+from __future__ import annotations
+
+import math
+import os
+import secrets
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["plot_load_distribution", "plot_films", "plot_torque_comparison", "write_figures",
+           "FIGURES"]
+
+#: Figure files of :func:`write_figures`, keyed as returned.
+FIGURES = {"load_distribution": "load_distribution.png", "films": "films_pressures.png",
+           "torque": "torque_comparison.png"}
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _save(fig: Any, path: Path) -> Path:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp.png")
+    try:
+        fig.savefig(tmp, dpi=120)
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+    return path
+
+
+def _element_arrays(result: Any) -> dict[str, np.ndarray]:
+    el = [e for e in result.elements if e["row"] == 0]
+    order = np.argsort([e["azimuth_deg"] for e in el])
+    el = [el[i] for i in order]
+
+    def col(fn):
+        return np.array([np.nan if fn(e) is None else fn(e) for e in el], dtype=float)
+
+    return {"psi": col(lambda e: e["azimuth_deg"]), "load": col(lambda e: e["load"]),
+            "load_outer": col(lambda e: e["load_outer"]),
+            "alpha": col(lambda e: e["contact_angle_deg"]),
+            "hmin_i": col(lambda e: e["inner"]["h_min"]),
+            "hmin_o": col(lambda e: e["outer"]["h_min"]),
+            "pmax_i": col(lambda e: e["inner"]["p_max"]),
+            "pmax_o": col(lambda e: e["outer"]["p_max"])}
+
+
+def plot_load_distribution(result: Any, path: str | Path) -> Path:
+    """Element loads [N] (row 0) over azimuth [deg]; contact angles for ball bearings."""
+    plt = _pyplot()
+    a = _element_arrays(result)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.bar(a["psi"], a["load"], width=0.6 * 360.0 / max(len(a["psi"]), 1), color="C0",
+           label="inner contact load")
+    if np.any(a["load_outer"] != a["load"]):
+        ax.plot(a["psi"], a["load_outer"], "o", color="C3", label="outer contact load")
+    half = math.degrees(result.distribution.load_zone_half_angle)
+    if half < 180.0:
+        ax.axvspan(-half, half, color="C0", alpha=0.08, label=f"load zone +-{half:.1f} deg")
+    ax.set_xlabel("azimuth psi [deg] (radial load at 0)")
+    ax.set_ylabel("element load Q [N]")
+    ax.set_xlim(-180, 180)
+    if result.bearing.geometry.is_ball:
+        ax2 = ax.twinx()
+        ax2.plot(a["psi"], a["alpha"], "s--", color="C2", ms=4, label="contact angle")
+        ax2.set_ylabel("contact angle [deg]", color="C2")
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title(result.bearing.title or result.bearing.geometry.type, fontsize=10)
+    fig.tight_layout()
+    out = _save(fig, Path(path))
+    plt.close(fig)
+    return out
+
+
+def plot_films(result: Any, path: str | Path) -> Path:
+    """Minimum film [um] and maximum pressure [GPa] per element (row 0) over azimuth."""
+    plt = _pyplot()
+    a = _element_arrays(result)
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
+    for key, lab, mk in (("hmin_i", "inner", "o-"), ("hmin_o", "outer", "s-")):
+        ax1.plot(a["psi"], a[key] * 1e6, mk, label=lab)
+    for key, lab, mk in (("pmax_i", "inner", "o-"), ("pmax_o", "outer", "s-")):
+        ax2.plot(a["psi"], a[key] * 1e-9, mk, label=lab)
+    ax1.set_ylabel("h_min [um]")
+    ax2.set_ylabel("p_max [GPa]")
+    ax2.set_xlabel("azimuth psi [deg]")
+    ax1.legend(fontsize=8)
+    ax1.set_title("EHL films and pressures of the loaded elements", fontsize=10)
+    fig.tight_layout()
+    out = _save(fig, Path(path))
+    plt.close(fig)
+    return out
+
+
+def plot_torque_comparison(result: Any, path: str | Path) -> Path:
+    """Bar chart: EHL friction torque (inner + outer contacts) and the empirical models."""
+    plt = _pyplot()
+    t = result.totals
+    names, vals = [], []
+    fig, ax = plt.subplots(figsize=(7, 4))
+    if t.get("friction_torque") is not None:
+        ax.bar(["EHL (this solve)"], [t["friction_torque_inner"]], color="C0", label="inner")
+        ax.bar(["EHL (this solve)"], [t["friction_torque_outer"]],
+               bottom=[t["friction_torque_inner"]], color="C1", label="outer")
+    for name, m in result.empirical.items():
+        if m.get("torque") is not None:
+            names.append(name.replace("_", " "))
+            vals.append(m["torque"])
+    ax.bar(names, vals, color="0.6", label="empirical")
+    ax.set_ylabel("friction torque [N m]")
+    ax.legend(fontsize=8)
+    ax.set_title("EHL torque (rolling losses only) vs empirical models", fontsize=10)
+    plt.setp(ax.get_xticklabels(), rotation=15, fontsize=8)
+    fig.tight_layout()
+    out = _save(fig, Path(path))
+    plt.close(fig)
+    return out
+
+
+def write_figures(result: Any, outdir: str | Path) -> dict[str, Path]:
+    """All bearing figures into ``outdir`` (:data:`FIGURES`); nothing for a result
+    without a load distribution."""
+    outdir = Path(outdir)
+    if result.distribution is None:
+        return {}
+    return {"load_distribution": plot_load_distribution(result, outdir / FIGURES["load_distribution"]),
+            "films": plot_films(result, outdir / FIGURES["films"]),
+            "torque": plot_torque_comparison(result, outdir / FIGURES["torque"])}
