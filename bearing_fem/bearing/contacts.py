@@ -222,7 +222,7 @@ def contact_specs(bearing: Bearing, dist: LoadDistribution,
                 loads = dist.slice_loads[j] * (q / max(float(dist.load_inner[j]), 1e-300))
                 for k, (qk, wk, yk) in enumerate(zip(loads, dist.slice_widths,
                                                      dist.slice_positions)):
-                    if qk <= threshold / g.slices:
+                    if qk <= threshold / g.n_slices:
                         continue
                     spec.scenes.append(_scene(bearing, "line", rx, None, float(wk),
                                               float(qk / wk), u, eta, alpha,

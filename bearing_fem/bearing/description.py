@@ -291,7 +291,7 @@ class Geometry:
         if self.profile != "straight" and flat != 0.0 and self.profile != "crowned":
             raise SceneError("bearing.flat_length applies to profile = 'crowned'")
         if self.slices is None:
-            object.__setattr__(self, "slices", 1 if self.profile == "straight" else 11)
+            return
         n = _integer(self, "slices", 1, 101, "slices along the roller")
         if self.profile == "straight" and n != 1:
             raise SceneError(f"bearing.slices = {n} needs a roller profile ('crowned' or "
@@ -303,6 +303,13 @@ class Geometry:
         if self.pitch_diameter is not None:
             return float(self.pitch_diameter)
         return 0.5 * (float(self.bore) + float(self.outside_diameter))
+
+    @property
+    def n_slices(self) -> int:
+        """Slices along a roller: ``slices``, or 1 (straight) / 11 (profiled) by default."""
+        if self.slices is not None:
+            return int(self.slices)
+        return 1 if self.profile == "straight" else 11
 
     @property
     def is_ball(self) -> bool:

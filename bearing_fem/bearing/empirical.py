@@ -412,7 +412,8 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
     Dowson-Higginson minimum and the five sets quoted by Zhirkin et al. (minimum films
     H = K U^a G^b W^c in Hamrock's mean-speed groups; see
     :data:`bearing_fem.formulas.SEED002_CONVENTIONS`). Point contacts (``load`` in N):
-    Nijenbanning-Venner-Moes central and Hamrock-Dowson (minimum and central).
+    Nijenbanning-Venner-Moes central and Hamrock-Dowson (minimum and central). An
+    isoviscous contact (alpha = 0) gets only the Moes-type fits (the others need alpha E' > 0).
 
     Returns
     -------
@@ -420,9 +421,12 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
         name -> {"h_min": m or None, "h_central": m or None, "convention": str}.
     """
     out: dict[str, Any] = {}
+    piezo_viscous = piezo > 0.0   # the Hamrock-style fits need G = alpha E' > 0
     if kind == "line":
         hc = formulas.line_central_film_moes(load, rx, e_prime, viscosity, mean_speed, piezo)
         out["Moes"] = {"h_min": None, "h_central": hc, "convention": "sum speed (Moes groups)"}
+        if not piezo_viscous:
+            return out
         hm, hc2 = formulas.line_films_pan_hamrock(load, rx, e_prime, viscosity, mean_speed,
                                                  piezo)
         out["Pan-Hamrock"] = {"h_min": hm, "h_central": hc2, "convention": "mean speed"}
@@ -434,8 +438,6 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
         g = piezo * e_prime
         w = load / (e_prime * rx)
         for name, coeffs in formulas.SEED002_FITS.items():
-            if g <= 0.0:
-                continue
             out[f"{name} (Zhirkin et al.)"] = {
                 "h_min": float(formulas.power_law_film(u, g, w, coeffs)) * rx,
                 "h_central": None, "convention": formulas.SEED002_CONVENTIONS[name]}
@@ -446,6 +448,8 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
         "h_min": None, "convention": "sum speed (Moes groups)",
         "h_central": formulas.point_central_film_nvm(load, rx, ry, e_prime, viscosity,
                                                      mean_speed, piezo)}
+    if not piezo_viscous:
+        return out
     hm, hc = formulas.point_films_hamrock_dowson(load, rx, ry, e_prime, viscosity,
                                                  mean_speed, piezo)
     out["Hamrock-Dowson"] = {"h_min": hm, "h_central": hc, "convention": "mean speed"}

@@ -352,7 +352,7 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
     c = roller_compliance(bearing)          # delta_contact = c Q^0.9
     fc = centrifugal_force(bearing) * cb    # normal component at the outer raceway
     fr_row = bearing.operation.radial_load / g.rows
-    n_sl = int(g.slices)
+    n_sl = g.n_slices
     lw = g.effective_length
     if n_sl > 1:
         w = lw / n_sl

@@ -184,8 +184,9 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
     for j, row in enumerate(rows):
         ci, co = row["inner"], row["outer"]
         fpi, fpo = ci["rolling_resistance"], co["rolling_resistance"]
-        if fpi is None or fpo is None or ci["heat_power"] is None or co["heat_power"] is None:
-            complete = False
+        if (fpi is None or fpo is None or ci["heat_power"] is None or co["heat_power"] is None
+                or not ci["success"] or not co["success"]):
+            complete = False  # a failed contact's last iterate is no result
             continue
         a, b = element_torque(race_radius_inner[j], ci["rx"], co["rx"], r, fpi, fpo)
         row["torque"] = a + b

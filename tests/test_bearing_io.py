@@ -1,0 +1,103 @@
+"""export_bearing, the figures and the ``bearing-fem bearing`` subcommand."""
+from __future__ import annotations
+
+import csv
+import json
+
+import pytest
+
+from bearing_fem import cli, io
+from bearing_fem.bearing import solve_bearing
+
+from test_bearing_solve import small_roller  # noqa: E402  (tests/ is on sys.path)
+
+TOML = """title = "small roller bearing"
+[bearing]
+type = "cylindrical-roller"
+bore = 0.03
+outside_diameter = 0.062
+pitch_diameter = 0.046
+element_diameter = 0.009
+elements = 13
+effective_length = 0.009
+radial_clearance = 5e-6
+[lubricant]
+viscosity = 0.05
+piezo = 2e-8
+[operation]
+inner_rpm = 1500
+radial_load = 2000
+[mesh]
+line_nodes = 201
+"""
+
+
+@pytest.fixture(scope="module")
+def result():
+    return solve_bearing(small_roller(mesh={"line_nodes": 201}))
+
+
+def test_export_bearing_files(result, tmp_path):
+    files = io.export_bearing(result, tmp_path)
+    j = result.most_loaded_element()
+    assert {"summary", "elements", "vtm", f"contact_{j:03d}_inner",
+            f"contact_{j:03d}_outer"} <= set(files)
+    s = json.loads(files["summary"].read_text())
+    assert s["status"] == "converged" and s["friction_torque"] == pytest.approx(
+        result.totals["friction_torque"], rel=1e-12)
+    rows = list(csv.DictReader(files["elements"].open()))
+    assert len(rows) == 13 and rows[0]["load_N"] and "inner_h_min_m" in rows[0]
+    unloaded = [r for r in rows if r["in_load_zone"] == "False"]
+    assert unloaded and unloaded[0]["inner_h_min_m"] == "", "undefined numbers are empty"
+    contact = files[f"contact_{j:03d}_inner"]
+    assert {p.name for p in contact.iterdir()} == {"summary.json", "result.h5", "fields.vtu"}
+    vtm = files["vtm"].read_text()
+    n_blocks = sum(len(sp.keys) for sp in result.specs)
+    assert vtm.count("<DataSet ") == n_blocks, "one block per solved contact"
+    assert not [p for p in tmp_path.rglob(".*tmp*")], "no temporary files left"
+    pv = pytest.importorskip("pyvista")
+    mb = pv.read(files["vtm"])
+    assert mb.n_blocks == n_blocks and "pressure_Pa" in mb[0].point_data
+
+
+def test_export_is_atomic(result, tmp_path, monkeypatch):
+    def boom(*a, **k):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(io, "write_h5", boom)
+    with pytest.raises(OSError):
+        io.export_bearing(result, tmp_path)
+    assert [p for p in tmp_path.rglob("*") if p.is_file()] == [], \
+        "a failed export leaves neither final nor temporary files"
+
+
+def test_figures(result, tmp_path):
+    from bearing_fem.plot_bearing import FIGURES, write_figures
+
+    files = write_figures(result, tmp_path)
+    assert set(files) == set(FIGURES)
+    for p in files.values():
+        assert p.stat().st_size > 5000, f"{p.name} is a real PNG"
+
+
+def test_cli_bearing(tmp_path, capsys):
+    path = tmp_path / "b.toml"
+    path.write_text(TOML)
+    out = tmp_path / "out"
+    assert cli.main(["bearing", str(path), "--out", str(out)]) == cli.EXIT_OK
+    names = {p.name for p in out.iterdir()}
+    assert {"bearing_summary.json", "elements.csv", "contacts.vtm", "load_distribution.png",
+            "films_pressures.png", "torque_comparison.png"} <= names
+    assert "friction torque" in capsys.readouterr().out
+    bad = tmp_path / "bad.toml"
+    bad.write_text(TOML.replace("radial_clearance = 5e-6", "radial_clearance = -5e-6"))
+    assert cli.main(["bearing", str(bad), "--out", str(out)]) == cli.EXIT_INVALID
+    assert "radial_clearance must be >= 0 m" in capsys.readouterr().err
+    fail = tmp_path / "fail.toml"
+    fail.write_text(TOML + "[solver]\nmax_iterations = 1\ncontinuation = false\n"
+                           "iteration_budget = 1\n")
+    out3 = tmp_path / "out3"
+    assert cli.main(["bearing", str(fail), "--out", str(out3), "--no-figures"]) == \
+        cli.EXIT_NO_SOLUTION
+    s = json.loads((out3 / "bearing_summary.json").read_text())
+    assert s["status"] == "contacts_failed", "files are written with the status"

@@ -1,0 +1,167 @@
+"""Internal load distribution against Stribeck's and Harris' closed forms (analytic.py)."""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from bearing_fem import analytic
+from bearing_fem.bearing import Bearing, distribute_loads, load_example
+from bearing_fem.bearing.geometry import groove_centre_distance, roller_compliance
+from bearing_fem.bearing.loads import profile_drop, series_ball_stiffness
+
+
+def _ball(z: int = 9, clearance: float = 0.0, psi0: float = 0.0, **op) -> Bearing:
+    b = load_example("6209")
+    dw = 0.0127 if z <= 16 else 0.9 * math.pi * 0.065 / z
+    g = replace(b.geometry, elements=z, radial_clearance=clearance, element_diameter=dw,
+                first_element_azimuth=psi0)
+    return replace(b, geometry=g, operation=replace(b.operation, **op))
+
+
+def _roller(z: int = 28, clearance: float = 0.0, **geo) -> Bearing:
+    b = load_example("nncf5040")
+    return replace(b, geometry=replace(b.geometry, elements=z, radial_clearance=clearance,
+                                       **geo))
+
+
+def test_stribeck_ball_and_roller():
+    """Zero clearance, element at psi = 0: Z Q_max / F_r -> 4.37 (balls), 4.08 (rollers)."""
+    k_ball, k_line = analytic.stribeck_constant(1.5), analytic.stribeck_constant(10 / 9)
+    assert k_ball == pytest.approx(4.37, abs=5e-3) and k_line == pytest.approx(4.08, abs=5e-3)
+    for z in (9, 40):
+        d = distribute_loads(_ball(z))
+        np.testing.assert_allclose(d.max_load * z / 4000.0, k_ball, rtol=1e-2,
+                                   err_msg=f"Z = {z} balls, one at psi = 0: within 1% of the "
+                                           "continuous Stribeck value (the acceptance)")
+    d40 = distribute_loads(_ball(40))
+    np.testing.assert_allclose(d40.max_load * 40 / 4000.0, k_ball, rtol=1e-4,
+                               err_msg="the discrete sum tends to the integral as Z grows")
+    b = _roller(28)
+    d = distribute_loads(b)
+    z_total = b.geometry.elements * b.geometry.rows
+    np.testing.assert_allclose(d.max_load * z_total / b.operation.radial_load, k_line,
+                               rtol=1e-2, err_msg="28 rollers per row, two rows: 4.08 within 1%")
+    # an element BETWEEN the load line: the maximum is lower (Z = 9: about 9% lower)
+    d_half = distribute_loads(_ball(9, psi0=20.0))
+    assert d_half.max_load * 9 / 4000.0 < 0.95 * k_ball, \
+        "with no element at psi = 0 the largest load is well below Stribeck's value"
+
+
+@pytest.mark.parametrize("bearing", [
+    _ball(9, 7.5e-6), _ball(9, 0.0, axial_load=1500.0), _ball(9, 7.5e-6, radial_load=0.0,
+                                                             axial_load=2000.0),
+    load_example("7010-steel"), load_example("7010-hybrid"), _roller(28, 40e-6),
+])
+def test_loads_balance_applied_load(bearing):
+    d = distribute_loads(bearing)
+    op = bearing.operation
+    for got, want, what in ((d.radial_sum, op.radial_load, "radial"),
+                            (d.axial_sum, op.axial_load, "axial")):
+        if want > 0:
+            np.testing.assert_allclose(got, want, rtol=1e-9,
+                                       err_msg=f"{what} sum of element loads = applied load "
+                                               "(Brent to 1e-12; acceptance is 0.1%)")
+        else:
+            assert abs(got) <= 1e-9 * max(op.radial_load, op.axial_load), f"no {what} load"
+
+
+def test_load_zone_matches_harris_integral():
+    """With clearance, psi_l of the discrete solution vs Harris' continuous J_r(epsilon)."""
+    for z, cr in ((9, 7.5e-6), (9, 20e-6), (40, 7.5e-6), (40, 20e-6)):
+        b = _ball(z, cr)
+        d = distribute_loads(b)
+        kn = float(series_ball_stiffness(b)[0](0.0))
+        h = analytic.harris_load_zone(4000.0, z, kn, 1.5, cr)
+        np.testing.assert_allclose(d.load_zone_half_angle, h["half_angle"], rtol=1e-2,
+                                   err_msg=f"Z = {z}, c_r = {cr}: load-zone extent within 1% "
+                                           "of the Harris integral (acceptance)")
+        if z == 40:
+            np.testing.assert_allclose(d.radial_displacement, h["radial_displacement"],
+                                       rtol=1e-3, err_msg="many elements: the sum is the integral")
+    b = _roller(28, 40e-6)
+    d = distribute_loads(b)
+    h = analytic.harris_load_zone(b.operation.radial_load / 2, 28, d.stiffness, 10 / 9, 40e-6)
+    np.testing.assert_allclose(d.load_zone_half_angle, h["half_angle"], rtol=1e-2,
+                               err_msg="roller bearing with clearance: within 1% of Harris")
+    assert d.load_zone_half_angle < math.pi / 2, "clearance shrinks the load zone below 90 deg"
+
+
+def test_pure_axial_load_contact_angle():
+    """Deep-groove ball bearing under axial load only: every ball equal, at the angle of
+    Harris' relation delta = A (cos alpha0/cos alpha - 1), Q = Fa/(Z sin alpha)."""
+    b = _ball(9, 7.5e-6, radial_load=0.0, axial_load=2000.0)
+    d = distribute_loads(b)
+    assert np.ptp(d.load_inner) < 1e-9 * d.max_load, "axial load: equal loads"
+    alpha = float(d.alpha_inner[0])
+    a = groove_centre_distance(b)
+    alpha0 = math.acos(1.0 - 7.5e-6 / a)
+    assert alpha > alpha0, "the contact angle grows with load beyond the free angle"
+    delta = a * (math.cos(alpha0) / math.cos(alpha) - 1.0)
+    kn = float(series_ball_stiffness(b)[0](alpha))
+    np.testing.assert_allclose(kn * delta**1.5, 2000.0 / (9 * math.sin(alpha)), rtol=1e-6,
+                               err_msg="ball equilibrium along the contact line")
+
+
+def test_angular_contact_angle_grows_with_axial_load():
+    b = load_example("7010-steel")
+    light = distribute_loads(replace(b, operation=replace(b.operation, axial_load=500.0)))
+    heavy = distribute_loads(b)
+    loaded = light.in_load_zone
+    assert loaded.all() and heavy.in_load_zone.all(), "Fa/Fr >= 1: all balls loaded"
+    assert np.all(heavy.alpha_inner > light.alpha_inner) and \
+        np.all(light.alpha_inner > math.radians(15.0)), \
+        "contact angles rise above the nominal 15 deg with axial load"
+    hybrid = distribute_loads(load_example("7010-hybrid"))
+    assert np.all(hybrid.alpha_inner < heavy.alpha_inner), \
+        "stiffer Si3N4 balls deflect less: smaller contact-angle change"
+
+
+def test_centrifugal_force_loads_outer_contacts():
+    b = _roller(28, 40e-6)
+    b = replace(b, operation=replace(b.operation, inner_rpm=3000.0),
+                model=replace(b.model, centrifugal=True))
+    d = distribute_loads(b)
+    assert d.centrifugal_force > 0
+    np.testing.assert_allclose(d.load_outer - d.load_inner, d.centrifugal_force, rtol=1e-9,
+                               err_msg="roller: Q_o = Q_i + F_c")
+    np.testing.assert_allclose(d.radial_sum, b.operation.radial_load / 1, rtol=1e-9,
+                               err_msg="inner contacts still balance F_r")
+    bb = replace(_ball(9, 7.5e-6, axial_load=1000.0, inner_rpm=20000.0),
+                 model=replace(load_example("6209").model, centrifugal=True))
+    db = distribute_loads(bb)
+    assert np.all(db.alpha_outer < db.alpha_inner), \
+        "centrifugal force turns the outer contact angle below the inner one (Jones)"
+    fc = db.centrifugal_force
+    for j in range(9):
+        qi, qo = db.load_inner[j], db.load_outer[j]
+        ai, ao = db.alpha_inner[j], db.alpha_outer[j]
+        np.testing.assert_allclose(qi * math.sin(ai), qo * math.sin(ao), rtol=1e-6,
+                                   atol=1e-8 * fc, err_msg="ball axial equilibrium")
+        np.testing.assert_allclose(qi * math.cos(ai) + fc, qo * math.cos(ao), rtol=1e-6,
+                                   err_msg="ball radial equilibrium with F_c")
+    np.testing.assert_allclose([db.radial_sum, db.axial_sum], [4000.0, 1000.0], rtol=1e-9,
+                               err_msg="ring equilibrium")
+
+
+def test_sliced_roller_profile():
+    b = _roller(28, 0.0, profile="crowned", crown_drop=15e-6, slices=11)
+    d = distribute_loads(b)
+    np.testing.assert_allclose(d.slice_loads.sum(axis=1), d.load_inner, rtol=1e-12,
+                               err_msg="slice loads add up to the element load")
+    j = int(np.argmax(d.load_inner))
+    assert d.slice_loads[j, 5] > d.slice_loads[j, 0], "the crown unloads the roller ends"
+    np.testing.assert_allclose(d.radial_sum, b.operation.radial_load, rtol=1e-9,
+                               err_msg="balance with slices")
+    # straight roller cut into slices == Palmgren's law for the whole roller
+    y = d.slice_positions
+    assert profile_drop(_roller(28), y).max() == 0.0
+    c = roller_compliance(b)
+    q = 30e3
+    delta = 2.0 * c * q**0.9
+    c_l = c * b.geometry.effective_length ** 0.9
+    per_length = (0.5 * delta / c_l) ** (1 / 0.9)
+    np.testing.assert_allclose(per_length * b.geometry.effective_length, q, rtol=1e-12,
+                               err_msg="slice law reduces to Palmgren for a straight roller")

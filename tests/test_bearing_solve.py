@@ -1,0 +1,159 @@
+"""solve_bearing: EHL at every loaded contact, symmetry reuse, totals, energy balance."""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from bearing_fem import formulas
+from bearing_fem.bearing import Bearing, load_example, solve_bearing
+from bearing_fem.errors import SceneError
+
+#: Keys of bearing_summary.json required by the interface (issue 14, item 7).
+REQUIRED_KEYS = ("status", "success", "message", "warnings", "wall_time_s", "friction_torque",
+                 "heat_power", "h_min", "p_max", "radial_load", "axial_load", "inner_rpm",
+                 "elements", "empirical")
+
+
+def small_roller(**over) -> Bearing:
+    """A small cylindrical roller bearing (NU 206 size) on a coarse line mesh: ~1 s."""
+    d = {"title": "small roller bearing",
+         "bearing": {"type": "cylindrical-roller", "bore": 0.03, "outside_diameter": 0.062,
+                     "element_diameter": 0.009, "elements": 13, "effective_length": 0.009,
+                     "pitch_diameter": 0.046, "radial_clearance": 5e-6},
+         "lubricant": {"viscosity": 0.05, "piezo": 2e-8},
+         "operation": {"inner_rpm": 1500.0, "radial_load": 2000.0},
+         "mesh": {"line_nodes": 401}}
+    for section, values in over.items():
+        d.setdefault(section, {}).update(values)
+    return Bearing.from_dict(d)
+
+
+@pytest.fixture(scope="module")
+def r6209():
+    b = load_example("6209")
+    return solve_bearing(replace(b, mesh=replace(b.mesh, point_nodes=(81, 81))))
+
+
+def test_6209_summary_contract(r6209):
+    r = r6209
+    assert r.success and r.status == "converged", r.message
+    s = r.summary()
+    json.dumps(s, allow_nan=False)  # strict JSON: no NaN anywhere
+    for key in REQUIRED_KEYS:
+        assert key in s, f"bearing summary key {key!r}"
+    assert len(s["elements"]) == 9
+    for e in s["elements"]:
+        for key in ("azimuth_deg", "load", "contact_angle_deg", "inner", "outer"):
+            assert key in e, f"per-element key {key!r}"
+    assert {"palmgren", "skf"} <= set(s["empirical"]), "62 series: Palmgren and SKF"
+    for m in ("palmgren", "skf"):
+        assert s["empirical"][m]["torque"] > 0 and s["empirical"][m]["heat_power"] > 0
+    loaded = [e for e in s["elements"] if e["in_load_zone"]]
+    assert [e["azimuth_deg"] for e in loaded] == pytest.approx([0.0, 40.0, -40.0]), \
+        "c_r = 7.5 um: the load zone holds the balls at 0 and +-40 deg (psi_l = 79 deg)"
+    assert s["contact_solves"] == {"scenes": 6, "distinct_solved": 4, "reused": 2}, \
+        "the balls at +-40 deg share their scenes (symmetry of the load zone)"
+    e1, e8 = s["elements"][1], s["elements"][8]
+    assert e1["inner"]["heat_power"] == e8["inner"]["heat_power"], "reused result"
+    assert s["h_min_location"] == {"element": 0, "raceway": "inner", "azimuth_deg": 0.0}, \
+        "thinnest film at the most loaded ball's inner (most convex) contact"
+    np.testing.assert_allclose(sum(e["load"] for e in loaded), s["elements"][0]["load"] +
+                               2 * e1["load"], rtol=1e-12)
+    np.testing.assert_allclose(s["load_balance"]["radial_sum"], 4000.0, rtol=1e-9,
+                               err_msg="element loads balance the applied load")
+    for e in s["elements"]:
+        if not e["in_load_zone"]:
+            assert e["inner"]["status"] == "excluded" and "no load" in e["inner"]["message"]
+
+
+def test_6209_films_against_nijenbanning(r6209):
+    """Most loaded contacts within 10% of Nijenbanning-Venner-Moes (81^2 grid here; the
+    default 129^2 grid gives 0.5%, see the benchmark)."""
+    e = r6209.summary()["elements"][0]
+    for race in ("inner", "outer"):
+        c = e[race]
+        assert c["h_central_formula_name"] == "Nijenbanning-Venner-Moes"
+        np.testing.assert_allclose(c["h_central"], c["h_central_formula"], rtol=0.10,
+                                   err_msg=f"{race}: film within the 10% acceptance band")
+    f = r6209.films["inner"]["Nijenbanning-Venner-Moes"]["h_central"]
+    np.testing.assert_allclose(f, e["inner"]["h_central_formula"], rtol=1e-12)
+
+
+def test_torque_from_forces_is_the_rolling_power(r6209):
+    """M_j omega = 2 u_m (F_P,i + F_P,o): the torque from forces and moment arms and the
+    kinematics are consistent (a check of geometry and kinematics, not of the contacts)."""
+    s = r6209.summary()
+    omega = 3000 * 2 * math.pi / 60
+    for e in s["elements"]:
+        if e["in_load_zone"]:
+            rolling = 2 * e["inner"]["entrainment_speed"] * (
+                e["inner"]["rolling_resistance"] + e["outer"]["rolling_resistance"])
+            np.testing.assert_allclose(e["torque"] * omega, rolling, rtol=1e-12,
+                                       err_msg="M = (d_m/2)(1 - gamma^2)(F_P,i + F_P,o)")
+    np.testing.assert_allclose(s["friction_torque"],
+                               s["friction_torque_inner"] + s["friction_torque_outer"],
+                               rtol=1e-14)
+
+
+def test_energy_balance_isoviscous():
+    """Torque x omega = heat power within 0.1% (acceptance) where the contact solver's
+    heat satisfies the Reynolds energy identity Q = 2 u_m F_P (isoviscous line contacts:
+    to 1e-6; point contacts miss it by ~4% on 129^2, see docs/bearing.md)."""
+    r = solve_bearing(small_roller(lubricant={"viscosity_law": "constant"}))
+    assert r.success, r.message
+    eb = r.totals["energy_balance"]
+    assert abs(eb["relative_difference"]) < 1e-3, \
+        f"energy balance {eb}: torque from forces vs dissipated heat"
+
+
+@pytest.mark.xfail(strict=True, reason="piezo-viscous contacts: the contact solver's heat "
+                   "power (direct Poiseuille form) is 10-40% below 2 u_m F_P; the lead's "
+                   "conservative heat form will fix it, then remove this marker")
+def test_energy_balance_piezoviscous(r6209):
+    assert abs(r6209.totals["energy_balance"]["relative_difference"]) < 1e-3
+
+
+def test_sliced_roller_and_reuse():
+    b = small_roller(bearing={"profile": "crowned", "crown_drop": 4e-6, "slices": 5},
+                     mesh={"line_nodes": 201})
+    r = solve_bearing(b)
+    assert r.success, r.message
+    j = r.most_loaded_element()
+    spec = r.contact_spec(j, "inner")
+    assert len(spec.scenes) == 5 and sum(spec.widths) == pytest.approx(0.009)
+    assert len(set(spec.keys)) == 3, "symmetric slices of one contact are solved once"
+    c = r.elements[j]["inner"]
+    np.testing.assert_allclose(c["load_solved"], c["load"], rtol=1e-6,
+                               err_msg="sum over slices of the solved pressure = contact load")
+    mid = r.contact_results(j, "inner")[2].summary()
+    assert c["p_max"] >= mid["p_max"] - 1e-9 * mid["p_max"]
+
+
+def test_failed_contacts_are_a_status_not_nan():
+    b = small_roller(solver={"max_iterations": 1, "continuation": False,
+                             "iteration_budget": 1})
+    r = solve_bearing(b)
+    assert not r.success and r.status == "contacts_failed"
+    s = r.summary()
+    assert s["friction_torque"] is None and s["heat_power"] is None, "no totals from failures"
+    json.dumps(s, allow_nan=False)
+    assert any(e["inner"]["success"] is False for e in s["elements"] if e["in_load_zone"])
+
+
+def test_solve_bearing_rejects_non_bearing():
+    with pytest.raises(SceneError, match="needs a Bearing"):
+        solve_bearing({"bearing": {}})
+
+
+def test_line_films_against_moes():
+    r = solve_bearing(small_roller())
+    c = r.elements[r.most_loaded_element()]["inner"]
+    sc = r.contact_spec(r.most_loaded_element(), "inner").scenes[0]
+    h = formulas.line_central_film_moes(sc.load.force, c["rx"], sc.e_prime, 0.05,
+                                        c["entrainment_speed"], 2e-8)
+    np.testing.assert_allclose(c["h_central"], h, rtol=0.10,
+                               err_msg="most loaded roller contact within 10% of Moes")
