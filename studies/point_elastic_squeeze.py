@@ -15,7 +15,7 @@ Scene (stated, since the thesis is rigid)
   E = 210 GPa, nu = 0.3 (E' = E/(1 - nu^2)).
 * Oil I-40A: eta0 = 68 mm^2/s * 900 kg/m^3 = 0.0612 Pa s, isoviscous (the rigid Barus
   solution of this case does not exist: alpha q_max > 1 for alpha = 2.2e-8 1/Pa, see
-  ``seed001_bearing209.py``), incompressible, Reynolds cavitation.
+  ``bearing209.py``), incompressible, Reynolds cavitation.
 * Mean gap h0 = 0.1 um (the seed's middle gap), eps = 0.3 (seed value), u_m = 1 m/s (the
   seed's sum speed 2 m/s).
 * omega = u_m / sqrt(2 rx h0) (printed; kHz range): one hydrodynamic length of rolling
@@ -62,7 +62,7 @@ from bearing_fem.transient import (ELASTIC_GAP_RANGE_REYNOLDS, solve_elastic_gap
                                    solve_elastic_squeeze_series)
 
 BALL_DIAMETER = 12.7e-3                  # m, D_w of bearing 209
-INNER_RACE_DIAMETER = 65e-3 - 12.7e-3    # m, d_i = d_m - D_w (seed001_bearing209.py)
+INNER_RACE_DIAMETER = 65e-3 - 12.7e-3    # m, d_i = d_m - D_w (bearing209.py)
 VISCOSITY = 68e-6 * 900.0                # Pa s, I-40A
 GAP = 0.1e-6                             # m, mean h0
 EPS = 0.3

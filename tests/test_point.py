@@ -361,8 +361,8 @@ def test_point_map_hamrock_groups(load_study):
         "cases (M = 20..500)")
 
 
-def test_seed001_study_quick(tmp_path, load_study):
-    mod = load_study("seed001_bearing209")
+def test_bearing209_study_quick(tmp_path, load_study):
+    mod = load_study("bearing209")
     out = mod.main(tmp_path, quick=True)
     assert out["max_rel_diff_isoviscous_vs_kapitsa"] < 0.02, (
         "FE isoviscous maxima within 2% of Kapitsa (quick 81^2 graded mesh, zero far-field "
@@ -370,7 +370,7 @@ def test_seed001_study_quick(tmp_path, load_study):
     for row in out["cases"]:
         assert row["solution_exists"] == (row["alpha_q_max"] < 1.0)
         assert (row["p_max_Pa"] is None) != row["solution_exists"]
-    assert (tmp_path / "seed001_bearing209.json").is_file()
+    assert (tmp_path / "bearing209.json").is_file()
 
 
 # ---------------------------------------------------------------------------------------
