@@ -253,8 +253,8 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
                          "elements_loaded": s["load_distribution"]["elements_loaded"],
                          "load_zone_half_angle_deg":
                              s["load_distribution"]["load_zone_half_angle_deg"]})
-            print(f"209 {oil:6s} v={v:5.2f} m/s {r.status}: h_min={s['h_min']!s:.4} m "
-                  f"p_max={s['p_max']!s:.4} Pa", flush=True)
+            print(f"209 {oil:6s} v={v:5.2f} m/s {r.status}: h_min={s['h_min']} m "
+                  f"p_max={s['p_max']} Pa", flush=True)
     res = {"radial_load_N": RADIAL_LOAD, "piezo_1_Pa": PIEZO, "speed_is_sum": speed_is_sum,
            "load_distribution": [{"azimuth_deg": a, "load_N": q} for a, q in dist],
            "cases": rows, "thesis_gaps_m": list(GAPS)}

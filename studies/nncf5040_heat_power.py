@@ -195,9 +195,9 @@ def main(outdir: str | Path = "out/nncf5040_heat_power", quick: bool = False) ->
                "diff_thermal_pct": _rel(th["heat_power_contacts_W"], pal),
                "paper_claim_pct": PAPER_CLAIM.get(t)}
         rows.append(row)
-        print(f"{t:5.0f} C  iso {iso['status']:>15s} Q={iso['heat_power_contacts_W']!s:>12.8}"
-              f" W (M w {iso['heat_power_torque_W']!s:.8}) thermal {th['status']} "
-              f"Q={th['heat_power_contacts_W']!s:.8} W  Palmgren {pal:.0f} W", flush=True)
+        print(f"{t:5.0f} C  iso {iso['status']} Q={_fmt(iso['heat_power_contacts_W'])} W "
+              f"(M w {_fmt(iso['heat_power_torque_W'])} W), thermal {th['status']} "
+              f"Q={_fmt(th['heat_power_contacts_W'])} W, Palmgren {pal:.0f} W", flush=True)
     results = {"quick": quick, "geometry": derived_geometry(), "radial_clearance_m": cr,
                "load_factor_K": K_PAPER, "load_factor_zero_clearance": k0, "rows": rows}
     (out / "results.json").write_text(json.dumps(results, indent=1, default=float))
