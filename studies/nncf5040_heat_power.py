@@ -167,13 +167,13 @@ def main(outdir: str | Path = "out/nncf5040_heat_power", quick: bool = False) ->
     """Run the study; write ``results.json``, ``table.md``, ``table.csv`` and
     ``heat_power.png`` into ``outdir``; return the numbers.
 
-    quick: oil temperatures 20, 50 and 100 C on 401-node contact meshes (about half a
-    minute); full: 20..100 C in 10 K steps, isothermal on the solver's automatic meshes,
-    thermal on 801 nodes.
+    quick: oil temperatures 20 and 100 C on 401-node contact meshes, the thermal variant at
+    100 C only (about 10 s); full: 20..100 C in 10 K steps, isothermal on the solver's
+    automatic meshes, thermal on 801 nodes.
     """
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    temps = [20.0, 50.0, 100.0] if quick else [20.0 + 10.0 * k for k in range(9)]
+    temps = [20.0, 100.0] if quick else [20.0 + 10.0 * k for k in range(9)]
     iso_nodes = 401 if quick else None
     th_nodes = 401 if quick else 801
     cr = paper_clearance()
@@ -183,7 +183,9 @@ def main(outdir: str | Path = "out/nncf5040_heat_power", quick: bool = False) ->
     for t in temps:
         b = bearing_at(t, nodes=iso_nodes, clearance=cr)
         iso = _solve_row(b)
-        th = _solve_row(bearing_at(t, thermal="patch", nodes=th_nodes, clearance=cr))
+        th = _solve_row(bearing_at(t, thermal="patch", nodes=th_nodes, clearance=cr)) \
+            if (not quick or t == temps[-1]) else {"status": "not run (quick)",
+                                                   "heat_power_contacts_W": None}
         pal = palmgren_paper(t)
         row = {"oil_temperature_C": t,
                "viscosity_Pa_s": prokofiev(t, ETA_40, T_REF, N_PROK),
