@@ -144,6 +144,7 @@ def write_figures(result: Any, outdir: str | Path) -> dict[str, Path]:
     outdir = Path(outdir)
     if result.distribution is None:
         return {}
-    return {"load_distribution": plot_load_distribution(result, outdir / FIGURES["load_distribution"]),
+    return {"load_distribution": plot_load_distribution(result,
+                                                        outdir / FIGURES["load_distribution"]),
             "films": plot_films(result, outdir / FIGURES["films"]),
             "torque": plot_torque_comparison(result, outdir / FIGURES["torque"])}

@@ -2,11 +2,12 @@
 
 Questions
 ---------
-1. (Kapitsa's rigid ball, the thesis' model) For the ball of bearing 209 rolling on a lubricated raceway whose gap vibrates as
-h0(t) = h0 (1 + eps cos(omega t)), what is the maximum film pressure (wedge + squeeze,
-at the worst phase), for the oils I-5A, I-12A, I-40A, eps in {0.1, 0.3, 0.6}, speeds
-0.5..7.5 m/s and h0 in {0.2, 0.1, 0.05} um, and where does the piezo-viscous (Barus)
-rigid solution cease to exist (alpha q_max >= 1; docs/analytic.md)?
+1. (Kapitsa's rigid ball, the thesis' model) For the ball of bearing 209 rolling on a
+   lubricated raceway whose gap vibrates as h0(t) = h0 (1 + eps cos(omega t)), what is the
+   maximum film pressure (wedge + squeeze, at the worst phase), for the oils I-5A, I-12A,
+   I-40A, eps in {0.1, 0.3, 0.6}, speeds 0.5..7.5 m/s and h0 in {0.2, 0.1, 0.05} um, and
+   where does the piezo-viscous (Barus) rigid solution cease to exist (alpha q_max >= 1;
+   docs/analytic.md)?
 2. (Whole bearing) What are the load distribution, the EHL films and the pressures of the
    real 209 bearing with the thesis' oils and speeds, and how do they compare with the
    thesis' prescribed gaps h0 = 0.05..0.2 um and its rigid (Kapitsa) pressures?
@@ -242,7 +243,8 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
             rows.append({"oil": oil, "speed_m_s": v, "inner_rpm": b.operation.inner_rpm,
                          "status": r.status, "mesh": {k: list(val) for k, val in mesh.items()},
                          "max_moes_M": max((res.summary()["dimensionless"].get("M", 0.0)
-                                            for res in r.contacts.values()), default=None), "max_ball_load_N": e["load"],
+                                            for res in r.contacts.values()), default=None),
+                         "max_ball_load_N": e["load"],
                          "h_min_m": s["h_min"], "h_central_m": hc, "p_max_Pa": s["p_max"],
                          "film_parameter": s["film_parameter_min"],
                          "friction_torque_N_m": s["friction_torque"],

@@ -90,7 +90,8 @@ def test_nikitin_model_structure():
     q = nikitin_power_loss(*args, flow_ratio=1.0, coefficient_set="joint")
     k, b, x, y, z = NIKITIN_TOTAL["joint"]
     u = math.pi * (0.065 - 0.008731 * math.cos(math.radians(15))) * 10000 / 120
-    np.testing.assert_allclose(q["u"], u, rtol=1e-14, err_msg="cage speed pi (d_cg - d cos g) n/120")
+    np.testing.assert_allclose(q["u"], u, rtol=1e-14,
+                               err_msg="cage speed pi (d_cg - d cos g) n/120")
     phi = k * q["Re"] ** x * q["Pr"] ** y * q["Eu"] ** z
     np.testing.assert_allclose(q["heat_power"], phi * 20 * 850 * 0.008731**2 * u**3, rtol=1e-12)
     half = nikitin_power_loss(*args, flow_ratio=0.5, coefficient_set="joint")["heat_power"]

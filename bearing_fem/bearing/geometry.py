@@ -36,7 +36,8 @@ import numpy as np
 from .. import units
 from .description import Bearing
 
-__all__ = ["ContactGeometry", "contact_geometry", "contact_radii", "reduced_modulus", "ball_stiffness",
+__all__ = ["ContactGeometry", "contact_geometry", "contact_radii", "reduced_modulus",
+           "ball_stiffness",
            "PALMGREN_LINE_COMPLIANCE", "PALMGREN_REFERENCE_MODULUS", "roller_compliance",
            "groove_centre_distance", "free_contact_angle", "radial_clearance"]
 

@@ -79,7 +79,8 @@ class BearingResult:
         Per element: ``index``, ``row``, ``azimuth_deg``, ``load`` (inner contact),
         ``load_outer``, ``contact_angle_deg``, ``contact_angle_outer_deg``,
         ``in_load_zone``, ``approach``, ``torque`` [N m], ``heat_power`` [W] and the
-        ``inner`` and ``outer`` contact summaries (:func:`~bearing_fem.bearing.totals.contact_summary`).
+        ``inner`` and ``outer`` contact summaries
+        (:func:`~bearing_fem.bearing.totals.contact_summary`).
     totals : dict
         :func:`~bearing_fem.bearing.totals.bearing_totals`.
     empirical : dict
