@@ -8,8 +8,9 @@ scenes on the default 129^2 point-contact grid)? Target: under 60 s on 2 cores. 
 benchmark also checks that the run wrote per-element results and every file.
 
 Each repetition runs the ``bearing-fem`` entry point (``bearing_fem.cli.main``) with
-``bearing 6209 --out DIR`` in a fresh process (so the import time counts) and records the wall time; the machine load (1-minute load
-average) is recorded with it, since the machine may be shared.
+``bearing 6209 --out DIR`` in a fresh process (so the import time counts) and records the
+wall time; the machine load (1-minute load average) is recorded with it, since the machine
+may be shared.
 
 Run ``python studies/bearing_benchmark.py OUTDIR [--quick] [--repeat N]``.
 """
