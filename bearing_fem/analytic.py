@@ -17,9 +17,9 @@ from typing import Any as _Any
 
 from scipy.optimize import brentq as _brentq
 
-from bearing_fem.units import _require_finite as _a_finite
-from bearing_fem.units import _require_nonnegative as _a_nonneg
-from bearing_fem.units import _require_positive as _a_pos
+from .units import _require_finite as _a_finite
+from .units import _require_nonnegative as _a_nonneg
+from .units import _require_positive as _a_pos
 
 # Symbols (Section A): x, y [m] (x along the entrainment, inlet at x < 0); h0 [m] central
 # gap; a = 1/(2 rx), b = 1/(2 ry) [1/m] gap curvatures; eta0 = viscosity [Pa s];

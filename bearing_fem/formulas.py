@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from bearing_fem.units import (_require_nonnegative, _require_positive, hamrock_ellipticity,
+from .units import (_require_nonnegative, _require_positive, hamrock_ellipticity,
                                moes_line, moes_point)
 
 __all__ = [

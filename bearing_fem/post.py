@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .fe import QuadratureOperators
+from .numerics.fe import QuadratureOperators
 
 
 def full_film_indicator_line(x_q: np.ndarray, outlet: float | None) -> np.ndarray:

@@ -16,7 +16,7 @@ _UNITS_POINT = {
     "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
     "heat_power_couette": "W", "heat_power_poiseuille": "W", "outlet_position": "m",
     "h_outlet": "m",
-    # thermal coupling (bearing_fem.coupling)
+    # thermal coupling (bearing_fem.contacts.coupling)
     "contact_temperature": "degC", "contact_temperature_rise": "K",
     "contact_temperature_rise_computed": "K", "contact_temperature_rise_mean": "K",
     "contact_temperature_rise_max": "K", "heat_power_direct": "W",

@@ -389,7 +389,7 @@ class Thermal:
         Body 2 values; None: same as body 1.
     source_model : {"jaeger", "fe"}
         Flash temperature of each body: closed-form high-Peclet Jaeger integral, or the
-        FE moving source (:func:`bearing_fem.thermal.moving_source`).
+        FE moving source (:func:`bearing_fem.physics.thermal.moving_source`).
     contact_temperature : {"mean", "max"}
         Which surface temperature rise sets eta0: the pressure-weighted mean or the maximum.
     max_iterations : int

@@ -3,8 +3,8 @@
 Question
     The Reynolds equation of an EHL contact degenerates to pure advection where the
     viscosity is huge, and needs stabilisation. Which of the two stabilisations in
-    :mod:`bearing_fem.reynolds` (SUPG on the whole strong residual, or the first-order
-    upwinded wedge term, :class:`~bearing_fem.reynolds.UpwindFluxModel`) converges on fine
+    :mod:`bearing_fem.physics.reynolds` (SUPG on the whole strong residual, or the first-order
+    upwinded wedge term, :class:`~bearing_fem.physics.reynolds.UpwindFluxModel`) converges on fine
     grids, at what cost, and do they agree on h_central and h_min?
 
 Scene

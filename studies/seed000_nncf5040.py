@@ -3,7 +3,7 @@
 Question
 --------
 Does the thermally coupled line-EHL solve (contact temperature <-> Prokofiev viscosity,
-bearing_fem.coupling) converge for the seed's operating point at oil temperatures
+bearing_fem.contacts.coupling) converge for the seed's operating point at oil temperatures
 20..100 C, and how do its contact temperature rise, heat power and friction coefficient
 compare with the seed's empirical Palmgren-form heat power Q = 1.047e-4 M n?
 
@@ -42,8 +42,8 @@ from dataclasses import replace
 from pathlib import Path
 
 from bearing_fem import bearing
-from bearing_fem.coupling import contact_piezo, solve_thermal
-from bearing_fem.rheology import prokofiev
+from bearing_fem.contacts.coupling import contact_piezo, solve_thermal
+from bearing_fem.physics.rheology import prokofiev
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model,
                                Scene, Thermal, Traction)
 

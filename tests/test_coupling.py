@@ -8,9 +8,10 @@ import numpy as np
 import pytest
 
 import bearing_fem as bf
-from bearing_fem import coupling, thermal
+from bearing_fem.contacts import coupling
+from bearing_fem.physics import thermal
 from bearing_fem.errors import SceneError
-from bearing_fem.rheology import prokofiev
+from bearing_fem.physics.rheology import prokofiev
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model,
                                Scene, Thermal, Traction)
 

@@ -1,5 +1,5 @@
 """Half-space line contacts on fine grids: the upwinded wedge flux, grid sequencing and
-the reuse of LU factors as a GMRES preconditioner (bearing_fem.reynolds, line, solver)."""
+the reuse of LU factors as a GMRES preconditioner (bearing_fem.physics.reynolds, line, solver)."""
 from __future__ import annotations
 
 import sys
@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 import bearing_fem as bf
-from bearing_fem import line, solver
-from bearing_fem.reynolds import FluxModel, UpwindFluxModel
+from bearing_fem.contacts import line, solver
+from bearing_fem.physics.reynolds import FluxModel, UpwindFluxModel
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "studies"))
 from line_ehl_map import scene_for  # noqa: E402

@@ -120,7 +120,7 @@ def _elastic_scene(nodes=601, sliding=0.0):
 
 def test_energy_identity_rigid_and_elastic():
     """int h^3 p'^2/(12 eta) = u_m int h p' (steady, incompressible, 1D)."""
-    from bearing_fem import solver as S
+    from bearing_fem.contacts import solver as S
     from bearing_fem.post import energy_identity_line, full_film_indicator_line
 
     for scene in (rigid_scene("reynolds", law="constant"), _elastic_scene()):

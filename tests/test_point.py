@@ -1,4 +1,4 @@
-"""Point/elliptical contacts (bearing_fem.point): Kapitsa oracles, convergence, status.
+"""Point/elliptical contacts (bearing_fem.contacts.point): Kapitsa oracles, convergence, status.
 
 The rigid oracles (PHYSICS.md 5.1) are imposed as Dirichlet data on the finite domain,
 so only the discretisation error is measured.
@@ -13,7 +13,7 @@ import pytest
 import scipy.sparse as sp
 
 from bearing_fem import analytic as an
-from bearing_fem.point import PointGrid, solve_point
+from bearing_fem.contacts.point import PointGrid, solve_point
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene, SolverSpec)
 
@@ -125,7 +125,7 @@ def test_bad_input():
 
 
 def test_squeeze_series_matches_kapitsa(tmp_path):
-    from bearing_fem.point import solve_squeeze_series
+    from bearing_fem.contacts.point import solve_squeeze_series
 
     rx, ry = 0.01, 0.02
     eps = 0.3
@@ -223,7 +223,7 @@ def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
     # The y-symmetric scene is solved on its half y >= 0 and mirrored; the same scene on
     # the whole grid must give the same Newton history and fields, and the reported
     # residual is the whole grid's.
-    import bearing_fem.point as pt
+    import bearing_fem.contacts.point as pt
 
     scene = _moes_scene(100, 10, 65, ry_over_rx)
     half = solve_point(scene)
@@ -248,7 +248,7 @@ def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
 
 
 def test_half_grid_needs_a_symmetric_scene():
-    import bearing_fem.point as pt
+    import bearing_fem.contacts.point as pt
 
     scene = _moes_scene(100, 10, 65)
     setup = pt.point_setup(scene)
@@ -383,7 +383,7 @@ def test_quadrature_operators_equal_coo_assembly(kind):
     from skfem import (CellBasis, ElementLineP2, ElementQuad1, ElementTriP1, MeshLine,
                        MeshQuad, MeshTri)
 
-    from bearing_fem.fe import quadrature_operators
+    from bearing_fem.numerics.fe import quadrature_operators
 
     basis = {"quad": lambda: CellBasis(MeshQuad.init_tensor(np.linspace(0, 1, 7),
                                                             np.linspace(0, 2, 5)),
@@ -440,7 +440,7 @@ def test_element_assembler_matches_sparse_products():
 
 @pytest.mark.parametrize("nx, ny", [(1, 1), (7, 5), (30, 17)])
 def test_nested_dissection_is_a_separator_order(nx, ny):
-    from bearing_fem.point import nested_dissection
+    from bearing_fem.contacts.point import nested_dissection
 
     perm = nested_dissection(nx, ny, leaf=2)
     assert np.array_equal(np.sort(perm), np.arange(nx * ny))
@@ -449,7 +449,7 @@ def test_nested_dissection_is_a_separator_order(nx, ny):
 def test_preconditioner_fast_path_equals_sparse_products():
     # the gathered, dissected LU solves the same matrix as the sparse-product fallback
     scene = _moes_scene(100, 10, 17)
-    import bearing_fem.point as bp
+    import bearing_fem.contacts.point as bp
 
     setup = bp.point_setup(scene)
     prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
@@ -477,8 +477,8 @@ def _flux_inputs(seed: int, n: int = 500):
 def test_upwind_flux_derivatives_match_complex_step():
     from dataclasses import replace
 
-    import bearing_fem.point as bp
-    from bearing_fem.reynolds import FluxModel
+    import bearing_fem.contacts.point as bp
+    from bearing_fem.physics.reynolds import FluxModel
 
     scene = _moes_scene(100, 10, 17)
     setup = bp.point_setup(scene)
@@ -506,8 +506,8 @@ def test_upwind_flux_derivatives_match_complex_step():
 def test_reduced_flux_derivatives_match_complex_step():
     # the reduced-pressure flux used by elastic point contacts: d/dp (complex step inside)
     # and the analytic d/dh against a complex step of the flux at fixed gradients
-    import bearing_fem.point as bp
-    from bearing_fem.reynolds import _STEP
+    import bearing_fem.contacts.point as bp
+    from bearing_fem.physics.reynolds import _STEP
 
     scene = _moes_scene(100, 10, 17)
     flux = bp._flux(scene, bp.point_setup(scene))
@@ -533,7 +533,7 @@ def test_reduced_flux_derivatives_match_complex_step():
 def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
     # the Jacobian (element assembly, column scaling by dq/dp, FFT compliance) against
     # central differences of the residual, GMRES solved to 1e-9 (no inexact forcing)
-    import bearing_fem.point as bp
+    import bearing_fem.contacts.point as bp
 
     monkeypatch.setattr(bp, "GMRES_FORCING_MAX", 0.0)
     scene = _moes_scene(100, 10, 33)
@@ -557,7 +557,7 @@ def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
 
 
 def test_xi_complex_step_equals_analytic_derivative():
-    from bearing_fem.reynolds import _coth_minus_inverse
+    from bearing_fem.physics.reynolds import _coth_minus_inverse
 
     x = np.array([-50.0, -3.0, -1e-3, 0.0, 1e-3, 0.5, 2.0, 39.0, 41.0, 1e3])
     s = 1e-20

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from bearing_fem import traction
+from bearing_fem.physics import traction
 
 
 def test_eyring_tends_to_newtonian_as_tau0_grows():

@@ -1,4 +1,4 @@
-"""Elastic transient squeeze (bearing_fem.transient): rigid limit vs Kapitsa, time order,
+"""Elastic transient squeeze (bearing_fem.contacts.transient): rigid limit vs Kapitsa, time order,
 steady limit, Jacobian of the time terms, status contract, bad input.
 
 Grids are coarse (25^2 to 57^2) to keep the module fast; every tolerance says why.
@@ -15,7 +15,7 @@ from bearing_fem import analytic as an
 from bearing_fem.errors import SceneError
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene)
-from bearing_fem.transient import (BDF_COEFFICIENTS, solve_elastic_gap,
+from bearing_fem.contacts.transient import (BDF_COEFFICIENTS, solve_elastic_gap,
                                    solve_elastic_squeeze_series)
 
 U_M = 1.0                 # m/s
@@ -143,7 +143,7 @@ def test_zero_amplitude_gives_steady_solution_every_step():
 # (d) consistency: steady gap solve vs the load-controlled solver; exact time Jacobian
 # ---------------------------------------------------------------------------------------
 def test_steady_gap_solution_matches_load_controlled_solver():
-    from bearing_fem.point import solve_point
+    from bearing_fem.contacts.point import solve_point
     from bearing_fem.units import hertz_point
 
     sc = scene(cavitation="reynolds")
@@ -173,8 +173,8 @@ def test_newton_step_consistent_with_time_residual(monkeypatch):
     # The time terms of the Jacobian (rho' h and rho C, Fischer-Burmeister rows) are exact:
     # along the Newton direction dz, F(z + d dz) - F(z - d dz) = -2 d F(z) to O(d^2) and
     # the GMRES tolerance.
-    from bearing_fem import point
-    from bearing_fem.transient import _make_step_problem, elastic_gap_setup
+    from bearing_fem.contacts import point
+    from bearing_fem.contacts.transient import _make_step_problem, elastic_gap_setup
 
     # the solver's inexact Newton loosens GMRES to |F| far from the solution; this check
     # needs the exact step, so GMRES runs to its tight tolerance
@@ -206,7 +206,7 @@ def test_newton_step_consistent_with_time_residual(monkeypatch):
 # status contract and bad input
 # ---------------------------------------------------------------------------------------
 def test_failed_step_stops_series_with_status(monkeypatch):
-    import bearing_fem.transient as tr
+    import bearing_fem.contacts.transient as tr
 
     real = tr.damped_newton
     calls = {"n": 0}
@@ -231,7 +231,7 @@ def test_failed_step_stops_series_with_status(monkeypatch):
 def test_start_falls_back_to_compliance_continuation(monkeypatch):
     # If the direct Newton solve of the steady start fails, the start is reached by
     # continuation in the compliance 1/E' (rigid -> elastic) and is the same solution.
-    import bearing_fem.transient as tr
+    import bearing_fem.contacts.transient as tr
 
     sc = scene(nodes=25, cavitation="reynolds")
     direct = solve_elastic_gap(sc)
@@ -323,7 +323,7 @@ def test_elastic_squeeze_study_coarse(tmp_path, load_study):
 def test_solve_routes_elastic_gap_scenes_to_the_elastic_solver():
     """bf.solve on a half-space point scene with load.gap is elastic, not rigid."""
     import bearing_fem as bf
-    from bearing_fem.transient import solve_elastic_gap
+    from bearing_fem.contacts.transient import solve_elastic_gap
 
     sc = scene()  # I-40A ball, 33^2: strongly elastic at the 0.1 um gap
     via_solve = bf.solve(sc)

@@ -8,7 +8,7 @@ Paths (a scene pays only for what it needs):
   primal-dual active-set sequence of linear solves (Reynolds cavitation, an obstacle
   problem); then p = -ln(1 - alpha q)/alpha, which exists only while alpha max q < 1
   (PHYSICS.md 5.1): otherwise the status is ``no_solution``.
-* everything else: **damped Newton** on (p, h0) (:mod:`bearing_fem.line`), from a
+* everything else: **damped Newton** on (p, h0) (:mod:`bearing_fem.contacts.line`), from a
   Hertzian (elastic) or rigid (linear) initial guess, with automatic continuation in the
   pressure-viscosity coefficient when the direct attempt does not converge.
 """
@@ -23,12 +23,12 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from .errors import SceneError
+from ..errors import SceneError
 from .line import LineDiscretisation, LineProblem
-from .newton import continuation, damped_newton, outcome_message
-from .result import Result
-from .reynolds import FluxModel, UpwindFluxModel
-from .scene import Scene
+from ..numerics.newton import continuation, damped_newton, outcome_message
+from ..result import Result
+from ..physics.reynolds import FluxModel, UpwindFluxModel
+from ..scene import Scene
 
 log = logging.getLogger(__name__)
 
@@ -46,12 +46,12 @@ MAX_DEFAULT_ELASTIC_NODES = 4001
 #: Default rigid-scene grid: nodes per sqrt(2 R h0).
 NODES_PER_RIGID_LENGTH = 40
 #: Stabilisation of half-space line contacts: "upwind" (first-order upwinded wedge term,
-#: :class:`~bearing_fem.reynolds.UpwindFluxModel`) or "supg" (SUPG on the whole strong
+#: :class:`~bearing_fem.physics.reynolds.UpwindFluxModel`) or "supg" (SUPG on the whole strong
 #: residual). Kodnir's local model always uses SUPG. ``studies/line_stabilisation.py``
 #: compares the two.
 HALF_SPACE_STABILISATION = "upwind"
 #: Poiseuille term of half-space line contacts with Barus viscosity (as in
-#: :data:`bearing_fem.point.REDUCED_POISEUILLE`): rho h^3/(12 eta0) dq_h/dx, q_h the P1
+#: :data:`bearing_fem.contacts.point.REDUCED_POISEUILLE`): rho h^3/(12 eta0) dq_h/dx, q_h the P1
 #: interpolant of the nodal reduced pressure q = (1 - exp(-alpha p))/alpha, instead of
 #: eps(p) dp/dx at the quadrature points. Over an element it is the exact integral of
 #: eps(p) dp/dx for linear p, monotone in the nodal pressures whatever the jump; the
@@ -110,7 +110,7 @@ class LineSetup:
 
 
 def _kodnir_coefficient(scene: Scene) -> float:
-    from .elasticity import kodnir_local_coefficient
+    from ..physics.elasticity import kodnir_local_coefficient
 
     # Kodnir's 1.52 contains nu = 0.3 for two equal bodies: E = E' (1 - 0.3^2).
     e = scene.e_prime * (1.0 - 0.3**2)
@@ -119,8 +119,9 @@ def _kodnir_coefficient(scene: Scene) -> float:
 
 def line_setup(scene: Scene) -> LineSetup:
     """Reference scales, default mesh and compliance operator of a line scene."""
-    from . import elasticity, units
-    from .formulas import line_central_film_moes
+    from ..physics import elasticity
+    from .. import units
+    from ..formulas import line_central_film_moes
 
     R = scene.contact.rx
     lub, kin, model = scene.lubricant, scene.kinematics, scene.model
@@ -295,7 +296,7 @@ def pressure_from_reduced(q: np.ndarray, alpha: float, solves: int,
     q_max = float(np.max(q))
     if alpha * q_max >= 1.0:
         return "no_solution", q, no_solution_message(alpha, q_max)
-    from .analytic import barus_from_reduced
+    from ..analytic import barus_from_reduced
 
     p = barus_from_reduced(q, alpha) if alpha > 0 else q
     return "linear", p, (f"solved by {solves} linear solve(s) (rigid, reduced pressure"
@@ -303,7 +304,7 @@ def pressure_from_reduced(q: np.ndarray, alpha: float, solves: int,
 
 
 def _solve_line_linear(scene: Scene, setup: LineSetup, bp, t0: float) -> Result:
-    from .analytic import reduced_from_barus
+    from ..analytic import reduced_from_barus
 
     lub = scene.lubricant
     alpha = lub.effective_piezo
@@ -340,7 +341,7 @@ def _initial_guess(scene: Scene, setup: LineSetup, problem: LineProblem,
         v0 = float(np.interp(0.0, x, problem.displacement(p)))
         h_est = setup.h_estimate
         if speed_scale != 1.0:
-            from .formulas import line_central_film_moes
+            from ..formulas import line_central_film_moes
 
             h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity,
                                            scene.kinematics.mean_speed * speed_scale,
@@ -491,7 +492,7 @@ def _coarsened(scene: Scene, setup: LineSetup, nodes: int) -> LineSetup:
     """The same scene on a coarser uniform grid over the same interval."""
     from dataclasses import replace as dc_replace
 
-    from . import elasticity
+    from ..physics import elasticity
 
     x = setup.disc.x
     disc = LineDiscretisation.uniform(float(x[0]), float(x[-1]), nodes)
@@ -504,7 +505,7 @@ def _coarsened(scene: Scene, setup: LineSetup, nodes: int) -> LineSetup:
 def _finish(scene: Scene, setup: LineSetup, problem: LineProblem, p: np.ndarray, h0: float,
             status: str, message: str, t0: float, *, iterations: int = 0, linear_solves: int = 0,
             history=None, continuation_steps=None, post: bool = True) -> Result:
-    from . import post as pp
+    from .. import post as pp
 
     disc = setup.disc
     ops = disc.ops
@@ -538,9 +539,9 @@ def _finish(scene: Scene, setup: LineSetup, problem: LineProblem, p: np.ndarray,
 def _non_newtonian_couette(scene: Scene, x: np.ndarray, p: np.ndarray, h: np.ndarray,
                            eta: np.ndarray, outlet: float | None, q: dict) -> None:
     """Replace the Newtonian Couette friction and heat by the scene's traction model
-    (Eyring or limiting shear stress, :mod:`bearing_fem.traction`); the Poiseuille parts
+    (Eyring or limiting shear stress, :mod:`bearing_fem.physics.traction`); the Poiseuille parts
     stay as computed."""
-    from .traction import _model_kwargs, couette_line
+    from ..physics.traction import _model_kwargs, couette_line
 
     xm = 0.5 * (x[1:] + x[:-1])
     ind = np.ones_like(xm) if outlet is None else (xm <= outlet).astype(float)

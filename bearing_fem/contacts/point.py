@@ -7,7 +7,7 @@ gap curvatures [1/m]; eta0 [Pa s]; alpha Barus coefficient [1/Pa]; u_m mean spee
 
 Grid: a tensor-product grid x (nx,), y (ny,) meshed by ``ElementQuad1`` cells, node
 numbering ``j*nx + i`` (x fastest), the layout of
-:class:`~bearing_fem.elasticity.HalfSpacePoint`. Fields in the :class:`Result` are
+:class:`~bearing_fem.physics.elasticity.HalfSpacePoint`. Fields in the :class:`Result` are
 ``(ny, nx)`` arrays, ``pressure[j, i]`` at ``(x[i], y[j])``.
 
 Film: h = h0 + x^2/(2 rx) + y^2/(2 ry) + v(x, y) (geometry exact at the quadrature
@@ -29,9 +29,9 @@ Two paths (a scene pays only for what it needs):
   (Reynolds cavitation q >= 0). p = -ln(1 - alpha q)/alpha exists only while
   alpha max q < 1; otherwise status ``no_solution`` and the fields hold q.
   Default rigid grid: sinh-graded (fine at the centre), since no FFT is needed.
-* **Newton** - everything else: damped Newton (:func:`bearing_fem.newton.damped_newton`)
+* **Newton** - everything else: damped Newton (:func:`bearing_fem.numerics.newton.damped_newton`)
   on the scaled unknowns (p at interior nodes, h0 under load balance) with
-  Fischer-Burmeister cavitation rows and a load row, as :mod:`bearing_fem.line`. The
+  Fischer-Burmeister cavitation rows and a load row, as :mod:`bearing_fem.contacts.line`. The
   Jacobian dR/dp = A_p + A_h C couples the sparse Reynolds blocks with the dense
   half-space compliance C (FFT apply); each Newton step is solved by GMRES with the
   matrix-free Jacobian, preconditioned by a sparse LU of A_p + A_h C_near
@@ -39,7 +39,7 @@ Two paths (a scene pays only for what it needs):
   forcing tolerance. Elastic scenes with Barus viscosity take the Poiseuille term from
   the interpolated nodal reduced pressure (``REDUCED_POISEUILLE``). Grid sequencing
   (coarse solve, bilinear interpolation, few fine steps) and continuation in alpha as
-  :mod:`bearing_fem.solver`, warm-started from the interpolated solution on finer grids.
+  :mod:`bearing_fem.contacts.solver`, warm-started from the interpolated solution on finer grids.
 """
 from __future__ import annotations
 
@@ -54,12 +54,12 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import CellBasis, ElementQuad1, MeshQuad
 
-from .errors import SceneError
-from .fe import QuadratureOperators, quadrature_operators
+from ..errors import SceneError
+from ..numerics.fe import QuadratureOperators, quadrature_operators
 from .line import ScaledResidual, fischer_burmeister
-from .newton import continuation, damped_newton, gmres_right, outcome_message
-from .result import Result
-from .reynolds import FluxModel, UpwindFluxModel
+from ..numerics.newton import continuation, damped_newton, gmres_right, outcome_message
+from ..result import Result
+from ..physics.reynolds import FluxModel, UpwindFluxModel
 
 log = logging.getLogger(__name__)
 
@@ -307,12 +307,12 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
     Elastic scenes: lengths in the Hertz semi-axes a_x, a_y, uniform grid (FFT compliance).
     ``nodes`` overrides ``scene.mesh.nodes`` (grid sequencing). ``symmetric`` (elastic
     scenes under load with a y-symmetric grid, see :func:`_symmetric`): the half grid
-    y >= 0 with :class:`~bearing_fem.elasticity.MirroredHalfSpacePoint`; ``nodes`` still
+    y >= 0 with :class:`~bearing_fem.physics.elasticity.MirroredHalfSpacePoint`; ``nodes`` still
     counts the whole grid.
     """
-    from . import units
-    from .elasticity import HalfSpacePoint, MirroredHalfSpacePoint
-    from .formulas import point_central_film_nvm
+    from .. import units
+    from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
+    from ..formulas import point_central_film_nvm
 
     rx, ry = scene.contact.rx, scene.contact.ry
     lub, kin, model = scene.lubricant, scene.kinematics, scene.model
@@ -457,7 +457,7 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
 
 def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: float,
                   t0: float) -> Result:
-    from .analytic import reduced_from_barus
+    from ..analytic import reduced_from_barus
 
     lub = scene.lubricant
     alpha = lub.effective_piezo
@@ -1129,7 +1129,7 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
         ``x`` (nx,), ``y`` (ny,) [m]; ``pressure`` [Pa] and ``film`` [m] as (ny, nx)
         arrays. Never raises for non-convergence or non-existence (see ``status``).
     """
-    from .scene import Scene
+    from ..scene import Scene
 
     if not isinstance(scene, Scene):
         raise SceneError(f"solve_point() needs a Scene, got {type(scene).__name__}")
@@ -1298,7 +1298,7 @@ def _finish(scene, setup: PointSetup, problem: PointProblem, p: np.ndarray, h0: 
             status: str, message: str, t0: float, *, iterations: int = 0,
             linear_solves: int = 0, history=None, continuation_steps=None, post: bool = True,
             cavitated: np.ndarray | None = None) -> Result:
-    from . import post as pp
+    from .. import post as pp
 
     grid = problem.grid
     ops = grid.ops

@@ -19,7 +19,7 @@ contains dh0/dt, the elastic deformation rate dv/dt = C dp/dt and the density ch
 the pressure has memory, the steps are coupled in time.
 
 Weak form and time discretisation (conservative, the time derivative acts on the mass
-rho h itself). With the steady residual of :class:`bearing_fem.point.PointProblem`,
+rho h itself). With the steady residual of :class:`bearing_fem.contacts.point.PointProblem`,
 R_steady(phi) = int F . grad phi, F = rho h^3/(12 eta) grad p - u_m rho h e_x (+ the
 upwinding of the elastic path), step n solves for p^n
 
@@ -32,7 +32,7 @@ start-up error instead of carrying it; the trapezoidal rule (Crank-Nicolson) is 
 the algebraic part it gives S(p^n) = -S(p^(n-1)) + ..., so an error of the start flips
 sign every step and never decays. It is not offered.
 
-Newton on step n (:func:`bearing_fem.newton.damped_newton`, the GMRES machinery of
+Newton on step n (:func:`bearing_fem.numerics.newton.damped_newton`, the GMRES machinery of
 :meth:`PointProblem.newton_step`): the time term adds to the sparse blocks
 
     A_p += (c_0/dt) M[rho'(p) h],     A_h += (c_0/dt) M[rho],
@@ -69,12 +69,12 @@ from typing import Callable
 import numpy as np
 import scipy.sparse as sp
 
-from .errors import SceneError
+from ..errors import SceneError
 from .line import fischer_burmeister
-from .newton import continuation, damped_newton, outcome_message
+from ..numerics.newton import continuation, damped_newton, outcome_message
 from .point import (PointGrid, PointProblem, PointSetup, SqueezeSeries, _boundary_values,
                     _finish, _flux, _rigid_start)
-from .result import Result
+from ..result import Result
 
 log = logging.getLogger(__name__)
 
@@ -112,11 +112,11 @@ def elastic_gap_setup(scene, nodes: tuple[int, int] | None = None,
     Returns
     -------
     PointSetup
-        ``compliance`` is a :class:`~bearing_fem.elasticity.HalfSpacePoint`;
+        ``compliance`` is a :class:`~bearing_fem.physics.elasticity.HalfSpacePoint`;
         ``stab_compliance`` = 4 L_x/(pi E') (upwinding scale of the wedge term, the
         analogue of 4 a_x/(pi E') of load-controlled scenes); ``hertz`` is None.
     """
-    from .elasticity import HalfSpacePoint
+    from ..physics.elasticity import HalfSpacePoint
 
     h0 = scene.load.gap
     rx, ry = scene.contact.rx, scene.contact.ry
@@ -143,7 +143,7 @@ def elastic_gap_setup(scene, nodes: tuple[int, int] | None = None,
 class TransientPointProblem(PointProblem):
     """One time step of the transient Reynolds-elasticity system (a NonlinearProblem).
 
-    The residual is that of :class:`~bearing_fem.point.PointProblem` plus the BDF mass
+    The residual is that of :class:`~bearing_fem.contacts.point.PointProblem` plus the BDF mass
     term int (1/dt) sum_k c_k (rho h)^(n-k) phi (module docstring); the film of the
     earlier levels enters only through ``history``. With ``time_step=None`` the problem
     is the steady one (optionally with the squeeze source of the base class).
@@ -151,7 +151,7 @@ class TransientPointProblem(PointProblem):
     Parameters
     ----------
     *args, **kwargs
-        As :class:`~bearing_fem.point.PointProblem` (``gap`` = h0^n [m]).
+        As :class:`~bearing_fem.contacts.point.PointProblem` (``gap`` = h0^n [m]).
     time_step : float or None
         dt [s]; None: steady (no time term).
     coefficients : sequence of float
@@ -231,7 +231,7 @@ class TransientPointProblem(PointProblem):
 # ---------------------------------------------------------------------------------------
 @dataclass
 class ElasticSqueezeSeries(SqueezeSeries):
-    """Elastic transient squeeze series (a :class:`~bearing_fem.point.SqueezeSeries`).
+    """Elastic transient squeeze series (a :class:`~bearing_fem.contacts.point.SqueezeSeries`).
 
     Step 0 is the steady start at t0; steps 1.. are the time steps. The arrays cover the
     solved steps only: a failed step stops the series, its Result is ``failure`` and
@@ -296,7 +296,7 @@ class ElasticSqueezeSeries(SqueezeSeries):
 # driver
 # ---------------------------------------------------------------------------------------
 def _check_scene(scene, who: str) -> None:
-    from .scene import Scene
+    from ..scene import Scene
 
     if not isinstance(scene, Scene):
         raise SceneError(f"{who} needs a Scene, got {type(scene).__name__}")
@@ -305,7 +305,7 @@ def _check_scene(scene, who: str) -> None:
     if scene.model.elasticity != "half-space":
         raise SceneError(f"{who} needs model.elasticity = 'half-space' (an elastic scene), "
                          f"got {scene.model.elasticity!r}; rigid scenes have no memory: use "
-                         f"bearing_fem.point.solve_squeeze_series")
+                         f"bearing_fem.contacts.point.solve_squeeze_series")
     if scene.load.gap is None:
         raise SceneError(f"{who} needs a prescribed gap load.gap (m), the mean rigid offset "
                          f"h0 of h0(t) = h0 (1 + eps cos(omega t)); got load.force = "
@@ -322,7 +322,7 @@ def _make_step_problem(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, *
                        ) -> TransientPointProblem:
     comp = setup.compliance
     if compliance_scale != 1.0:
-        from .elasticity import HalfSpacePoint
+        from ..physics.elasticity import HalfSpacePoint
 
         comp = None if compliance_scale == 0.0 else HalfSpacePoint(
             setup.grid.x, setup.grid.y, scene.e_prime / compliance_scale)
@@ -362,7 +362,7 @@ def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
     The film is h = h0 + g + v[p] (half-space compliance) and the steady Reynolds equation
     carries the squeeze source rho dh0/dt (no dv/dt): the start of
     :func:`solve_elastic_squeeze_series` and its quasi-steady comparison.
-    :func:`bearing_fem.point.solve_point` handles elastic scenes under a load; this is the
+    :func:`bearing_fem.contacts.point.solve_point` handles elastic scenes under a load; this is the
     gap-controlled counterpart (no load balance, uniform grid in sqrt(2 rx h0) units).
 
     Parameters
@@ -379,7 +379,7 @@ def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
     Returns
     -------
     Result
-        As :func:`~bearing_fem.point.solve_point`; never raises for non-convergence.
+        As :func:`~bearing_fem.contacts.point.solve_point`; never raises for non-convergence.
     """
     who = "solve_elastic_gap"
     _check_scene(scene, who)
@@ -445,7 +445,7 @@ def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = 
         Relative amplitude [-], 0 <= eps < 1.
     omega : float, optional
         Angular frequency [rad/s], > 0; default u_m / sqrt(2 rx h0) (as
-        :func:`~bearing_fem.point.solve_squeeze_series`).
+        :func:`~bearing_fem.contacts.point.solve_squeeze_series`).
     n_steps : int
         Time steps per period (>= 2); dt = 2 pi/(omega n_steps) [s].
     periods : int

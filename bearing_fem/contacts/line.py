@@ -6,7 +6,7 @@ data, 0 by default) and, under load balance, the rigid offset h0.
 Equations (all scaled to O(1)):
 
 * Reynolds rows: the weak flux-form residual R_i = int F dphi_i/dx (see
-  :mod:`bearing_fem.reynolds`), scaled to a pressure as r_i = R_i dx / (2 eps0_i p_ref)
+  :mod:`bearing_fem.physics.reynolds`), scaled to a pressure as r_i = R_i dx / (2 eps0_i p_ref)
   with eps0_i the isoviscous flow coefficient at node i. With ``cavitation = "none"``
   the row is r_i = 0; with ``"reynolds"`` it is the Fischer-Burmeister function
   phi(p_i/p_ref, r_i) = a + b - sqrt(a^2 + b^2) of the complementarity problem
@@ -30,9 +30,9 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import CellBasis, ElementLineP1, MeshLine
 
-from .fe import QuadratureOperators, quadrature_operators
-from .newton import gmres_right
-from .reynolds import FluxModel
+from ..numerics.fe import QuadratureOperators, quadrature_operators
+from ..numerics.newton import gmres_right
+from ..physics.reynolds import FluxModel
 
 
 @dataclass
@@ -99,7 +99,7 @@ class ScaledResidual:
     def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, ...]:
         """Gradient of the interpolant q_h of the nodal reduced pressure q(p) at the
         quadrature points [Pa/m], one array per dimension
-        (:meth:`~bearing_fem.reynolds.UpwindFluxModel.reduced`)."""
+        (:meth:`~bearing_fem.physics.reynolds.UpwindFluxModel.reduced`)."""
         q = self.flux.reduced(p)
         return tuple(g @ q for g in self.ops.grad)
 
@@ -146,7 +146,7 @@ class LineProblem(ScaledResidual):
     radius : float
         Reduced radius R [m].
     compliance : object with ``matrix()``/``apply()``/``is_zero``/``is_local``
-        From :mod:`bearing_fem.elasticity`.
+        From :mod:`bearing_fem.physics.elasticity`.
     cavitation : {"reynolds", "none"}
     load : float or None
         Load per length w [N/m]; None means the offset is prescribed.

@@ -49,7 +49,7 @@ discretisation-error indicator.
 Stabilisation. Where exp(b_alpha k) is large, eps -> 0 and the equation degenerates to
 the advection of k through the elastic film term C k (Galerkin P1 then gives odd-even
 oscillations). The flux is stabilised by streamline-upwind Petrov-Galerkin exactly as
-in :mod:`bearing_fem.reynolds` (test function v + tau beta dv/dz, advection speed
+in :mod:`bearing_fem.physics.reynolds` (test function v + tau beta dv/dz, advection speed
 beta = -C, tau beta = -(dz/2)(coth Pe - 1/Pe), Pe = C dz / (2 eps), multiplying the
 element strong residual S = -d(eps)/dz dk/dz - dH/dz); consistent (S = 0 for the exact
 solution) and absent when C = 0. The derivatives of the pointwise flux are taken by the
@@ -71,10 +71,10 @@ import scipy.sparse.linalg as spla
 from scipy.optimize import brentq
 from skfem import CellBasis, ElementLineP1, MeshLine
 
-from .fe import QuadratureOperators, quadrature_operators
+from ..numerics.fe import QuadratureOperators, quadrature_operators
 from .line import fischer_burmeister
-from .newton import NewtonOutcome, damped_newton
-from .reynolds import _coth_minus_inverse
+from ..numerics.newton import NewtonOutcome, damped_newton
+from ..physics.reynolds import _coth_minus_inverse
 
 log = logging.getLogger(__name__)
 
@@ -778,7 +778,7 @@ def kodnir_scales(h_star: float, radius: float, viscosity: float, sum_speed: flo
         B1 = sqrt(2 h* R), B = 6 eta0 U_sum B1/h*^2, C = A' B/(E h*) with
         A' = 2.54 b_H, b_H = 1.52 sqrt(q_H R/E), and B alpha.
     """
-    from .elasticity import kodnir_local_coefficient
+    from ..physics.elasticity import kodnir_local_coefficient
 
     for name, val, unit in (("h_star", h_star, "m"), ("radius", radius, "m"),
                             ("viscosity", viscosity, "Pa s"), ("sum_speed", sum_speed, "m/s")):

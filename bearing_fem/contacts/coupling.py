@@ -25,7 +25,7 @@ Korovchinsky patch gives only temperature differences in 2D (its constant C need
 Flash temperature (``thermal.source_model``): ``"jaeger"`` the high-Pe closed form
 T(x) = (pi lambda rho c V)^(-1/2) int_{-inf}^{x} q(s) (x - s)^(-1/2) ds, integrated exactly
 for the piecewise-constant element flux; ``"fe"`` the FE moving source
-(:func:`bearing_fem.thermal.moving_source`) on the band covering the heated zone.
+(:func:`bearing_fem.physics.thermal.moving_source`) on the band covering the heated zone.
 """
 from __future__ import annotations
 
@@ -35,11 +35,11 @@ from dataclasses import replace
 
 import numpy as np
 
-from . import thermal, traction
-from .errors import SceneError
-from .result import Result
-from .rheology import prokofiev
-from .scene import Scene
+from ..physics import thermal, traction
+from ..errors import SceneError
+from ..result import Result
+from ..physics.rheology import prokofiev
+from ..scene import Scene
 
 __all__ = ["solve_thermal", "contact_viscosity", "contact_piezo", "jaeger_surface_temperature",
            "flash_temperature"]
