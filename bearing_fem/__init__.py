@@ -20,7 +20,7 @@ __version__ = "0.1.0"
 _LAZY = {
     "Scene": ("bearing_fem.scene", "Scene"),
     "SceneError": ("bearing_fem.errors", "SceneError"),
-    "solve": ("bearing_fem.contacts.solver", "solve"),
+    "solve": ("bearing_fem.contacts.dispatch", "solve"),
     "Result": ("bearing_fem.result", "Result"),
     "export": ("bearing_fem.io", "export"),
 }

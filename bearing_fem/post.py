@@ -21,6 +21,9 @@ ruptures and carries no Couette shear.
 """
 from __future__ import annotations
 
+import math
+from typing import Any, Mapping, Sequence
+
 import numpy as np
 
 from .numerics.fe import QuadratureOperators
@@ -106,3 +109,106 @@ def energy_identity_line(ops: QuadratureOperators, h_q: np.ndarray, px_q: np.nda
     w = ops.weights * indicator_q
     return (float(w @ (h_q**3 * px_q**2 / (12.0 * eta_q))),
             float(mean_speed * (w @ (h_q * px_q))))
+
+
+# ---------------------------------------------------------------------------------------
+# error estimate from a sequence of grids
+# ---------------------------------------------------------------------------------------
+#: Quantities whose discretisation error is estimated.
+ESTIMATED_QUANTITIES = ("h_central", "h_min", "p_max", "friction_force", "heat_power")
+#: Estimated relative error above which a quantity is named in the result's warnings.
+ERROR_WARNING_THRESHOLD = 0.05
+#: Observed orders of convergence accepted for Richardson extrapolation: outside this
+#: range (or with changes of alternating sign, or not shrinking) the differences are
+#: not in the asymptotic range and the plain level difference is reported instead.
+RICHARDSON_ORDERS = (0.5, 5.0)
+
+
+def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None]:
+    """Estimated absolute error of the last of a sequence of solutions, each on a grid
+    with half the spacing of the one before.
+
+    With three values q1, q2, q3 and changes d1 = q2 - q1, d2 = q3 - q2 of one sign and
+    |d2| < |d1|, the observed order is p = log2(d1/d2) and, for p in
+    ``RICHARDSON_ORDERS``, the error of q3 is |d2| / (2^p - 1) (Richardson). Otherwise
+    it is the plain level difference |d2|; with one value there is no estimate.
+
+    Returns
+    -------
+    error : float or None
+        Estimated |q3 - q_exact| (same unit as the values).
+    method : str
+        ``"richardson"``, ``"level difference"`` or ``"none"``.
+    order : float or None
+        Observed order p where Richardson was used.
+    """
+    q = [float(v) for v in values]
+    if len(q) < 2:
+        return None, "none", None
+    d2 = q[-1] - q[-2]
+    if len(q) >= 3:
+        d1 = q[-2] - q[-3]
+        if d2 == 0.0:
+            return 0.0, "richardson", None
+        if d1 * d2 > 0.0 and abs(d2) < abs(d1):
+            p = math.log2(d1 / d2)
+            if RICHARDSON_ORDERS[0] <= p <= RICHARDSON_ORDERS[1]:
+                return abs(d2) / (2.0**p - 1.0), "richardson", p
+    return abs(d2), "level difference", None
+
+
+def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[str, Any]:
+    """Relative discretisation errors of the main quantities from a grid sequence.
+
+    Parameters
+    ----------
+    levels : sequence of dict
+        Post-processed quantities of the solutions, coarse to fine, each grid with half
+        the spacing of the one before (the last is the reported solution).
+    note : str
+        Stored as ``grids`` (which grids were used).
+
+    Returns
+    -------
+    dict
+        ``{quantity: relative error or None}`` for ``ESTIMATED_QUANTITIES``, plus
+        ``method`` and ``order`` (per quantity, see :func:`richardson`), ``levels``
+        (how many solutions were used) and ``grids``.
+    """
+    out: dict[str, Any] = {}
+    methods: dict[str, str] = {}
+    orders: dict[str, float | None] = {}
+    for key in ESTIMATED_QUANTITIES:
+        vals: list[float] = []
+        for lv in levels:  # the trailing run of finite values, coarse to fine
+            v = lv.get(key)
+            ok = isinstance(v, (int, float, np.floating)) and math.isfinite(float(v))
+            vals = vals + [float(v)] if ok else []
+        if not vals or len(vals) < 1 or levels[-1].get(key) is None or vals[-1] == 0.0:
+            out[key], methods[key], orders[key] = None, "none", None
+            continue
+        err, how, p = richardson(vals[-3:])
+        out[key] = None if err is None else err / abs(vals[-1])
+        methods[key], orders[key] = how, p
+    out["method"] = methods
+    out["order"] = orders
+    out["levels"] = len(levels)
+    out["grids"] = note
+    return out
+
+
+def estimate_warnings(estimate: Mapping[str, Any] | None,
+                      threshold: float = ERROR_WARNING_THRESHOLD) -> list[str]:
+    """Sentences naming every quantity whose estimated relative error exceeds
+    ``threshold``."""
+    if not estimate:
+        return []
+    out = []
+    for key in ESTIMATED_QUANTITIES:
+        e = estimate.get(key)
+        if e is not None and e > threshold:
+            how = estimate.get("method", {}).get(key, "")
+            out.append(f"{key} is not mesh-converged: estimated discretisation error "
+                       f"{100 * e:.3g}% ({how}, {estimate.get('grids', '')}); refine the "
+                       "mesh (mesh.nodes)")
+    return out

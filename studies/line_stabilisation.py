@@ -28,7 +28,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import bearing_fem as bf  # noqa: E402
-from bearing_fem import solver  # noqa: E402
+from bearing_fem.contacts import line as solver  # noqa: E402
 from line_ehl_map import scene_for  # noqa: E402
 
 CASES = ((100.0, 10.0), (20.0, 5.0))

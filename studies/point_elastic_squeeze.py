@@ -55,7 +55,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from bearing_fem.contacts.point import solve_squeeze_series
+import bearing_fem as bf
+from bearing_fem.contacts.series import solve_squeeze_series
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene)
 from bearing_fem.contacts.transient import (ELASTIC_GAP_RANGE_REYNOLDS, solve_elastic_gap,
@@ -224,7 +225,7 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
                         float(np.max(np.abs(s_tr.p_max - s_qs.p_max)) / np.max(s_qs.p_max)),
                     "seconds": time.perf_counter() - clock}
 
-    paths = tr.export(outdir / "series", name="elastic_squeeze")
+    paths = bf.io.export_series(tr, outdir / "series", name="elastic_squeeze")
     header = (f"{'k':>3} {'t us':>7} {'h0 nm':>6} {'p_max MPa':>9} {'h_min nm':>8} "
               f"{'h_c nm':>7} {'F N':>6} {'its':>3} {'s':>5} {'qs MPa':>7} {'rigid MPa':>9}")
     lines = [header]

@@ -120,14 +120,14 @@ def _elastic_scene(nodes=601, sliding=0.0):
 
 def test_energy_identity_rigid_and_elastic():
     """int h^3 p'^2/(12 eta) = u_m int h p' (steady, incompressible, 1D)."""
-    from bearing_fem.contacts import solver as S
+    from bearing_fem.contacts import line as S
     from bearing_fem.post import energy_identity_line, full_film_indicator_line
 
     for scene in (rigid_scene("reynolds", law="constant"), _elastic_scene()):
         r = bf.solve(scene)
         assert r.success, r.message
         setup = S.line_setup(scene)
-        prob = S._make_problem(scene, setup, (0.0, 0.0))
+        prob = S.LineModel(scene).problem(setup)
         pq, h, px, _ = prob.fields_q(r.pressure, r.h0)
         ind = full_film_indicator_line(setup.disc.ops.points[0],
                                        r.quantities.get("outlet_position"))

@@ -12,8 +12,10 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
+import bearing_fem as bf
 from bearing_fem import analytic as an
-from bearing_fem.contacts.point import PointGrid, solve_point
+from bearing_fem.contacts.point import solve_point
+from bearing_fem.contacts.point_grid import PointGrid
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene, SolverSpec)
 
@@ -125,7 +127,7 @@ def test_bad_input():
 
 
 def test_squeeze_series_matches_kapitsa(tmp_path):
-    from bearing_fem.contacts.point import solve_squeeze_series
+    from bearing_fem.contacts.series import solve_squeeze_series
 
     rx, ry = 0.01, 0.02
     eps = 0.3
@@ -141,7 +143,7 @@ def test_squeeze_series_matches_kapitsa(tmp_path):
                                            "zero boundary data on +-30 contact lengths "
                                            "truncates the 1/r^3 far field)")
     np.testing.assert_allclose(series.gap, H0 * (1 + eps * np.cos(omega * series.times)))
-    paths = series.export(tmp_path / "series")
+    paths = {k: str(v) for k, v in bf.io.export_series(series, tmp_path / "series").items()}
     import meshio
 
     assert "DataSet" in open(paths["pvd"]).read()
@@ -251,13 +253,12 @@ def test_half_grid_needs_a_symmetric_scene():
     import bearing_fem.contacts.point as pt
 
     scene = _moes_scene(100, 10, 65)
-    setup = pt.point_setup(scene)
-    assert pt._symmetric(scene, setup, None)
-    assert not pt._symmetric(scene, setup, lambda x, y: 0.0 * x), "Dirichlet data given"
+    assert pt.PointModel(scene).symmetric
+    assert not pt.PointModel(scene, lambda x, y: 0.0 * x).symmetric, "Dirichlet data given"
     even = dataclasses.replace(scene, mesh=MeshSpec(nodes=(65, 64)))
-    assert not pt._symmetric(even, pt.point_setup(even), None), "no node row at y = 0"
+    assert not pt.PointModel(even).symmetric, "no node row at y = 0"
     shifted = dataclasses.replace(scene, mesh=MeshSpec(nodes=(65, 65), y_range=(-3.0, 2.5)))
-    assert not pt._symmetric(shifted, pt.point_setup(shifted), None), "asymmetric range"
+    assert not pt.PointModel(shifted).symmetric, "asymmetric range"
     with pytest.raises(ValueError, match="y_range symmetric"):
         pt.point_setup(shifted, symmetric=True)
 
@@ -440,7 +441,7 @@ def test_element_assembler_matches_sparse_products():
 
 @pytest.mark.parametrize("nx, ny", [(1, 1), (7, 5), (30, 17)])
 def test_nested_dissection_is_a_separator_order(nx, ny):
-    from bearing_fem.contacts.point import nested_dissection
+    from bearing_fem.contacts.point_grid import nested_dissection
 
     perm = nested_dissection(nx, ny, leaf=2)
     assert np.array_equal(np.sort(perm), np.arange(nx * ny))
@@ -451,9 +452,10 @@ def test_preconditioner_fast_path_equals_sparse_products():
     scene = _moes_scene(100, 10, 17)
     import bearing_fem.contacts.point as bp
 
-    setup = bp.point_setup(scene)
-    prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
-    z = bp._initial_guess(scene, setup, prob)
+    model = bp.PointModel(scene)
+    level = model.level(model.fine_nodes, half=False)
+    prob = model.problem(level)
+    z = model.initial_guess(level, prob)
     prob.prepare(z)
     a_p, a_h, _, row_factor, da = prob._blocks(z)
     scale = row_factor * prob.p_ref
@@ -485,7 +487,7 @@ def test_upwind_flux_derivatives_match_complex_step():
     p, h, gp, gh, _ = _flux_inputs(1)
     dx = np.full(p.size, 1e-5)
     for law in ({}, {"density": "dowson-higginson"}, {"viscosity_law": "roelands"}):
-        flux = bp._flux(replace(scene, lubricant=replace(scene.lubricant, **law)), setup)
+        flux = bp.flux_model(replace(scene, lubricant=replace(scene.lubricant, **law)), setup)
         fast = flux.flux_and_derivatives(p, h, gp, gh, dx)
         ref = FluxModel.flux_and_derivatives(flux, p, h, gp, gh, dx)  # complex step for all
         for k in (0, 1):
@@ -510,7 +512,7 @@ def test_reduced_flux_derivatives_match_complex_step():
     from bearing_fem.physics.reynolds import _STEP
 
     scene = _moes_scene(100, 10, 17)
-    flux = bp._flux(scene, bp.point_setup(scene))
+    flux = bp.flux_model(scene, bp.point_setup(scene))
     assert flux.reduced_alpha and flux.upwind_compliance > 0.0, "Peclet fade-out tested"
     p, h, gp, gh, rng = _flux_inputs(2)
     n = p.size
@@ -537,10 +539,11 @@ def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
 
     monkeypatch.setattr(bp, "GMRES_FORCING_MAX", 0.0)
     scene = _moes_scene(100, 10, 33)
-    setup = bp.point_setup(scene)
-    prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
+    model = bp.PointModel(scene)
+    level = model.level(model.fine_nodes, half=False)
+    prob = model.problem(level)
     assert prob.flux.reduced_alpha == scene.lubricant.piezo
-    z = bp._initial_guess(scene, setup, prob)
+    z = model.initial_guess(level, prob)
     prob.prepare(z)
     f = prob.residual(z)
     dz = prob.newton_step(z)

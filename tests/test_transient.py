@@ -11,6 +11,7 @@ import pathlib
 import numpy as np
 import pytest
 
+import bearing_fem as bf
 from bearing_fem import analytic as an
 from bearing_fem.errors import SceneError
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
@@ -79,7 +80,7 @@ def test_stiff_transient_reproduces_kapitsa_each_step(tmp_path):
         f"cost cap: the stiff problem is nearly linear, got {series.newton_iterations}")
     assert np.all(np.isfinite(series.p_max))
 
-    paths = series.export(tmp_path / "stiff")
+    paths = {k: str(v) for k, v in bf.io.export_series(series, tmp_path / "stiff").items()}
     import meshio
 
     assert paths["pvd"].endswith(".pvd") and "DataSet" in open(paths["pvd"]).read()
@@ -212,8 +213,9 @@ def test_failed_step_stops_series_with_status(monkeypatch):
     calls = {"n": 0}
 
     def failing_after_three(problem, z0, **kw):
+        # the steady start (step 0) is solved by the shared driver, the time steps here
         calls["n"] += 1
-        if calls["n"] > 3:  # steps >= 3: no iteration allowed -> max_iterations
+        if calls["n"] > 2:  # steps >= 3: no iteration allowed -> max_iterations
             kw["max_iterations"] = 0
         return real(problem, z0, **kw)
 
@@ -231,11 +233,11 @@ def test_failed_step_stops_series_with_status(monkeypatch):
 def test_start_falls_back_to_compliance_continuation(monkeypatch):
     # If the direct Newton solve of the steady start fails, the start is reached by
     # continuation in the compliance 1/E' (rigid -> elastic) and is the same solution.
-    import bearing_fem.contacts.transient as tr
+    import bearing_fem.contacts.driver as driver
 
     sc = scene(nodes=25, cavitation="reynolds")
     direct = solve_elastic_gap(sc)
-    real = tr.damped_newton
+    real = driver.damped_newton
     calls = {"n": 0}
 
     def first_attempt_fails(problem, z0, **kw):
@@ -244,11 +246,13 @@ def test_start_falls_back_to_compliance_continuation(monkeypatch):
             kw["max_iterations"] = 0
         return real(problem, z0, **kw)
 
-    monkeypatch.setattr(tr, "damped_newton", first_attempt_fails)
+    monkeypatch.setattr(driver, "damped_newton", first_attempt_fails)
     res = solve_elastic_gap(sc)
     assert res.status == "converged", res.message
     assert "continuation in compliance" in res.message
-    assert res.continuation[0][0] == 0.0 and res.continuation[-1][0] == 1.0
+    assert res.continuation[0][:2] == (1.0, "max_iterations (25x25 nodes)"), \
+        "the failed direct attempt comes first"
+    assert res.continuation[1][0] == 0.0 and res.continuation[-1][0] == 1.0
     np.testing.assert_allclose(res.pressure, direct.pressure, rtol=0,
                                atol=1e-6 * direct.quantities["p_max"],
                                err_msg="same steady solution by either route (Newton "
@@ -261,7 +265,7 @@ def test_start_failure_has_nothing_to_export(tmp_path):
     assert series.status == "max_iterations" and series.results == []
     assert "step 0" in series.message
     with pytest.raises(ValueError, match="nothing to export"):
-        series.export(tmp_path)
+        bf.io.export_series(series, tmp_path)
 
 
 @pytest.mark.parametrize("kwargs, match", [

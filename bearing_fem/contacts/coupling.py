@@ -141,7 +141,7 @@ def solve_thermal(scene: Scene) -> Result:
         ``heat_fraction_body1`` [-], ``contact_viscosity`` [Pa s], ``contact_piezo`` [1/Pa],
         ``peclet_min`` [-], ``thermal_iterations``.
     """
-    from .solver import solve_line
+    from .line import solve_line
 
     t0 = time.perf_counter()
     if scene.thermal is None:
@@ -160,7 +160,7 @@ def solve_thermal(scene: Scene) -> Result:
     cap = (th.heat_capacity, th.heat_capacity2 or th.heat_capacity)
     part = thermal.heat_partition(lam, rho, cap, speeds, rule="blok")
     fractions = (part.fraction_1, part.fraction_2)
-    tr_kw = traction._model_kwargs(scene.traction)
+    tr_kw = traction.shear_parameters(scene.traction)
 
     t_oil = th.oil_temperature
     T = t_oil

@@ -72,7 +72,7 @@ from scipy.optimize import brentq
 from skfem import CellBasis, ElementLineP1, MeshLine
 
 from ..numerics.fe import QuadratureOperators, quadrature_operators
-from .line import fischer_burmeister
+from .problem import fischer_burmeister
 from ..numerics.newton import NewtonOutcome, damped_newton
 from ..physics.reynolds import _coth_minus_inverse
 

@@ -22,7 +22,9 @@ the compliance (dense Toeplitz for the half-space, diagonal for Kodnir's local m
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+import time
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.linalg as sla
@@ -30,9 +32,21 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import CellBasis, ElementLineP1, MeshLine
 
+from .. import units
+from ..analytic import reduced_from_barus
+from ..formulas import line_central_film_moes
 from ..numerics.fe import QuadratureOperators, quadrature_operators
 from ..numerics.newton import gmres_right
-from ..physics.reynolds import FluxModel
+from ..physics.elasticity import (HalfSpaceLine, LocalCompliance, RigidCompliance,
+                                  kodnir_local_coefficient)
+from ..physics.reynolds import FluxModel, UpwindFluxModel
+from ..physics.traction import couette_line, shear_parameters
+from ..post import (film_quantities, friction_and_heat, full_film_indicator_line,
+                    outlet_position_line)
+from ..result import Result
+from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
+from .linear import active_set_solve, pressure_from_reduced
+from .problem import ScaledResidual, fischer_burmeister
 
 
 @dataclass
@@ -56,84 +70,12 @@ class LineDiscretisation:
         return float(self.x[1] - self.x[0])
 
 
-#: Smoothing of the Fischer-Burmeister function (scaled units). A degenerate node with
-#: p = R = 0 (the discrete free boundary) makes the plain FB Jacobian singular and lets
-#: the semismooth Newton cycle between two active sets; with mu > 0 the function is
-#: smooth and its root satisfies p >= 0, R >= 0, p R = mu^2 / 2, i.e. complementarity
-#: to 5e-21 in scaled units (p/p_ref times the scaled residual).
-FB_SMOOTHING = 1e-10
-
 #: Dense (half-space) Newton steps: GMRES preconditioned by the last LU factors is
 #: accepted when it reaches this relative residual within this many iterations; else the
 #: Jacobian is factorised afresh. Near convergence the Jacobian changes little and GMRES
 #: needs a few iterations of O(n^2) each instead of an O(n^3) factorisation.
 REUSE_GMRES_RTOL = 1e-10
 REUSE_GMRES_ITERATIONS = 12
-
-
-def fischer_burmeister(a: np.ndarray, b: np.ndarray,
-                       mu: float = FB_SMOOTHING) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Smoothed FB function phi = a + b - sqrt(a^2 + b^2 + 2 mu^2) and its derivatives."""
-    r = np.sqrt(a * a + b * b + 2.0 * mu * mu)
-    phi = a + b - r
-    zero = r < 1e-300
-    rs = np.where(zero, 1.0, r)
-    da = np.where(zero, 1.0 - 1.0 / np.sqrt(2.0), 1.0 - a / rs)
-    db = np.where(zero, 1.0 - 1.0 / np.sqrt(2.0), 1.0 - b / rs)
-    return phi, da, db
-
-
-class ScaledResidual:
-    """Parts shared by the line and point problems: the scaled residual (Reynolds rows, or
-    their Fischer-Burmeister functions, at the free nodes, then the load row) and the
-    admissibility test (finite unknowns, positive film at every quadrature point), and
-    the reduced-pressure gradient of the Poiseuille term. Needs ``unpack``, ``fields_q``,
-    ``reynolds_residual``, ``free``, ``_row_scale``, ``cavitation``, ``p_ref``,
-    ``has_h0``, ``mass``, ``load``, ``flux`` and ``ops`` (the quadrature operators)."""
-
-    @property
-    def _reduced(self) -> bool:
-        """True if the Poiseuille term is rho h^3/(12 eta0) grad q_h (reduced pressure)."""
-        return getattr(self.flux, "reduced_alpha", None) is not None
-
-    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, ...]:
-        """Gradient of the interpolant q_h of the nodal reduced pressure q(p) at the
-        quadrature points [Pa/m], one array per dimension
-        (:meth:`~bearing_fem.physics.reynolds.UpwindFluxModel.reduced`)."""
-        q = self.flux.reduced(p)
-        return tuple(g @ q for g in self.ops.grad)
-
-    def admissible(self, z: np.ndarray) -> bool:
-        if not np.all(np.isfinite(z)):
-            return False
-        p, h0 = self.unpack(z)
-        _, h, _, _ = self.fields_q(p, h0)
-        return bool(np.min(h) > 0.0)
-
-    def nodal_residual(self, z: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
-        """p [Pa], h0 [m] and the unscaled nodal Reynolds residual of ``z``.
-
-        The last evaluation is kept: Newton asks for the residual of the same iterate
-        up to three times (line search, after the row scaling is updated, and in the
-        step), and only the row scaling differs. A problem's data never change after
-        construction, so the unknowns alone identify the evaluation.
-        """
-        cached = getattr(self, "_nodal_cache", None)
-        if cached is not None and np.array_equal(cached[0], z):
-            return cached[1], cached[2], cached[3]
-        p, h0 = self.unpack(z)
-        r = self.reynolds_residual(p, h0)
-        self._nodal_cache = (np.array(z, dtype=float, copy=True), p, h0, r)
-        return p, h0, r
-
-    def residual(self, z: np.ndarray) -> np.ndarray:
-        p, h0, r = self.nodal_residual(z)
-        r = r[self.free] * self._row_scale
-        if self.cavitation == "reynolds":
-            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
-        if self.has_h0:
-            r = np.append(r, (self.mass @ p - self.load) / self.load)
-        return r
 
 
 class LineProblem(ScaledResidual):
@@ -375,3 +317,419 @@ class LineProblem(ScaledResidual):
         if rel > REUSE_GMRES_RTOL or not np.all(np.isfinite(dz)):
             return None
         return dz
+
+
+# =======================================================================================
+# The line-contact model: scales, default grid, levels, problems, post-processing
+# =======================================================================================
+#: h*/h0 of Martin's rigid isoviscous cylinder (sec^2 of the outlet angle, ~1.2255);
+#: used only to estimate a starting offset for rigid loaded scenes, never as an oracle.
+MARTIN_HSTAR_APPROX = 1.2255
+#: Default grid density of elastic line contacts: nodes per Hertz half-width.
+NODES_PER_HALF_WIDTH = 300
+#: Above this Moes load parameter M the default density grows as sqrt(M / this): the
+#: outlet constriction and spike narrow with load (measured at 300 nodes per b against
+#: twice as fine: h_central changes 0.08 % at M = 200 but 0.82 % at M = 1000, L = 2).
+DENSE_MESH_MOES_M = 250.0
+#: Cap on default elastic line grids (dense compliance: memory and LU time grow as N^2, N^3).
+MAX_DEFAULT_ELASTIC_NODES = 4001
+#: Default rigid-scene grid: nodes per sqrt(2 R h0).
+NODES_PER_RIGID_LENGTH = 40
+#: Stabilisation of half-space line contacts: "upwind" (first-order upwinded wedge term,
+#: :class:`~bearing_fem.physics.reynolds.UpwindFluxModel`) or "supg" (SUPG on the whole
+#: strong residual). Kodnir's local model always uses SUPG.
+#: ``studies/line_stabilisation.py`` compares the two.
+HALF_SPACE_STABILISATION = "upwind"
+#: Poiseuille term of half-space line contacts with Barus viscosity (as
+#: :data:`bearing_fem.contacts.point.REDUCED_POISEUILLE`): rho h^3/(12 eta0) dq_h/dx, q_h
+#: the P1 interpolant of the nodal reduced pressure q = (1 - exp(-alpha p))/alpha, instead
+#: of eps(p) dp/dx at the quadrature points. Over an element it is the exact integral of
+#: eps(p) dp/dx for linear p, monotone in the nodal pressures whatever the jump; the
+#: 3-point quadrature of exp(-alpha p) is not once alpha dp >> 1. Measured at the outlet
+#: spike of M = 5, L = 15 on 8001 nodes (p from 3.1 to 0.5 p_h across one element,
+#: alpha dp = 35): the quadrature flux peaks at a spike-side pressure of 1.0 p_h and falls
+#: by 4x up to 3.1 p_h, and Newton stalled at |F| = 5e-7 on that falling branch (exact
+#: Jacobian, exact linear solves, plain Newton steps growing to 1e2-1e3 p_h as it
+#: approached the fold); with the reduced term it converges in 5 iterations on 8001
+#: nodes. Same grid limit, smaller grid error: h_central 3601 -> 7201 nodes changes
+#: 0.27 % -> 0.029 % at M = 1000, L = 2 and 0.0047 % -> 0.0019 % at M = 100, L = 10
+#: (docs/line_contact.md).
+REDUCED_POISEUILLE_LINE = True
+#: Grid sequencing: coarsest grid of the line Newton solve (nodes). Finer grids are
+#: solved coarse-to-fine, halving the spacing each level, each level started from the
+#: interpolated solution of the one below (measured at M = 100, L = 10, 2001 nodes:
+#: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
+#: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge).
+COARSEST_NODES = 501
+#: Newton iterations allowed to the direct attempt and to each continuation step before
+#: backing off (fail fast: a stalled attempt costs more than a smaller step).
+ATTEMPT_ITERATIONS = 40
+#: Isoviscous continuation starts at this multiple of the entrainment speed (Moes M
+#: 10x lower), where the film is thick compared with the elastic deflection.
+CONTINUATION_SPEED_FACTOR = 100.0
+#: How the shared driver attacks line contacts: every attempt capped at
+#: ATTEMPT_ITERATIONS; a monotone line search from an interpolated coarse solution
+#: (close enough that a non-monotone search only wanders), non-monotone (window 5) from
+#: the Hertzian guess.
+LINE_DRIVER = DriverSettings(direct_iterations=ATTEMPT_ITERATIONS,
+                             transfer_iterations=ATTEMPT_ITERATIONS,
+                             continuation_iterations=ATTEMPT_ITERATIONS,
+                             start_memory=5, transfer_memory=1)
+
+
+@dataclass
+class LineSetup:
+    """Scales, grid and operators of a line scene on one grid (a driver level).
+
+    Attributes
+    ----------
+    disc : LineDiscretisation
+    compliance : Compliance
+        From :mod:`bearing_fem.physics.elasticity`.
+    p_ref, h_ref : float
+        Pressure [Pa] and film [m] scales of the unknowns.
+    x_unit : float
+        Length unit of the mesh range [m] (Hertz half-width b, or sqrt(2 R h0)).
+    h_estimate : float
+        Estimated central film [m] (Moes for elastic scenes).
+    stab_compliance : float
+        Compliance of the stabilisation [m/Pa] (0 when rigid).
+    """
+
+    disc: LineDiscretisation
+    compliance: object
+    p_ref: float
+    h_ref: float
+    x_unit: float
+    h_estimate: float
+    stab_compliance: float
+
+    @property
+    def label(self) -> str:
+        return f"{self.disc.x.size} nodes"
+
+
+def kodnir_coefficient(scene) -> float:
+    """A'/E of Kodnir's local compliance of a line scene [m/Pa]."""
+    # Kodnir's 1.52 contains nu = 0.3 for two equal bodies: E = E' (1 - 0.3^2).
+    e = scene.e_prime * (1.0 - 0.3**2)
+    return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
+
+
+def line_setup(scene, nodes: int | None = None) -> LineSetup:
+    """Reference scales, default mesh and compliance operator of a line scene.
+
+    ``nodes`` overrides the node count (grid sequencing) on the same interval.
+    """
+    R = scene.contact.rx
+    lub, kin, model = scene.lubricant, scene.kinematics, scene.model
+    u_m = kin.mean_speed
+    elastic = model.elasticity != "rigid"
+    if scene.load.force is not None and elastic:
+        w = scene.load.force
+        b, p_h = units.hertz_line(w, R, scene.e_prime)
+        h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity, u_m,
+                                       lub.effective_piezo)
+        x_unit, p_ref, h_ref = b, p_h, h_est
+        # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
+        inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
+        x_range = scene.mesh.x_range or (-inlet, 1.5)
+        moes_m = units.moes_line(w, R, scene.e_prime, lub.viscosity, u_m,
+                                 lub.effective_piezo)["M"]
+        density = NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
+    else:
+        if scene.load.gap is not None:
+            h0 = scene.load.gap
+        else:  # rigid under load: Martin's isoviscous estimate of the offset
+            h0 = 6 * lub.viscosity * u_m * R / (MARTIN_HSTAR_APPROX * scene.load.force)
+        x_unit = math.sqrt(2 * R * h0)
+        h_est, h_ref = h0, h0
+        p_ref = lub.viscosity * u_m * x_unit / h0**2
+        if model.cavitation == "none":
+            x_range = scene.mesh.x_range or (-100.0, 100.0)
+        else:
+            x_range = scene.mesh.x_range or (-100.0, 5.0)
+        density = NODES_PER_RIGID_LENGTH
+    width = x_range[1] - x_range[0]
+    cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
+    if nodes is None:
+        nodes = scene.mesh.nodes or int(min(max(width * density, 801), cap)) | 1
+    disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
+    if model.elasticity == "rigid":
+        comp = RigidCompliance()
+        c_stab = 0.0
+    elif model.elasticity == "local":
+        coef = kodnir_coefficient(scene)
+        comp = LocalCompliance(coef)
+        c_stab = coef
+    else:
+        comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
+        # compliance of a pressure change over one element (~ its self-influence): a
+        # contact-width compliance would over-stabilise and wash out the outlet
+        # constriction and spike (checked: h_min/h_c 0.99 instead of 0.75 at M=100, L=10)
+        c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
+    return LineSetup(disc, comp, p_ref, h_ref, x_unit, h_est, c_stab)
+
+
+def is_linear(scene) -> bool:
+    """True if a scene is solved by linear solves (rigid, incompressible, constant or
+    Barus viscosity, prescribed gap): Kapitsa's reduced pressure."""
+    m, lub = scene.model, scene.lubricant
+    return (m.elasticity == "rigid" and lub.density == "incompressible"
+            and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
+
+
+def line_levels(nodes: int, coarsest: int = COARSEST_NODES) -> list[int]:
+    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level."""
+    levels = [nodes]
+    while (levels[-1] - 1) % 2 == 0 and (levels[-1] - 1) // 2 + 1 >= coarsest:
+        levels.append((levels[-1] - 1) // 2 + 1)
+    return levels[::-1]
+
+
+def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
+                             mean_speed: float, eta0: float, cavitation: str):
+    """Solve the rigid isoviscous Reynolds problem for the reduced pressure q [Pa].
+
+    One sparse solve for full-Sommerfeld; a primal-dual active-set sequence of sparse
+    solves for Reynolds cavitation (q >= 0, A q - f >= 0, q (A q - f) = 0).
+
+    Returns
+    -------
+    q : ndarray (nodal, Pa), linear_solves : int, active : bool ndarray (cavitated nodes)
+    """
+    ops = problem.disc.ops
+    h = h0 + problem.g_q
+    a = ops.flux_jacobian(0, np.zeros_like(h), (h**3 / (12.0 * eta0),)).tocsr()
+    f = ops.weak_divergence(mean_speed * h)
+    return active_set_solve(a, f, q_bc, problem.free, cavitation)
+
+
+class LineModel:
+    """A line-contact scene as a :class:`~bearing_fem.contacts.driver.ContactModel`.
+
+    Parameters
+    ----------
+    scene : Scene
+        ``contact.kind == "line"``.
+    boundary_pressure : (float, float)
+        Dirichlet pressures at the inlet and outlet ends [Pa].
+    """
+
+    settings = LINE_DRIVER
+
+    def __init__(self, scene, boundary_pressure: tuple[float, float] = (0.0, 0.0)) -> None:
+        self.scene = scene
+        self.bp = tuple(float(v) for v in boundary_pressure)
+        self.setup = line_setup(scene)
+        piezo = scene.lubricant.effective_piezo > 0.0
+        self.continuation_parameter = "alpha" if piezo else "speed"
+        self._setups = {self.setup.disc.x.size: self.setup}
+
+    # -- levels ----------------------------------------------------------------------------
+    def level(self, nodes: int) -> LineSetup:
+        """The scene on a uniform grid of ``nodes`` nodes over the same interval (cached:
+        the driver recognises a level by identity)."""
+        if nodes not in self._setups:
+            x = self.setup.disc.x
+            self._setups[nodes] = _regridded(self.scene, self.setup, float(x[0]),
+                                             float(x[-1]), nodes)
+        return self._setups[nodes]
+
+    def levels(self) -> list[LineSetup]:
+        return [self.level(n) for n in line_levels(self.setup.disc.x.size)]
+
+    def coarsen(self, level: LineSetup) -> LineSetup | None:
+        """The level with half the spacing's inverse (every other node), or None."""
+        n = level.disc.x.size
+        if (n - 1) % 2 or (n - 1) // 2 < 8:
+            return None
+        return self.level((n - 1) // 2 + 1)
+
+    # -- problems --------------------------------------------------------------------------
+    def problem(self, level: LineSetup, s: float = 1.0,
+                tolerance: float | None = None) -> LineProblem:
+        """The problem on ``level``; s scales alpha (or the speed, from 100x, when
+        isoviscous) for continuation."""
+        if self.continuation_parameter == "alpha":
+            return self._problem(level, piezo_scale=s)
+        return self._problem(level, speed_scale=CONTINUATION_SPEED_FACTOR ** (1.0 - s))
+
+    def _problem(self, level: LineSetup, piezo_scale: float = 1.0,
+                 speed_scale: float = 1.0) -> LineProblem:
+        scene = self.scene
+        lub = scene.lubricant
+        u_m = scene.kinematics.mean_speed * speed_scale
+        if scene.model.elasticity == "half-space" and HALF_SPACE_STABILISATION == "upwind":
+            reduced = None
+            if REDUCED_POISEUILLE_LINE and lub.viscosity_law == "barus" \
+                    and lub.effective_piezo > 0:
+                reduced = lub.effective_piezo * piezo_scale
+            flux = UpwindFluxModel.elastic(lub, u_m, level.stab_compliance,
+                                           piezo_scale=piezo_scale, reduced_alpha=reduced)
+        else:
+            flux = FluxModel.from_lubricant(lub, u_m, compliance=level.stab_compliance,
+                                            piezo_scale=piezo_scale)
+        return LineProblem(level.disc, flux, scene.contact.rx, level.compliance,
+                           scene.model.cavitation, scene.load.force, scene.load.gap,
+                           level.p_ref, level.h_ref, lub.viscosity, self.bp)
+
+    def initial_guess(self, level: LineSetup, problem: LineProblem,
+                      s: float = 1.0) -> np.ndarray:
+        """Hertzian (elastic, loaded), local-dry (Kodnir) or rigid linear initial guess.
+
+        For the isoviscous speed continuation the film estimate is that of the start
+        speed 100^(1-s) u_m (thicker than the target's)."""
+        scene = self.scene
+        x = level.disc.x
+        R = scene.contact.rx
+        lub = scene.lubricant
+        if scene.load.force is not None and scene.model.elasticity != "rigid":
+            w = scene.load.force
+            if scene.model.elasticity == "local":
+                c = level.stab_compliance
+                a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2-x^2)/(2Rc)
+                p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
+            else:
+                b = level.x_unit
+                p = level.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
+            p = p * w / (problem.mass @ p)
+            v0 = float(np.interp(0.0, x, problem.displacement(p)))
+            h_est = level.h_estimate
+            if self.continuation_parameter == "speed" and s != 1.0:
+                h_est = line_central_film_moes(
+                    w, R, scene.e_prime, lub.viscosity,
+                    scene.kinematics.mean_speed * CONTINUATION_SPEED_FACTOR ** (1.0 - s),
+                    lub.effective_piezo)
+            return problem.pack(p, h_est - v0)
+        # rigid or prescribed gap: isoviscous rigid solution at the (estimated) offset
+        h0 = scene.load.gap if scene.load.gap is not None else level.h_ref
+        q, _, _ = reduced_isoviscous_solve(problem, h0, problem.p_bc.copy(),
+                                           scene.kinematics.mean_speed, lub.viscosity,
+                                           scene.model.cavitation)
+        return problem.pack(q, h0)
+
+    def transfer(self, z: np.ndarray, coarse: LineProblem, fine: LineProblem) -> np.ndarray:
+        """Interpolate a solution to another grid of the same interval (same film at
+        x = 0)."""
+        p_c, h0_c = coarse.unpack(z)
+        xc, xf = coarse.disc.x, fine.disc.x
+        p_f = np.interp(xf, xc, p_c)
+        p_f[[0, -1]] = fine.p_bc[[0, -1]]
+        hc = float(np.interp(0.0, xc, coarse.film_nodes(p_c, h0_c)))
+        if fine.has_h0:
+            h0_f = hc - float(np.interp(0.0, xf, fine.g_nodes + fine.displacement(p_f)))
+        else:
+            h0_f = h0_c
+        return fine.pack(p_f, h0_f)
+
+    def whole(self, problem: LineProblem, z: np.ndarray) -> tuple[LineProblem, np.ndarray]:
+        """The problem and unknowns the result is reported on (the same for lines)."""
+        return problem, z
+
+    # -- solutions -------------------------------------------------------------------------
+    def solution(self, problem: LineProblem, z: np.ndarray | None = None, *,
+                 field: np.ndarray | None = None, h0: float | None = None,
+                 post: bool = True, cavitated: np.ndarray | None = None) -> Solution:
+        """Fields and post-processed numbers of unknowns ``z`` (or of a nodal pressure
+        ``field`` at the offset ``h0``, for the linear path)."""
+        scene = self.scene
+        if z is not None:
+            p, h0 = problem.unpack(z)
+            if scene.model.cavitation == "reynolds":
+                p = np.maximum(p, 0.0)  # the FB solution is >= 0 up to the tolerance
+        else:
+            p = field
+        disc = problem.disc
+        ops = disc.ops
+        h_nodes = problem.film_nodes(p, h0)
+        out = Solution(x=disc.x, y=None, pressure=p, film=h_nodes, h0=float(h0))
+        if not post:
+            return out
+        pq, h_q, px, _ = problem.fields_q(p, h0)
+        q = out.quantities
+        q.update(film_quantities(disc.x, p, h_nodes, ops, h_q))
+        outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
+        ind = full_film_indicator_line(ops.points[0], outlet)
+        eta_q = problem.flux.viscosity(pq)
+        q.update(friction_and_heat(ops, h_q, (px,), eta_q, scene.kinematics.sliding_speed,
+                                   ind, q["load"]))
+        if outlet is not None:
+            q["outlet_position"] = outlet
+            q["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
+        nodes_eta = problem.flux.viscosity(p)
+        out.extra_fields["viscosity_Pa_s"] = nodes_eta
+        if scene.traction.model != "newtonian":
+            _non_newtonian_couette(scene, disc.x, p, h_nodes, nodes_eta, outlet, q)
+        return out
+
+    def linear(self, level: LineSetup) -> tuple[str, Solution, str, int]:
+        """Linear (reduced-pressure) solve on ``level``: status, solution, message and
+        the number of linear solves."""
+        scene = self.scene
+        lub = scene.lubricant
+        alpha = lub.effective_piezo
+        problem = self.problem(level)
+        h0 = scene.load.gap
+        q_bc = np.zeros(level.disc.x.size)
+        q_bc[0], q_bc[-1] = (reduced_from_barus(np.array(self.bp), alpha) if alpha > 0
+                             else self.bp)
+        q, solves, _ = reduced_isoviscous_solve(problem, h0, q_bc, scene.kinematics.mean_speed,
+                                                lub.viscosity, scene.model.cavitation)
+        status, field, msg = pressure_from_reduced(q, alpha, solves)
+        return status, self.solution(problem, field=field, h0=h0,
+                                     post=status == "linear"), msg, solves
+
+
+def _regridded(scene, setup: LineSetup, x0: float, x1: float, nodes: int) -> LineSetup:
+    """The same scene on another uniform grid over [x0, x1] [m] (the half-space
+    compliance and its stabilisation scale follow the grid spacing)."""
+    disc = LineDiscretisation.uniform(x0, x1, nodes)
+    comp = setup.compliance
+    c_stab = setup.stab_compliance
+    if scene.model.elasticity == "half-space":
+        comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
+        c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
+    return replace(setup, disc=disc, compliance=comp, stab_compliance=c_stab)
+
+
+def _non_newtonian_couette(scene, x: np.ndarray, p: np.ndarray, h: np.ndarray,
+                           eta: np.ndarray, outlet: float | None, q: dict) -> None:
+    """Replace the Newtonian Couette friction and heat by the scene's traction model
+    (Eyring or limiting shear stress, :mod:`bearing_fem.physics.traction`); the
+    Poiseuille parts stay as computed."""
+    xm = 0.5 * (x[1:] + x[:-1])
+    ind = np.ones_like(xm) if outlet is None else (xm <= outlet).astype(float)
+    f_c, q_c = couette_line(x, p, h, eta, scene.kinematics.sliding_speed, indicator=ind,
+                            **shear_parameters(scene.traction))
+    f_p = q["rolling_resistance"]
+    q.update(sliding_friction=f_c, friction_force=f_p + f_c, friction_force_surface2=f_p - f_c,
+             friction_coefficient=(f_p + f_c) / q["load"] if q["load"] > 0 else 0.0,
+             heat_power_couette=q_c, heat_power=q_c + q["heat_power_poiseuille"])
+
+
+def solve_line(scene, *, boundary_pressure: tuple[float, float] | None = None,
+               progress=None) -> Result:
+    """Solve a line-contact scene (the linear path or damped Newton by the shared
+    driver, :mod:`bearing_fem.contacts.driver`).
+
+    Parameters
+    ----------
+    scene : Scene
+        ``contact.kind == "line"``.
+    boundary_pressure : (float, float), optional
+        Dirichlet pressures at the inlet and outlet ends of the domain [Pa] (default
+        0, 0); the analytic-oracle tests impose exact data this way.
+    progress : callable, optional
+        Progress callback (:func:`bearing_fem.contacts.driver.solve_levels`).
+
+    Returns
+    -------
+    Result
+        Never raises for non-convergence or non-existence: see ``result.status``.
+    """
+    t0 = time.perf_counter()
+    model = LineModel(scene, (0.0, 0.0) if boundary_pressure is None else boundary_pressure)
+    if is_linear(scene):
+        return solve_linear_model(model, scene, t0)
+    return solve_newton_model(model, scene, t0, progress=progress)

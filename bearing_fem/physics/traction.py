@@ -34,7 +34,7 @@ TractionModel = Literal["newtonian", "eyring", "limiting"]
 
 __all__ = ["newtonian_stress", "eyring_stress", "limiting_stress", "shear_stress",
            "couette_line", "couette_2d", "LineHeatFlux", "heat_flux_line",
-           "friction_and_heat_line"]
+           "friction_and_heat_line", "shear_parameters"]
 
 
 def _check_positive(name: str, value: float, unit: str) -> float:
@@ -115,7 +115,7 @@ def shear_stress(eta: np.ndarray, shear_rate: np.ndarray, pressure: np.ndarray |
     raise ValueError(f"traction model must be 'newtonian', 'eyring' or 'limiting', got {model!r}")
 
 
-def _model_kwargs(traction) -> dict:
+def shear_parameters(traction) -> dict:
     """Keyword arguments of :func:`shear_stress` from a scene ``Traction`` section (or None)."""
     if traction is None:
         return {"model": "newtonian"}
@@ -290,7 +290,7 @@ def friction_and_heat_line(x: np.ndarray, p: np.ndarray, h: np.ndarray, eta: np.
     ``load`` [N/m] (> 0 for a friction coefficient).
     """
     hf = heat_flux_line(x, p, h, eta, mean_speed, sliding_speed, cavitation=cavitation,
-                        **_model_kwargs(traction))
+                        **shear_parameters(traction))
     return {
         "rolling_resistance": hf.rolling_resistance,
         "sliding_friction": hf.sliding_friction,
