@@ -225,7 +225,8 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
                         float(np.max(np.abs(s_tr.p_max - s_qs.p_max)) / np.max(s_qs.p_max)),
                     "seconds": time.perf_counter() - clock}
 
-    paths = bf.io.export_series(tr, outdir / "series", name="elastic_squeeze")
+    paths = {k: str(v) for k, v in bf.io.export_series(tr, outdir / "series",
+                                                       name="elastic_squeeze").items()}
     header = (f"{'k':>3} {'t us':>7} {'h0 nm':>6} {'p_max MPa':>9} {'h_min nm':>8} "
               f"{'h_c nm':>7} {'F N':>6} {'its':>3} {'s':>5} {'qs MPa':>7} {'rigid MPa':>9}")
     lines = [header]
