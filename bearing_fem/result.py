@@ -75,6 +75,9 @@ class Result:
     error_estimate : dict or None
         Estimated relative discretisation error of the main quantities (see
         :meth:`summary` and ``docs/accuracy.md``); None where no estimate was made.
+    traction_model : str or None
+        The shear-stress model of the sliding friction (``eyring-limiting``, ``eyring``,
+        ``limiting``, ``newtonian``), None where friction was not computed.
     """
 
     success: bool
@@ -95,6 +98,7 @@ class Result:
     extra_fields: dict[str, np.ndarray] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     error_estimate: dict[str, Any] | None = None
+    traction_model: str | None = None
 
     def __repr__(self) -> str:
         return (f"Result(message={self.message!r}, success={self.success}, "
@@ -129,6 +133,9 @@ class Result:
             "message": self.message,
         }
         out.update({k: _number_or_none(v) for k, v in self.quantities.items()})
+        if "friction_force" in self.quantities:
+            out.setdefault("friction_coefficient", None)
+        out["traction_model"] = self.traction_model
         out["h0"] = float(self.h0)
         out["newton_iterations"] = int(self.newton_iterations)
         out["linear_solves"] = int(self.linear_solves)

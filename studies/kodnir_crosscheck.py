@@ -40,6 +40,7 @@ from bearing_fem.contacts.line import LineDiscretisation, LineProblem
 from bearing_fem.numerics.newton import damped_newton
 from bearing_fem.physics.rheology import barus
 from bearing_fem.physics.reynolds import FluxModel
+from bearing_fem.scene import Traction
 
 C_VALUES = (0.6, 1.0, 5.0, 10.0, 40.0)
 B_ALPHA_VALUES = (0.0, 4.5, 7.0, 12.0)
@@ -77,7 +78,11 @@ def crosscheck(C: float, b_alpha: float, nodes: int = 2001, z_b: float = 20.0) -
     outlet = post.outlet_position_line(disc.x, p, "reynolds")
     ind = post.full_film_indicator_line(ops.points[0], outlet)
     load = float(ops.mass @ p)
-    gen = post.friction_and_heat(ops, h, (px,), flux.viscosity(pq), U_S, ind, load)
+    # the paper's formulas are Newtonian: the same traction here
+    gen, _, _ = post.friction_and_heat(ops, h, (px,), flux.viscosity(pq), pq,
+                                       mean_speed=U_SUM / 2, sliding_speed=U_S,
+                                       indicator_q=ind, load=load, gross_load=load,
+                                       traction=Traction(model="newtonian"))
     k_load = B * B1 * float(np.trapezoid(k_res.k, k_res.z))
     seed = kodnir.kodnir_friction_heat(k_res, H_STAR, B, k_load, U_SUM, U_S)
     out.update({

@@ -347,6 +347,8 @@ class Solution:
         Further nodal fields (names carry units).
     warnings : list of str
         Model-specific warnings about this solution.
+    traction_model : str or None
+        Shear-stress model of the sliding friction (None when not post-processed).
     """
 
     x: np.ndarray
@@ -357,6 +359,7 @@ class Solution:
     quantities: dict[str, Any] = field(default_factory=dict)
     extra_fields: dict[str, np.ndarray] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    traction_model: str | None = None
 
 
 def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: float,
@@ -402,7 +405,8 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
                   wall_time_s=time.perf_counter() - t0,
                   continuation=list(continuation_steps),
                   extra_fields=dict(solution.extra_fields),
-                  warnings=_unique(notes), error_estimate=estimate)
+                  warnings=_unique(notes), error_estimate=estimate,
+                  traction_model=solution.traction_model)
 
 
 def _unique(items: Sequence[str]) -> list[str]:

@@ -40,9 +40,8 @@ from ..numerics.newton import gmres_right
 from ..physics.elasticity import (HalfSpaceLine, LocalCompliance, RigidCompliance,
                                   kodnir_local_coefficient)
 from ..physics.reynolds import FluxModel, UpwindFluxModel
-from ..physics.traction import couette_line, shear_parameters
-from ..post import (film_quantities, friction_and_heat, full_film_indicator_line,
-                    outlet_position_line)
+from ..post import (FilmDissipation, film_numbers, friction_and_heat,
+                    full_film_indicator_line, outlet_position_line)
 from ..result import Result
 from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
 from .linear import active_set_solve, pressure_from_reduced
@@ -176,8 +175,8 @@ class LineProblem(ScaledResidual):
         """Nodal weak residual R_i [m^2/s] (all nodes)."""
         pq, h, px, hx = self.fields_q(p, h0)
         dx = self.disc.ops.element_size
-        if self._reduced:
-            (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx, gq=self._grad_reduced(p))
+        if self.uses_reduced:
+            (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx, gq=self.grad_reduced(p))
         else:
             (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx)
         return self.disc.ops.weak_divergence(fx)
@@ -200,9 +199,9 @@ class LineProblem(ScaledResidual):
         ops = self.disc.ops
         pq, h, px, hx = self.fields_q(p, h0)
         inner = slice(1, p.size - 1)  # the free (interior) nodes
-        if self._reduced:
+        if self.uses_reduced:
             (fx,), dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
-                pq, h, (px,), (hx,), ops.element_size, self._grad_reduced(p))
+                pq, h, (px,), (hx,), ops.element_size, self.grad_reduced(p))
             # d(dq_h/dx)/dp_j = q'(p_j) dphi_j/dx: the dq/dx column term, column-scaled
             a_q = ops.flux_jacobian(0, np.zeros_like(pq), (dgq[0][0],)) \
                 @ sp.diags(self.flux.fluidity(p))
@@ -647,21 +646,49 @@ class LineModel:
         if not post:
             return out
         pq, h_q, px, _ = problem.fields_q(p, h0)
+        load = float(problem.mass @ p)
         q = out.quantities
-        q.update(film_quantities(disc.x, p, h_nodes, ops, h_q))
+        nums, notes = film_numbers(h_nodes, h_q, float(np.interp(0.0, disc.x, h_nodes)), p,
+                                   load)
+        q.update(nums)
         outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
         ind = full_film_indicator_line(ops.points[0], outlet)
-        eta_q = problem.flux.viscosity(pq)
-        q.update(friction_and_heat(ops, h_q, (px,), eta_q, scene.kinematics.sliding_speed,
-                                   ind, q["load"]))
+        numbers, more, d = self._friction_and_heat(problem, p, h0, ind, load)
+        q.update(numbers)
+        out.traction_model = d.shear["model"]
+        out.warnings += notes + more
         if outlet is not None:
             q["outlet_position"] = outlet
             q["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
-        nodes_eta = problem.flux.viscosity(p)
-        out.extra_fields["viscosity_Pa_s"] = nodes_eta
-        if scene.traction.model != "newtonian":
-            _non_newtonian_couette(scene, disc.x, p, h_nodes, nodes_eta, outlet, q)
+        out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p)
         return out
+
+    def _friction_and_heat(self, problem: LineProblem, p: np.ndarray, h0: float,
+                           indicator: np.ndarray, load: float):
+        """:func:`bearing_fem.post.friction_and_heat` of a solution on ``problem``."""
+        pq, h_q, px, _ = problem.fields_q(p, h0)
+        reduced = ((problem.grad_reduced(p), problem.flux.viscosity0)
+                   if problem.uses_reduced else None)
+        kin = self.scene.kinematics
+        return friction_and_heat(
+            problem.disc.ops, h_q, (px,), problem.flux.viscosity(pq), pq,
+            mean_speed=kin.mean_speed, sliding_speed=kin.sliding_speed, indicator_q=indicator,
+            load=load, gross_load=float(problem.mass @ np.abs(p)), traction=self.scene.traction,
+            reduced=reduced)
+
+    def heat_flux(self, pressure: np.ndarray, h0: float) -> tuple[np.ndarray, FilmDissipation]:
+        """Heat generated in the film per element [W/m^2] (element means of the Couette
+        and conservative Poiseuille densities, :class:`bearing_fem.post.FilmDissipation`)
+        of a solution on the model's own grid (``setup.disc.x``), and the dissipation."""
+        problem = self.problem(self.setup)
+        ops = self.setup.disc.ops
+        outlet = outlet_position_line(self.setup.disc.x, pressure, self.scene.model.cavitation)
+        ind = full_film_indicator_line(ops.points[0], outlet)
+        _, _, d = self._friction_and_heat(problem, pressure, h0, ind,
+                                          float(problem.mass @ pressure))
+        per_element = (ops.weights * (d.couette_density + d.poiseuille_density)).reshape(
+            -1, ops.n_quad).sum(axis=1) / np.diff(self.setup.disc.x)
+        return per_element, d
 
     def linear(self, level: LineSetup) -> tuple[str, Solution, str, int]:
         """Linear (reduced-pressure) solve on ``level``: status, solution, message and
@@ -691,21 +718,6 @@ def _regridded(scene, setup: LineSetup, x0: float, x1: float, nodes: int) -> Lin
         comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
         c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
     return replace(setup, disc=disc, compliance=comp, stab_compliance=c_stab)
-
-
-def _non_newtonian_couette(scene, x: np.ndarray, p: np.ndarray, h: np.ndarray,
-                           eta: np.ndarray, outlet: float | None, q: dict) -> None:
-    """Replace the Newtonian Couette friction and heat by the scene's traction model
-    (Eyring or limiting shear stress, :mod:`bearing_fem.physics.traction`); the
-    Poiseuille parts stay as computed."""
-    xm = 0.5 * (x[1:] + x[:-1])
-    ind = np.ones_like(xm) if outlet is None else (xm <= outlet).astype(float)
-    f_c, q_c = couette_line(x, p, h, eta, scene.kinematics.sliding_speed, indicator=ind,
-                            **shear_parameters(scene.traction))
-    f_p = q["rolling_resistance"]
-    q.update(sliding_friction=f_c, friction_force=f_p + f_c, friction_force_surface2=f_p - f_c,
-             friction_coefficient=(f_p + f_c) / q["load"] if q["load"] > 0 else 0.0,
-             heat_power_couette=q_c, heat_power=q_c + q["heat_power_poiseuille"])
 
 
 def solve_line(scene, *, boundary_pressure: tuple[float, float] | None = None,

@@ -61,7 +61,7 @@ from ..formulas import point_central_film_nvm
 from ..numerics.newton import gmres_right
 from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
-from ..post import friction_and_heat
+from ..post import film_numbers, friction_and_heat
 from ..result import Result
 from ..scene import Scene
 from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
@@ -483,8 +483,8 @@ class PointProblem(ScaledResidual):
         """Nodal weak residual R_i [m^3/s] (all nodes)."""
         pq, h, gp, gh = self.fields_q(p, h0)
         ops = self.grid.ops
-        if self._reduced:
-            fl = self.flux.flux(pq, h, gp, gh, ops.element_size, gq=self._grad_reduced(p))
+        if self.uses_reduced:
+            fl = self.flux.flux(pq, h, gp, gh, ops.element_size, gq=self.grad_reduced(p))
         else:
             fl = self.flux.flux(pq, h, gp, gh, ops.element_size)
         r = ops.weak_divergence(*fl)
@@ -499,9 +499,9 @@ class PointProblem(ScaledResidual):
         ops = self.grid.ops
         pq, h, gp, gh = self.fields_q(p, h0)
         asm = ops.assembler  # element-wise assembly on one fixed pattern
-        if self._reduced:
+        if self.uses_reduced:
             fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
-                pq, h, gp, gh, ops.element_size, self._grad_reduced(p))
+                pq, h, gp, gh, ops.element_size, self.grad_reduced(p))
             zero = np.zeros_like(pq)
             fluidity = self.flux.fluidity(p)  # d grad q_h / d p_j = q'(p_j) grad phi_j
             extra = [(d, zero, (dgq[0][d], dgq[1][d]), fluidity) for d in range(2)]
@@ -890,23 +890,28 @@ class PointModel:
         o = np.array([0.0])
         v = problem.displacement(p)
         load = float(problem.mass @ p)
-        q.update({
-            "h_min": float(min(np.min(h_nodes), np.min(h_q))),
-            "h_central": float(h0 + grid.interpolate(v, o, o)[0]),
-            "p_max": float(np.max(p)),
-            "load": load,
-        })
+        nums, notes = film_numbers(h_nodes, h_q, float(h0 + grid.interpolate(v, o, o)[0]), p,
+                                   load)
+        q.update(nums)
         if scene.model.cavitation == "reynolds":
             full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
             full = full | grid.boundary_mask()
             ind = (ops.value @ full.astype(float) >= 0.5).astype(float)
         else:
             ind = np.ones_like(h_q)
-        with np.errstate(all="ignore"):  # unconverged iterates may overflow exp(alpha p)
-            eta_q = problem.flux.viscosity(pq)
-            q.update(friction_and_heat(ops, h_q, gp, eta_q, scene.kinematics.sliding_speed,
-                                       ind, load))
-            out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
+        eta_q = problem.flux.viscosity(pq)
+        reduced = ((problem.grad_reduced(p), problem.flux.viscosity0)
+                   if problem.uses_reduced else None)
+        kin = scene.kinematics
+        numbers, more, d = friction_and_heat(
+            ops, h_q, gp, eta_q, pq, mean_speed=kin.mean_speed,
+            sliding_speed=kin.sliding_speed, indicator_q=ind, load=load,
+            gross_load=float(problem.mass @ np.abs(p)), traction=scene.traction,
+            reduced=reduced)
+        q.update(numbers)
+        out.traction_model = d.shear["model"]
+        out.warnings += notes + more
+        out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
         if self.elastic:
             q["gmres_iterations"] = float(sum(pr.linear_iterations for pr in self._problems))
         return out

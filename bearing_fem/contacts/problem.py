@@ -37,11 +37,11 @@ class ScaledResidual:
     ``has_h0``, ``mass``, ``load``, ``flux`` and ``ops`` (the quadrature operators)."""
 
     @property
-    def _reduced(self) -> bool:
+    def uses_reduced(self) -> bool:
         """True if the Poiseuille term is rho h^3/(12 eta0) grad q_h (reduced pressure)."""
         return getattr(self.flux, "reduced_alpha", None) is not None
 
-    def _grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, ...]:
+    def grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, ...]:
         """Gradient of the interpolant q_h of the nodal reduced pressure q(p) at the
         quadrature points [Pa/m], one array per dimension
         (:meth:`~bearing_fem.physics.reynolds.UpwindFluxModel.reduced`)."""
