@@ -117,6 +117,11 @@ class FilmDissipation:
         The discrete int h^3 |grad p|^2/(12 eta) dA [W or W/m]: with the reduced-pressure
         Poiseuille term, int h^3/(12 eta0) grad q_h . grad p_h dA (the viscosity
         variation across an element integrated exactly for linear p).
+    heat_power_stabilisation : float
+        The numerical dissipation of the stabilisation, int F_stab . grad p_h dA
+        [W or W/m]. For an incompressible film, direct + stabilisation = Q_P holds to the
+        Newton tolerance (the discrete weak form tested with p_h itself): the discrete
+        energy balance.
     couette_density, poiseuille_density : ndarray
         Heat generated per unit area at the quadrature points [W/m^2]: tau u_s, and
         u_m dp/dx (h - h*) (integrates to Q_P; in the exact 1D film it equals the local
@@ -132,6 +137,7 @@ class FilmDissipation:
     heat_power_couette: float
     heat_power_poiseuille: float
     heat_power_poiseuille_direct: float
+    heat_power_stabilisation: float
     couette_density: np.ndarray
     poiseuille_density: np.ndarray
     h_star: float
@@ -156,6 +162,7 @@ class FilmDissipation:
             "heat_power_couette": self.heat_power_couette,
             "heat_power_poiseuille": self.heat_power_poiseuille,
             "heat_power_poiseuille_direct": self.heat_power_poiseuille_direct,
+            "heat_power_stabilisation": self.heat_power_stabilisation,
         }
 
 
@@ -163,7 +170,8 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
                      grad_p_q: tuple[np.ndarray, ...], eta_q: np.ndarray, p_q: np.ndarray, *,
                      mean_speed: float, sliding_speed: float, indicator_q: np.ndarray,
                      shear: Mapping[str, Any],
-                     reduced: tuple[tuple[np.ndarray, ...], float] | None = None
+                     reduced: tuple[tuple[np.ndarray, ...], float] | None = None,
+                     stabilisation: tuple[np.ndarray, ...] | None = None
                      ) -> FilmDissipation:
     """Friction forces and dissipated power of a film from fields at the quadrature points.
 
@@ -178,6 +186,10 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         (the traction model and its parameters);
     reduced : (grad q_h at the quadrature points [Pa/m], eta0 [Pa s]), optional
         The reduced-pressure gradient of the Poiseuille term, for the direct form.
+    stabilisation : tuple of arrays, optional
+        The flux the stabilisation adds [m^2/s]
+        (:meth:`bearing_fem.physics.reynolds.FluxModel.stabilisation_flux`): its
+        integral against grad p is the scheme's numerical dissipation.
     """
     w = ops.weights * indicator_q
     px = grad_p_q[0]
@@ -193,6 +205,9 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         direct = (h_q**3 / (12.0 * eta0)) * sum(a * b for a, b in zip(gq, grad_p_q))
     else:
         direct = h_q**3 * sum(g * g for g in grad_p_q) / (12.0 * eta_q)
+    numerical = 0.0
+    if stabilisation is not None:
+        numerical = float(w @ sum(a * b for a, b in zip(stabilisation, grad_p_q)))
     flux_film = h_q - h_q**3 * px / (12.0 * eta_q * mean_speed)
     sel = (p_q > 0.5 * np.max(p_q)) & (indicator_q > 0)
     h_star = float(np.median(flux_film[sel] if np.any(sel) else flux_film))
@@ -200,6 +215,7 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         rolling_resistance=f_p, sliding_friction=f_c,
         heat_power_couette=float(f_c * sliding_speed), heat_power_poiseuille=q_p,
         heat_power_poiseuille_direct=float(w @ direct),
+        heat_power_stabilisation=numerical,
         couette_density=tau * sliding_speed * indicator_q,
         poiseuille_density=mean_speed * px * (h_q - h_star) * indicator_q, h_star=h_star,
         shear=dict(shear))
@@ -248,7 +264,8 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
                       grad_p_q: tuple[np.ndarray, ...], eta_q: np.ndarray, p_q: np.ndarray, *,
                       mean_speed: float, sliding_speed: float, indicator_q: np.ndarray,
                       load: float, gross_load: float, traction: Any = None,
-                      reduced: tuple[tuple[np.ndarray, ...], float] | None = None
+                      reduced: tuple[tuple[np.ndarray, ...], float] | None = None,
+                      stabilisation: tuple[np.ndarray, ...] | None = None
                       ) -> tuple[dict[str, Any], list[str], FilmDissipation]:
     """Summary numbers, warnings and heat densities of a film (line or point contact).
 
@@ -267,7 +284,7 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
     shear, notes = traction_choice(traction, sliding_speed)
     d = film_dissipation(ops, h_q, grad_p_q, eta_q, p_q, mean_speed=mean_speed,
                          sliding_speed=sliding_speed, indicator_q=indicator_q, shear=shear,
-                         reduced=reduced)
+                         reduced=reduced, stabilisation=stabilisation)
     q: dict[str, Any] = d.quantities()
     mu, more = friction_coefficient(d.friction_force, load, gross_load)
     notes += more

@@ -666,15 +666,17 @@ class LineModel:
     def _friction_and_heat(self, problem: LineProblem, p: np.ndarray, h0: float,
                            indicator: np.ndarray, load: float):
         """:func:`bearing_fem.post.friction_and_heat` of a solution on ``problem``."""
-        pq, h_q, px, _ = problem.fields_q(p, h0)
-        reduced = ((problem.grad_reduced(p), problem.flux.viscosity0)
-                   if problem.uses_reduced else None)
+        pq, h_q, px, hx = problem.fields_q(p, h0)
+        gq = problem.grad_reduced(p) if problem.uses_reduced else None
+        ops = problem.disc.ops
         kin = self.scene.kinematics
         return friction_and_heat(
-            problem.disc.ops, h_q, (px,), problem.flux.viscosity(pq), pq,
+            ops, h_q, (px,), problem.flux.viscosity(pq), pq,
             mean_speed=kin.mean_speed, sliding_speed=kin.sliding_speed, indicator_q=indicator,
             load=load, gross_load=float(problem.mass @ np.abs(p)), traction=self.scene.traction,
-            reduced=reduced)
+            reduced=None if gq is None else (gq, problem.flux.viscosity0),
+            stabilisation=problem.flux.stabilisation_flux(pq, h_q, (px,), (hx,),
+                                                          ops.element_size, gq))
 
     def heat_flux(self, pressure: np.ndarray, h0: float) -> tuple[np.ndarray, FilmDissipation]:
         """Heat generated in the film per element [W/m^2] (element means of the Couette
