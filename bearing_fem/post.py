@@ -25,9 +25,10 @@ Reported (line contacts per metre of length, point contacts in N and W):
   outlet spike by exp(alpha p). The discrete direct form is reported as
   ``heat_power_poiseuille_direct``; their agreement is the energy-identity check.
 
-The integrals run over the full-film region: the whole domain for full-Sommerfeld, and
-upstream of the cavitation (outlet) boundary for Reynolds cavitation, where the film
-ruptures and carries no Couette shear.
+The Couette (sliding) integrals run over the full-film region: the whole domain for
+full-Sommerfeld, and upstream of the cavitation (outlet) boundary for Reynolds
+cavitation, where the film ruptures and carries no Couette shear. The Poiseuille
+integrals run over the whole domain (p = 0 where the film has cavitated).
 """
 from __future__ import annotations
 
@@ -77,29 +78,79 @@ def outlet_position_line(x: np.ndarray, p: np.ndarray, cavitation: str) -> float
 SUBGRID_FILM_FRACTION = 0.01
 
 
+def parabola_vertex(x: np.ndarray, f: np.ndarray, i: int) -> tuple[float, float]:
+    """Vertex (position, value) of the parabola through the nodes i-1, i, i+1 of
+    (x, f); the node itself at an end of the array, for a straight line, or where the
+    vertex would lie beyond a neighbour."""
+    if i <= 0 or i >= x.size - 1:
+        return float(x[i]), float(f[i])
+    c = np.polyfit(x[i - 1:i + 2] - x[i], f[i - 1:i + 2], 2)
+    if c[0] == 0.0:
+        return float(x[i]), float(f[i])
+    xv = -c[1] / (2 * c[0])
+    if abs(xv) > max(x[i + 1] - x[i], x[i] - x[i - 1]):
+        return float(x[i]), float(f[i])
+    return float(x[i] + xv), float(np.polyval(c, xv))
+
+
+def peak(p: np.ndarray, x: np.ndarray, y: np.ndarray | None = None) -> float:
+    """Maximum of a nodal field, refined between the nodes [same unit as p].
+
+    The largest nodal value plus the rise of the parabola through it and its two
+    neighbours along each grid direction (when the node is a local maximum along it):
+    the field's maximum to second order where it is smooth (a nodal maximum alone is
+    first order in its position and makes Richardson estimates erratic), the nodal
+    value itself at a one-node spike.
+
+    Parameters
+    ----------
+    p : ndarray
+        Nodal values, shape (nx,) or (ny, nx).
+    x, y : ndarray
+        Node coordinates [m] (``y`` for 2D fields).
+    """
+    p = np.asarray(p, dtype=float)
+    if y is None:
+        i = int(np.argmax(p))
+        return max(float(p[i]), parabola_vertex(x, p, i)[1])
+    grid = p.reshape(y.size, x.size)
+    j, i = np.unravel_index(int(np.argmax(grid)), grid.shape)
+    top = float(grid[j, i])
+    rise = max(parabola_vertex(x, grid[j], i)[1] - top, 0.0) \
+        + max(parabola_vertex(y, grid[:, i], j)[1] - top, 0.0)
+    return top + rise
+
+
+#: h_min between the nodes more than this fraction below the nodal minimum is reported:
+#: the constriction is narrower than the grid resolves.
+SUBGRID_FILM_FRACTION = 0.01
+
+
 def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
-                 p_nodes: np.ndarray, load: float) -> tuple[dict[str, float], list[str]]:
+                 p_nodes: np.ndarray, load: float, x: np.ndarray,
+                 y: np.ndarray | None = None) -> tuple[dict[str, float], list[str]]:
     """h_min, h_central, p_max and load of a solution, and a warning when the minimum film
     lies between the nodes.
 
     h_min is the minimum of the film field: over the nodes and the quadrature points (the
     film between nodes: exact geometry plus the interpolated deformation), and never above
-    h_central.
+    h_central. p_max is the nodal maximum refined between the nodes (:func:`peak`).
 
     Parameters
     ----------
     h_nodes, h_q : film at the nodes and at the quadrature points [m];
     h_central : film at the Hertz centre [m]; p_nodes : nodal pressure [Pa];
-    load : int p dA [N or N/m].
+    load : int p dA [N or N/m]; x, y : node coordinates [m] (``y`` for point contacts).
     """
     h_node_min = float(np.min(h_nodes))
     h_min = float(min(h_node_min, float(np.min(h_q)), h_central))
     notes = []
     if h_min < (1.0 - SUBGRID_FILM_FRACTION) * h_node_min:
-        notes.append(f"h_min lies between the nodes ({h_min:.4g} m, {100 * (1 - h_min / h_node_min):.3g}% "
-                     f"below the nodal minimum {h_node_min:.4g} m): the outlet constriction "
-                     "is not resolved by the grid; refine the mesh")
-    return {"h_min": h_min, "h_central": float(h_central), "p_max": float(np.max(p_nodes)),
+        notes.append(f"h_min lies between the nodes ({h_min:.4g} m, "
+                     f"{100 * (1 - h_min / h_node_min):.3g}% below the nodal minimum "
+                     f"{h_node_min:.4g} m): the outlet constriction is not resolved by the "
+                     "grid; refine the mesh")
+    return {"h_min": h_min, "h_central": float(h_central), "p_max": peak(p_nodes, x, y),
             "load": float(load)}, notes
 
 
@@ -181,7 +232,9 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
     h_q : film [m]; grad_p_q : pressure gradient components [Pa/m], x first;
     eta_q : viscosity [Pa s]; p_q : pressure [Pa];
     mean_speed, sliding_speed : u_m, u_s [m/s];
-    indicator_q : 1 in the full-film region, 0 in the cavitated zone;
+    indicator_q : 1 in the full-film region, 0 in the cavitated zone (where the film has
+        ruptured and carries no Couette shear; the Poiseuille integrals run over the whole
+        domain, where p = 0 in the cavitated zone);
     shear : keyword arguments of :func:`bearing_fem.physics.traction.shear_stress`
         (the traction model and its parameters);
     reduced : (grad q_h at the quadrature points [Pa/m], eta0 [Pa s]), optional
@@ -191,11 +244,11 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         (:meth:`bearing_fem.physics.reynolds.FluxModel.stabilisation_flux`): its
         integral against grad p is the scheme's numerical dissipation.
     """
-    w = ops.weights * indicator_q
+    w = ops.weights
     px = grad_p_q[0]
     f_p = float(w @ (0.5 * h_q * px))
     if sliding_speed != 0.0:
-        tau = shear_stress(eta_q, sliding_speed / h_q, p_q, **shear)
+        tau = shear_stress(eta_q, sliding_speed / h_q, p_q, **shear) * indicator_q
     else:
         tau = np.zeros_like(h_q)
     f_c = float(w @ tau)
@@ -216,8 +269,8 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         heat_power_couette=float(f_c * sliding_speed), heat_power_poiseuille=q_p,
         heat_power_poiseuille_direct=float(w @ direct),
         heat_power_stabilisation=numerical,
-        couette_density=tau * sliding_speed * indicator_q,
-        poiseuille_density=mean_speed * px * (h_q - h_star) * indicator_q, h_star=h_star,
+        couette_density=tau * sliding_speed,
+        poiseuille_density=mean_speed * px * (h_q - h_star), h_star=h_star,
         shear=dict(shear))
 
 

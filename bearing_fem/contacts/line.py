@@ -452,7 +452,10 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
     width = x_range[1] - x_range[0]
     cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
     if nodes is None:
-        nodes = scene.mesh.nodes or int(min(max(width * density, 801), cap)) | 1
+        # n - 1 a multiple of 4: the grid and its two coarser grids (every other node)
+        # nest, for the grid sequence and the error estimate
+        auto = 4 * math.ceil(min(max(width * density, 801), cap - 1) / 4) + 1
+        nodes = scene.mesh.nodes or auto
     disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
     if model.elasticity == "rigid":
         comp = RigidCompliance()
@@ -649,7 +652,7 @@ class LineModel:
         load = float(problem.mass @ p)
         q = out.quantities
         nums, notes = film_numbers(h_nodes, h_q, float(np.interp(0.0, disc.x, h_nodes)), p,
-                                   load)
+                                   load, disc.x)
         q.update(nums)
         outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
         ind = full_film_indicator_line(ops.points[0], outlet)

@@ -891,7 +891,7 @@ class PointModel:
         v = problem.displacement(p)
         load = float(problem.mass @ p)
         nums, notes = film_numbers(h_nodes, h_q, float(h0 + grid.interpolate(v, o, o)[0]), p,
-                                   load)
+                                   load, grid.x, grid.y)
         q.update(nums)
         if scene.model.cavitation == "reynolds":
             full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
