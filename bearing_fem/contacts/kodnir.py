@@ -75,7 +75,7 @@ from ..numerics.fe import QuadratureOperators, quadrature_operators
 from .problem import fischer_burmeister
 from ..numerics.newton import NewtonOutcome, damped_newton
 from ..post import parabola_vertex
-from ..physics.reynolds import _coth_minus_inverse
+from ..physics.reynolds import upwind_factor
 
 log = logging.getLogger(__name__)
 
@@ -177,7 +177,7 @@ def _flux(k, H, kp, Hp, dz, b_alpha: float, C: float):
     if C > 0.0:
         strong = -eps * (3.0 * Hp / H - b_alpha * kp) * kp - Hp
         pe = C * dz / (2.0 * eps)
-        f = f - 0.5 * dz * _coth_minus_inverse(pe) * strong
+        f = f - 0.5 * dz * upwind_factor(pe) * strong
     return f
 
 

@@ -104,7 +104,7 @@ class FluxModel:
             for a, b in zip(gp, gh):
                 strong = strong - eps * ((dlnrho - dlneta) * a + 3.0 * b / h) * a
             pe = self.mean_speed * rho * self.compliance * dx / (2.0 * eps)
-            out[0] = out[0] + 0.5 * dx * _coth_minus_inverse(pe) * strong
+            out[0] = out[0] + 0.5 * dx * upwind_factor(pe) * strong
         return tuple(out)
 
     def galerkin_flux(self, p, h, gp, gq=None):
@@ -243,7 +243,7 @@ class UpwindFluxModel(FluxModel):
         xi, pe = 1.0, None
         if self.upwind_compliance > 0.0:  # fade out where Poiseuille flow dominates
             pe = self.mean_speed * rho * self.upwind_compliance * dx / (2.0 * eps)
-            xi = _coth_minus_inverse(pe)
+            xi = upwind_factor(pe)
         return rho, eps, drho, 0.5 * self.upwind * xi * dx * self.mean_speed, pe
 
     def _flux_dh(self, rho, eps, drho, c, pe, h, gp, gh, gq, dx):
@@ -333,7 +333,7 @@ def _diagonal(dim: int, first: np.ndarray, others: np.ndarray) -> list[tuple]:
             for k in range(dim)]
 
 
-def _coth_minus_inverse(pe):
+def upwind_factor(pe):
     """xi(Pe) = coth(Pe) - 1/Pe, stable for small and huge Pe (real or complex-step input).
 
     Complex input is a complex step Pe = x + i s (s tiny): the result is

@@ -39,7 +39,8 @@ from typing import Any, Callable, Literal, Sequence
 
 import numpy as np
 
-from bearing_fem import analytic
+from .. import analytic
+from ..validation import require_int, require_positive
 
 logger = logging.getLogger(__name__)
 
@@ -57,24 +58,6 @@ __all__ = [
 # validation helpers
 # ----------------------------------------------------------------------------------------
 
-def _positive(name: str, value: Any, unit: str) -> float:
-    """Float > 0, else ValueError naming the argument, the value and the unit."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {value!r}") from None
-    if not np.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {value!r}")
-    return v
-
-
-def _int_at_least(name: str, value: Any, lo: int) -> int:
-    if isinstance(value, bool) or int(value) != value or int(value) < lo:
-        raise ValueError(f"{name} must be an integer >= {lo} (count, dimensionless), "
-                         f"got {value!r}")
-    return int(value)
-
-
 def _flux_function(flux: FluxSpec, half_width: float, q_max: float | None,
                    arg: str = "flux") -> tuple[Callable[[np.ndarray], np.ndarray], str, float]:
     """Return (q(x) [W/m^2] vectorised, zero outside |x| <= a; kind; q_max [W/m^2])."""
@@ -82,7 +65,7 @@ def _flux_function(flux: FluxSpec, half_width: float, q_max: float | None,
     if isinstance(flux, str):
         if q_max is None:
             raise ValueError(f"q_max must be given (W/m^2) for flux={flux!r}, got None")
-        qm = _positive("q_max", q_max, "W/m^2")
+        qm = require_positive("q_max", q_max, "W/m^2")
         if flux == "semi-elliptic":
             def q(x: np.ndarray) -> np.ndarray:
                 return qm * np.sqrt(np.clip(1.0 - (np.asarray(x) / a) ** 2, 0.0, None))
@@ -124,7 +107,7 @@ def _flux_function(flux: FluxSpec, half_width: float, q_max: float | None,
         if qm <= 0.0:
             raise ValueError(f"{arg} is zero everywhere on |x| <= a = {a} m: nothing to solve")
     else:
-        qm = _positive("q_max", q_max, "W/m^2")
+        qm = require_positive("q_max", q_max, "W/m^2")
     return q, kind, qm
 
 
@@ -163,11 +146,11 @@ def strip_mesh(half_width: float, radius: float, n_across: int = 48):
     """
     from skfem import MeshTri
 
-    a = _positive("half_width", half_width, "m")
-    R = _positive("radius", radius, "m")
+    a = require_positive("half_width", half_width, "m")
+    R = require_positive("radius", radius, "m")
     if R <= 1.5 * a:
         raise ValueError(f"radius must be > 1.5 * half_width = {1.5 * a} m, got {radius!r}")
-    n_nu = _int_at_least("n_across", n_across, 4)
+    n_nu = require_int("n_across", n_across, 4)
     n_nu += n_nu % 2
     M = float(np.arccosh(R / a))
     d = np.pi / n_nu
@@ -363,9 +346,9 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
                        LinearForm, asm, condense, solve)
     from skfem.helpers import dot, grad
 
-    a = _positive("half_width", half_width, "m")
-    lam = _positive("conductivity", conductivity, "W/(m K)")
-    R = 50.0 * a if radius is None else _positive("radius", radius, "m")
+    a = require_positive("half_width", half_width, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
+    R = 50.0 * a if radius is None else require_positive("radius", radius, "m")
     if far_field not in ("robin", "dirichlet"):
         raise ValueError(f"far_field must be 'robin' or 'dirichlet' (boundary condition at "
                          f"r = R m), got {far_field!r}")
@@ -495,8 +478,8 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
         Bad arguments, two points on one isotherm of f (|f_1 - f_2| too small), or a
         non-positive T_n (the temperatures fall towards the source: not a heat source).
     """
-    a = _positive("half_width", half_width, "m")
-    lam = _positive("conductivity", conductivity, "W/(m K)")
+    a = require_positive("half_width", half_width, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
     pts = []
     for name, p in (("p1", p1), ("p2", p2)):
         arr = np.asarray(p, dtype=float)
@@ -638,20 +621,20 @@ def moving_source(half_length: float, q_max: float, conductivity: float, density
                        asm, condense, solve)
     from skfem.helpers import dot, grad
 
-    b = _positive("half_length", half_length, "m")
-    lam = _positive("conductivity", conductivity, "W/(m K)")
-    rho = _positive("density", density, "kg/m^3")
-    c = _positive("heat_capacity", heat_capacity, "J/(kg K)")
-    V = _positive("speed", speed, "m/s")
-    n_src = _int_at_least("n_source", n_source, 4)
+    b = require_positive("half_length", half_length, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
+    rho = require_positive("density", density, "kg/m^3")
+    c = require_positive("heat_capacity", heat_capacity, "J/(kg K)")
+    V = require_positive("speed", speed, "m/s")
+    n_src = require_int("n_source", n_source, 4)
     q, kind, qm = _flux_function(flux, b, q_max)
     Pe = V * b * rho * c / (2.0 * lam)
     Lu = 1.0 + max(2.0, 12.0 / (2 * Pe)) if upstream is None else \
-        _positive("upstream", upstream, "(units of b)")
+        require_positive("upstream", upstream, "(units of b)")
     Ld = 1.0 + max(3.0, 12.0 / (2 * Pe)) if downstream is None else \
-        _positive("downstream", downstream, "(units of b)")
+        require_positive("downstream", downstream, "(units of b)")
     Dp = max(1.5, 4.0 / Pe + 4.0 * np.sqrt(Ld / (2 * Pe))) if depth is None else \
-        _positive("depth", depth, "(units of b)")
+        require_positive("depth", depth, "(units of b)")
     if Lu <= 1.0 or Ld <= 1.0:
         raise ValueError(f"upstream and downstream must exceed 1 (units of b), "
                          f"got {Lu!r}, {Ld!r}")
