@@ -190,6 +190,47 @@ def strip_mesh(half_width: float, radius: float, n_across: int = 48):
     return mesh, strip, outer
 
 
+def patch_from_mesh(mesh, half_width: float):
+    """A dimensionless patch mesh scaled to metres, with its strip and far-field facets.
+
+    Parameters
+    ----------
+    mesh : skfem.MeshTri
+        Triangles of the half-disc y >= 0 in units of the strip half-width: the heated
+        strip is the boundary on y = 0 with |x| <= 1, the far field the boundary at the
+        largest radius.
+    half_width : float
+        a [m].
+
+    Returns
+    -------
+    mesh : skfem.MeshTri (in m); strip_facets, outer_facets : ndarray of int
+    """
+    from skfem import MeshTri
+
+    a = require_positive("half_width", half_width, "m")
+    if not isinstance(mesh, MeshTri):  # skfem's MeshTri (MeshTri1)
+        raise ValueError(f"a thermal patch mesh must be triangles (skfem MeshTri), got "
+                         f"{type(mesh).__name__}")
+    pts = np.asarray(mesh.p, dtype=float)
+    if np.min(pts[1]) < -1e-9 or np.min(np.abs(pts[0])) > 1.0:
+        raise ValueError("a thermal patch mesh lies in y >= 0 around the strip |x| <= 1 "
+                         "(units of the half-width)")
+    scaled = MeshTri(pts * a, mesh.t)
+    f = scaled.facets
+    bf = scaled.boundary_facets()
+    xm = 0.5 * (pts[0, f[0, bf]] + pts[0, f[1, bf]])
+    on_axis = (np.abs(pts[1, f[0, bf]]) < 1e-12) & (np.abs(pts[1, f[1, bf]]) < 1e-12)
+    strip = bf[on_axis & (np.abs(xm) <= 1.0 + 1e-12)]
+    r = np.hypot(pts[0], pts[1])
+    r_max = float(np.max(r))
+    outer = bf[(r[f[0, bf]] > 0.999 * r_max) & (r[f[1, bf]] > 0.999 * r_max)]
+    if strip.size == 0 or outer.size == 0:
+        raise ValueError("the thermal patch mesh has no strip facets (y = 0, |x| <= 1) or "
+                         "no far-field arc")
+    return scaled, strip, outer
+
+
 @dataclass(frozen=True)
 class StripSourceResult:
     """FE solution of the Korovchinsky half-plane problem (see :func:`strip_source`).
@@ -294,7 +335,7 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
                  flux: FluxSpec = "semi-elliptic",
                  far_field: Literal["robin", "dirichlet"] = "dirichlet",
                  n_across: int = 48, order: int = 2,
-                 multipole_order: int = 2) -> StripSourceResult:
+                 multipole_order: int = 2, mesh=None) -> StripSourceResult:
     """Solve steady conduction in the half-plane patch under a strip heat source.
 
     Body y >= 0 (x across the track, y into the body, metres), ``-lambda dT/dy = q(x)``
@@ -337,6 +378,11 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
         Lagrange element order.
     multipole_order : {0, 1, 2}
         Terms of the Dirichlet far-field datum beyond ln r (ignored for "robin").
+    mesh : skfem.MeshTri, optional
+        A patch mesh in units of a (the half-disc r <= R/a of y >= 0, the strip
+        |x| <= 1 on y = 0), e.g. ``meshes/korovchinsky_patch.vtu`` read by
+        :func:`bearing_fem.mesh.read_mesh`; it replaces :func:`strip_mesh` (``radius``
+        and ``n_across`` are then taken from it).
 
     Returns
     -------
@@ -360,7 +406,11 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
                          f"got {multipole_order!r}")
     q, kind, qm = _flux_function(flux, a, q_max)
     t0 = time.perf_counter()
-    mesh, strip, outer = strip_mesh(a, R, n_across)
+    if mesh is None:
+        mesh, strip, outer = strip_mesh(a, R, n_across)
+    else:
+        mesh, strip, outer = patch_from_mesh(mesh, a)
+        R = float(np.max(np.hypot(*mesh.p)))
     elem = ElementTriP2() if order == 2 else ElementTriP1()
     basis = Basis(mesh, elem, intorder=2 * order)
     sb = FacetBasis(mesh, elem, facets=strip, intorder=10)
