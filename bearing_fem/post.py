@@ -359,10 +359,13 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
 ESTIMATED_QUANTITIES = ("h_central", "h_min", "p_max", "friction_force", "heat_power")
 #: Estimated relative error above which a quantity is named in the result's warnings.
 ERROR_WARNING_THRESHOLD = 0.05
-#: Observed orders of convergence accepted for Richardson extrapolation: outside this
-#: range (or with changes of alternating sign, or not shrinking) the differences are
-#: not in the asymptotic range and the plain level difference is reported instead.
-RICHARDSON_ORDERS = (0.5, 5.0)
+#: Formal order of convergence of the discretisation (P1 elements: second order for
+#: nodal values and integrals of smooth solutions). An observed order above it is capped
+#: at it, the usual safeguard when the coarsest grid is not in the asymptotic range.
+FORMAL_ORDER = 2.0
+#: Smallest observed order for which Richardson extrapolation is used: below it (or with
+#: changes of alternating sign, or not shrinking) the plain level difference is reported.
+MIN_ORDER = 0.5
 
 
 def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None]:
@@ -370,9 +373,10 @@ def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None
     with half the spacing of the one before.
 
     With three values q1, q2, q3 and changes d1 = q2 - q1, d2 = q3 - q2 of one sign and
-    |d2| < |d1|, the observed order is p = log2(d1/d2) and, for p in
-    ``RICHARDSON_ORDERS``, the error of q3 is |d2| / (2^p - 1) (Richardson). Otherwise
-    it is the plain level difference |d2|; with one value there is no estimate.
+    |d2| < |d1|, the observed order is p = log2(d1/d2); for p >= ``MIN_ORDER`` the error
+    of q3 is |d2| / (2^p' - 1) with p' = min(p, ``FORMAL_ORDER``) (Richardson). Otherwise,
+    and with only two values, it is the plain level difference |d2|, which overestimates
+    the error of a converging sequence; with one value there is no estimate.
 
     Returns
     -------
@@ -393,8 +397,8 @@ def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None
             return 0.0, "richardson", None
         if d1 * d2 > 0.0 and abs(d2) < abs(d1):
             p = math.log2(d1 / d2)
-            if RICHARDSON_ORDERS[0] <= p <= RICHARDSON_ORDERS[1]:
-                return abs(d2) / (2.0**p - 1.0), "richardson", p
+            if p >= MIN_ORDER:
+                return abs(d2) / (2.0 ** min(p, FORMAL_ORDER) - 1.0), "richardson", p
     return abs(d2), "level difference", None
 
 
@@ -414,7 +418,8 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     dict
         ``{quantity: relative error or None}`` for ``ESTIMATED_QUANTITIES``, plus
         ``method`` and ``order`` (per quantity, see :func:`richardson`), ``levels``
-        (how many solutions were used) and ``grids``.
+        (how many solutions were used), ``grids`` and ``values`` (each quantity on every
+        grid, coarse to fine).
     """
     out: dict[str, Any] = {}
     methods: dict[str, str] = {}
@@ -435,6 +440,7 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     out["order"] = orders
     out["levels"] = len(levels)
     out["grids"] = note
+    out["values"] = {k: [lv.get(k) for lv in levels] for k in ESTIMATED_QUANTITIES}
     return out
 
 

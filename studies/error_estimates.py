@@ -208,6 +208,8 @@ def map_row(kind: str, M: float, L: float, coarse, fine) -> dict:
         row[f"{k}_estimate"] = est.get(k)
         row[f"{k}_method"] = (est.get("method") or {}).get(k)
         row[f"{k}_agree"] = agree(est.get(k), truth)
+        # the grid sequence behind the estimate, then the twice-finer solve
+        row[f"{k}_values"] = json.dumps((est.get("values") or {}).get(k, []) + [f])
     q = coarse.quantities
     qp = q["heat_power_poiseuille"]
     row["heat_poiseuille"] = qp
