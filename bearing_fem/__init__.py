@@ -15,21 +15,29 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-__version__ = "0.1.0"
+from .version import VERSION as __version__
 
 _LAZY = {
     "Scene": ("bearing_fem.scene", "Scene"),
     "SceneError": ("bearing_fem.errors", "SceneError"),
-    "solve": ("bearing_fem.solver", "solve"),
+    "solve": ("bearing_fem.contacts.dispatch", "solve"),
     "Result": ("bearing_fem.result", "Result"),
     "export": ("bearing_fem.io", "export"),
     "Bearing": ("bearing_fem.bearing", "Bearing"),
     "solve_bearing": ("bearing_fem.bearing", "solve_bearing"),
 }
-_SUBMODULES = {"kodnir", "thermal", "analytic", "formulas", "units", "rheology",
-               "elasticity", "reynolds", "newton", "post", "io", "plot", "scene",
-               "solver", "result", "errors", "bearing", "point", "transient",
-               "coupling", "traction", "line"}
+#: Short attribute names of the modules (``bf.kodnir.solve(...)``,
+#: ``bf.thermal.strip_source(...)``), imported on first use.
+_SUBMODULES = {
+    "analytic": "analytic", "formulas": "formulas", "units": "units", "scene": "scene",
+    "result": "result", "errors": "errors", "post": "post", "io": "io", "plot": "plot",
+    "bearing": "bearing", "physics": "physics", "numerics": "numerics",
+    "contacts": "contacts", "rheology": "physics.rheology", "reynolds": "physics.reynolds",
+    "elasticity": "physics.elasticity", "traction": "physics.traction",
+    "thermal": "physics.thermal", "newton": "numerics.newton", "line": "contacts.line",
+    "point": "contacts.point", "kodnir": "contacts.kodnir",
+    "transient": "contacts.transient", "coupling": "contacts.coupling",
+}
 
 
 def __getattr__(name: str) -> Any:
@@ -37,7 +45,7 @@ def __getattr__(name: str) -> Any:
         mod, attr = _LAZY[name]
         return getattr(importlib.import_module(mod), attr)
     if name in _SUBMODULES:
-        return importlib.import_module(f"bearing_fem.{name}")
+        return importlib.import_module(f"bearing_fem.{_SUBMODULES[name]}")
     raise AttributeError(f"module 'bearing_fem' has no attribute {name!r}")
 
 

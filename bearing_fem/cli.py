@@ -171,7 +171,7 @@ def _export(result: Any, outdir: Path) -> dict[str, Path]:
 
 
 def _solve_and_write(scene: Any, outdir: Path, png: Path | None = None) -> int:
-    from .solver import solve
+    from .contacts.dispatch import solve
 
     log.info("solving %r", getattr(scene, "title", ""))
     result = solve(scene)

@@ -36,7 +36,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-__all__ = ["export", "read_result", "scene_to_toml", "write_summary", "write_h5",
+__all__ = ["export", "export_series", "read_result", "scene_to_toml", "write_summary", "write_h5",
            "write_vtu", "FILES"]
 
 #: File names written by :func:`export`, keyed as in its returned dict.
@@ -333,6 +333,111 @@ def export(result: Any, outdir: str | Path) -> dict[str, Path]:
         stage.discard()
         raise
     return {key: outdir / name for key, name in FILES.items()}
+
+
+# ---------------------------------------------------------------------------------------
+# time series (squeeze series of point contacts)
+# ---------------------------------------------------------------------------------------
+def _series_mesh(result: Any) -> tuple[np.ndarray, np.ndarray]:
+    """Points (n, 3) and quad cells (m, 4) of a point result's (ny, nx) grid."""
+    pts, index = _grid(result)
+    if index is None:
+        raise ValueError("a squeeze series holds point-contact results (a 2D grid)")
+    quads = np.column_stack([index[:-1, :-1].ravel(), index[:-1, 1:].ravel(),
+                             index[1:, 1:].ravel(), index[1:, :-1].ravel()])
+    return pts, quads
+
+
+def _xdmf_item(h5name: str, path: str, shape: tuple[int, ...], kind: str) -> str:
+    number = "Int" if kind == "int" else "Float"
+    precision = "" if kind == "int" else ' Precision="8"'
+    dims = " ".join(str(d) for d in shape)
+    return (f'<DataItem DataType="{number}" Dimensions="{dims}" Format="HDF"{precision}>'
+            f"{h5name}:{path}</DataItem>")
+
+
+def export_series(series: Any, outdir: str | Path, name: str | None = None) -> dict[str, Path]:
+    """Write a squeeze series as VTU files with a PVD index and as one XDMF/HDF5 series.
+
+    Fields per node and step: ``pressure_Pa``, ``film_m``. Every file is written under a
+    temporary name and moved into place when all are complete (as :func:`export`).
+
+    Parameters
+    ----------
+    series : SqueezeSeries or ElasticSqueezeSeries
+        From :mod:`bearing_fem.contacts.series` or :mod:`bearing_fem.contacts.transient`
+        (``times`` [s] and one point-contact ``Result`` per step in ``results``).
+    outdir : str or Path
+        Output directory (created).
+    name : str, optional
+        Stem of the file names (default ``"elastic_squeeze"`` for elastic series,
+        ``"squeeze"`` for rigid ones).
+
+    Returns
+    -------
+    dict[str, Path]
+        ``{"pvd": ..., "xdmf": ..., "h5": ...}``.
+
+    Raises
+    ------
+    ValueError
+        If the series has no solved step.
+    """
+    import h5py
+    import meshio
+
+    if not series.results:
+        raise ValueError(f"nothing to export: the series has no solved step (status "
+                         f"{getattr(series, 'status', '?')!r}: {getattr(series, 'message', '')})")
+    if name is None:
+        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    points, quads = _series_mesh(series.results[0])
+    stage = _Staging(outdir)
+    final = {"pvd": outdir / f"{name}.pvd", "xdmf": outdir / f"{name}.xdmf",
+             "h5": outdir / f"{name}.h5"}
+    try:
+        entries, grids = [], []
+        h5name = final["h5"].name
+        with h5py.File(stage.temp(h5name), "w") as f:
+            f.create_dataset("points", data=points)
+            f.create_dataset("cells", data=quads.astype(np.int64))
+            for k, (t, r) in enumerate(zip(series.times, series.results)):
+                fname = f"{name}_{k:04d}.vtu"
+                data = {"pressure_Pa": np.ravel(r.pressure), "film_m": np.ravel(r.film)}
+                meshio.write(str(stage.temp(fname)), meshio.Mesh(points, [("quad", quads)],
+                                                                 point_data=data),
+                             file_format="vtu")
+                entries.append(f'    <DataSet timestep="{float(t):.9g}" part="0" '
+                               f'file="{fname}"/>')
+                attrs = []
+                for key, arr in data.items():
+                    f.create_dataset(f"{key}_{k:04d}", data=arr)
+                    attrs.append(f'<Attribute Name="{key}" AttributeType="Scalar" '
+                                 f'Center="Node">'
+                                 + _xdmf_item(h5name, f"/{key}_{k:04d}", arr.shape, "float")
+                                 + "</Attribute>")
+                grids.append(
+                    f'<Grid Name="step_{k:04d}" GridType="Uniform"><Time Value="{float(t):.17g}"/>'
+                    f'<Topology TopologyType="Quadrilateral" NumberOfElements="{len(quads)}">'
+                    + _xdmf_item(h5name, "/cells", quads.shape, "int") + "</Topology>"
+                    '<Geometry GeometryType="XYZ">'
+                    + _xdmf_item(h5name, "/points", points.shape, "float") + "</Geometry>"
+                    + "".join(attrs) + "</Grid>")
+        stage.temp(final["pvd"].name).write_text(
+            '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
+            "  <Collection>\n" + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n",
+            encoding="utf-8")
+        stage.temp(final["xdmf"].name).write_text(
+            '<?xml version="1.0"?>\n<Xdmf Version="3.0"><Domain>'
+            '<Grid Name="TimeSeries" GridType="Collection" CollectionType="Temporal">'
+            + "\n".join(grids) + "</Grid></Domain></Xdmf>\n", encoding="utf-8")
+        stage.commit()
+    except BaseException:
+        stage.discard()
+        raise
+    return final
 
 
 # ---------------------------------------------------------------------------------------

@@ -7,6 +7,7 @@ from typing import Any
 import numpy as np
 
 from .errors import SolveError
+from .version import VERSION
 
 #: Units of every dimensional summary key (line-contact values are per metre of length;
 #: the scene decides, see :func:`summary_units`).
@@ -16,7 +17,7 @@ _UNITS_POINT = {
     "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
     "heat_power_couette": "W", "heat_power_poiseuille": "W", "outlet_position": "m",
     "h_outlet": "m",
-    # thermal coupling (bearing_fem.coupling)
+    # thermal coupling (bearing_fem.contacts.coupling)
     "contact_temperature": "degC", "contact_temperature_rise": "K",
     "contact_temperature_rise_computed": "K", "contact_temperature_rise_mean": "K",
     "contact_temperature_rise_max": "K", "heat_power_direct": "W",
@@ -75,6 +76,9 @@ class Result:
     error_estimate : dict or None
         Estimated relative discretisation error of the main quantities (see
         :meth:`summary` and ``docs/accuracy.md``); None where no estimate was made.
+    traction_model : str or None
+        The shear-stress model of the sliding friction (``eyring-limiting``, ``eyring``,
+        ``limiting``, ``newtonian``), None where friction was not computed.
     """
 
     success: bool
@@ -95,6 +99,7 @@ class Result:
     extra_fields: dict[str, np.ndarray] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     error_estimate: dict[str, Any] | None = None
+    traction_model: str | None = None
 
     def __repr__(self) -> str:
         return (f"Result(message={self.message!r}, success={self.success}, "
@@ -120,8 +125,6 @@ class Result:
         A quantity that is undefined (e.g. a friction coefficient without a positive
         load) is ``None``, never NaN.
         """
-        from . import __version__
-
         kind = self.scene.contact.kind
         out: dict[str, Any] = {
             "status": self.status,
@@ -129,6 +132,9 @@ class Result:
             "message": self.message,
         }
         out.update({k: _number_or_none(v) for k, v in self.quantities.items()})
+        if "friction_force" in self.quantities:
+            out.setdefault("friction_coefficient", None)
+        out["traction_model"] = self.traction_model
         out["h0"] = float(self.h0)
         out["newton_iterations"] = int(self.newton_iterations)
         out["linear_solves"] = int(self.linear_solves)
@@ -138,7 +144,7 @@ class Result:
         out["error_estimate"] = None if self.error_estimate is None else dict(self.error_estimate)
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
         out["dimensionless"] = dimensionless_groups(self.scene)
-        out["version"] = __version__
+        out["version"] = VERSION
         out["scene"] = self.scene.to_dict()
         return out
 

@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from .errors import SceneError
+from .physics.traction import GENERIC_MINERAL_OIL, TRACTION_MODELS
 
 try:  # Python >= 3.11
     import tomllib
@@ -389,7 +390,7 @@ class Thermal:
         Body 2 values; None: same as body 1.
     source_model : {"jaeger", "fe"}
         Flash temperature of each body: closed-form high-Peclet Jaeger integral, or the
-        FE moving source (:func:`bearing_fem.thermal.moving_source`).
+        FE moving source (:func:`bearing_fem.physics.thermal.moving_source`).
     contact_temperature : {"mean", "max"}
         Which surface temperature rise sets eta0: the pressure-weighted mean or the maximum.
     max_iterations : int
@@ -470,30 +471,38 @@ class Thermal:
 
 @dataclass(frozen=True, kw_only=True)
 class Traction:
-    """Shear (traction) model of the sliding (Couette) stress; see ``docs/coupling.md``.
+    """Shear (traction) model of the sliding (Couette) stress (``docs/theory.md``,
+    "Traction").
+
+    A scene without this section uses, where the surfaces slide, the generic mineral-oil
+    model :data:`bearing_fem.physics.traction.GENERIC_MINERAL_OIL` and says so in the
+    result's warnings.
 
     Parameters
     ----------
-    model : {"newtonian", "eyring", "limiting"}
-        ``newtonian`` tau = eta u_s/h (default: what post-processing reports);
-        ``eyring`` tau = tau0 asinh(eta u_s/(h tau0));
-        ``limiting`` tau = min(eta u_s/h, tau_L0 + Lambda p).
+    model : {"eyring-limiting", "eyring", "limiting", "newtonian"}
+        ``eyring-limiting`` tau = min(tau0 asinh(eta u_s/(h tau0)), tau_L0 + Lambda p)
+        (default); ``eyring`` tau = tau0 asinh(eta u_s/(h tau0)); ``limiting``
+        tau = min(eta u_s/h, tau_L0 + Lambda p); ``newtonian`` tau = eta u_s/h
+        (unphysically large with Barus viscosity at GPa pressures: the result warns when
+        its friction coefficient exceeds 0.2).
     eyring_stress : float
-        Eyring stress tau0 [Pa] (typical oils 2..10 MPa).
+        Eyring stress tau0 [Pa] (mineral oils 2..10 MPa; default 5 MPa).
     limiting_shear_stress : float
-        tau_L0 [Pa], the limiting shear stress at p = 0.
+        tau_L0 [Pa], the limiting shear stress at p = 0 (default 2 MPa).
     limiting_slope : float
-        Lambda [-], pressure slope of the limiting shear stress (typical 0.05..0.1).
+        Lambda [-], pressure slope of the limiting shear stress (mineral oils 0.05..0.1;
+        default 0.075).
     """
 
     _section = "traction"
-    model: Literal["newtonian", "eyring", "limiting"] = "newtonian"
-    eyring_stress: float = 5.0e6
-    limiting_shear_stress: float = 2.0e6
-    limiting_slope: float = 0.075
+    model: Literal["eyring-limiting", "eyring", "limiting", "newtonian"] = "eyring-limiting"
+    eyring_stress: float = GENERIC_MINERAL_OIL["eyring_stress"]
+    limiting_shear_stress: float = GENERIC_MINERAL_OIL["limiting_shear_stress"]
+    limiting_slope: float = GENERIC_MINERAL_OIL["limiting_slope"]
 
     def __post_init__(self) -> None:
-        _choice(self, "model", ("newtonian", "eyring", "limiting"))
+        _choice(self, "model", TRACTION_MODELS)
         _positive(self, "eyring_stress", "Pa")
         _nonneg(self, "limiting_shear_stress", "Pa")
         _nonneg(self, "limiting_slope", "(dimensionless)")
@@ -531,7 +540,7 @@ class Scene:
     mesh: MeshSpec = field(default_factory=MeshSpec)
     solver: SolverSpec = field(default_factory=SolverSpec)
     thermal: Thermal | None = None
-    traction: Traction = field(default_factory=Traction)
+    traction: Traction | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.title, str):

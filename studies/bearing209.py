@@ -29,7 +29,7 @@ Scene and assumptions (stated, since the thesis leaves them implicit)
 * Full-Sommerfeld (Kapitsa), isothermal, rigid: the problem is LINEAR in the reduced
   pressure, q = eta0 [u_m q_w(h0(t)) + dh0/dt q_s(h0(t))], where q_w, q_s are the FE
   solutions for unit speed/viscosity and unit approach rate on the mesh of the gap
-  h0(t). The FE solver (:func:`bearing_fem.point.reduced_pressure_solve`) is run for
+  h0(t). The FE solver (:func:`bearing_fem.contacts.point.reduced_pressure_solve`) is run for
   q_w, q_s at each phase; every oil and speed is then a linear combination (exact).
   p_max = -ln(1 - alpha q_max)/alpha, or "no solution" when alpha q_max >= 1.
 
@@ -63,7 +63,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_fem.analytic import barus_from_reduced, kapitsa_point_max_reduced
-from bearing_fem.point import point_setup, reduced_pressure_solve
+from bearing_fem.contacts.point import point_setup, reduced_pressure_solve
 from bearing_fem.scene import Contact, Kinematics, Load, Lubricant, MeshSpec, Model, Scene
 
 BALL_DIAMETER = 12.7e-3          # m, D_w of bearing 209

@@ -2,7 +2,7 @@
 
 Question
 --------
-How close do the discrete compliance operators of ``bearing_fem.elasticity`` come to the
+How close do the discrete compliance operators of ``bearing_fem.physics.elasticity`` come to the
 Hertz closed forms (PHYSICS.md 5.3), how fast does the error fall with the grid, and what
 do building and applying them cost?
 
@@ -43,7 +43,7 @@ import numpy as np
 import scipy
 
 import bearing_fem
-from bearing_fem.elasticity import LINE_DENSE_AUTO_CAP, HalfSpaceLine, HalfSpacePoint
+from bearing_fem.physics.elasticity import LINE_DENSE_AUTO_CAP, HalfSpaceLine, HalfSpacePoint
 
 E_PRIME = 2.2e11     # Pa
 RADIUS = 0.01        # m

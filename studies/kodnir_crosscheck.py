@@ -1,7 +1,7 @@
 """Seed 000's friction and heat formulas against the general solver and post-processor.
 
 Question
-    Do seed 000's formulas (7)-(9) evaluated on a :func:`bearing_fem.kodnir.solve`
+    Do seed 000's formulas (7)-(9) evaluated on a :func:`bearing_fem.contacts.kodnir.solve`
     result (rolling friction w_k = (B h*/2) I, heat Q = U_sum (w_k + (U_s/U_sum)^2
     (B h*/6) J)) equal the general post-processor (PHYSICS.md section 6) applied to the
     equivalent dimensional problem solved independently by the general line solver?
@@ -12,7 +12,7 @@ Scene
     alpha = (B alpha)/B, Kodnir's local compliance c = C h*/B [m/Pa], and the rigid offset
     h0 = h* (1 - z_a^2) from the Kodnir solution. The dimensional problem (x along the
     motion, Reynolds cavitation by Fischer-Burmeister, SUPG, local compliance, prescribed
-    gap h0) is solved by :class:`bearing_fem.line.LineProblem` with damped Newton,
+    gap h0) is solved by :class:`bearing_fem.contacts.line.LineProblem` with damped Newton,
     started from the Kodnir pressure interpolated to its own grid; friction and heat come
     from :func:`bearing_fem.post.friction_and_heat`.
 
@@ -32,12 +32,15 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fem import kodnir, post
-from bearing_fem.elasticity import LocalCompliance
-from bearing_fem.line import LineDiscretisation, LineProblem
-from bearing_fem.newton import damped_newton
-from bearing_fem.rheology import barus
-from bearing_fem.reynolds import FluxModel
+from bearing_fem.contacts import kodnir
+
+from bearing_fem import post
+from bearing_fem.physics.elasticity import LocalCompliance
+from bearing_fem.contacts.line import LineDiscretisation, LineProblem
+from bearing_fem.numerics.newton import damped_newton
+from bearing_fem.physics.rheology import barus
+from bearing_fem.physics.reynolds import FluxModel
+from bearing_fem.scene import Traction
 
 C_VALUES = (0.6, 1.0, 5.0, 10.0, 40.0)
 B_ALPHA_VALUES = (0.0, 4.5, 7.0, 12.0)
@@ -75,7 +78,11 @@ def crosscheck(C: float, b_alpha: float, nodes: int = 2001, z_b: float = 20.0) -
     outlet = post.outlet_position_line(disc.x, p, "reynolds")
     ind = post.full_film_indicator_line(ops.points[0], outlet)
     load = float(ops.mass @ p)
-    gen = post.friction_and_heat(ops, h, (px,), flux.viscosity(pq), U_S, ind, load)
+    # the paper's formulas are Newtonian: the same traction here
+    gen, _, _ = post.friction_and_heat(ops, h, (px,), flux.viscosity(pq), pq,
+                                       mean_speed=U_SUM / 2, sliding_speed=U_S,
+                                       indicator_q=ind, load=load, gross_load=load,
+                                       traction=Traction(model="newtonian"))
     k_load = B * B1 * float(np.trapezoid(k_res.k, k_res.z))
     seed = kodnir.kodnir_friction_heat(k_res, H_STAR, B, k_load, U_SUM, U_S)
     out.update({

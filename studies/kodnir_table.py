@@ -1,7 +1,7 @@
 """Study: seed 000's dimensionless boundary problem over the Ratner range, by FE.
 
 Question
-    Does the FE solver (``bearing_fem.kodnir.solve``: P1, SUPG, Fischer-Burmeister
+    Does the FE solver (``bearing_fem.contacts.kodnir.solve``: P1, SUPG, Fischer-Burmeister
     cavitation, flux condition, continuation) solve every case of the grid
     C in {0.6, 1, 5, 10, 40} x B alpha in {0, 4.5, 7, 12} at z_b = 20, where the seed's
     shooting method failed for many (B alpha, C)? What are z_a, k_max, H_min, I and J, and
@@ -23,7 +23,9 @@ import sys
 import time
 from pathlib import Path
 
-from bearing_fem import __version__, kodnir
+from bearing_fem import __version__
+
+from bearing_fem.contacts import kodnir
 
 C_VALUES = [0.6, 1.0, 5.0, 10.0, 40.0]
 B_ALPHA_VALUES = [0.0, 4.5, 7.0, 12.0]

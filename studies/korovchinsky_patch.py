@@ -1,7 +1,7 @@
 """Study: accuracy and cost of the Korovchinsky thermal FE patch.
 
 Question
-    How accurately does ``bearing_fem.thermal.strip_source`` reproduce the corrected
+    How accurately does ``bearing_fem.physics.thermal.strip_source`` reproduce the corrected
     Korovchinsky half-plane field (PHYSICS.md 5.4), how large is the error caused by
     truncating the half-plane at radius R under each far-field condition, and what does a
     solve cost?
@@ -34,7 +34,9 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fem import __version__, analytic as A, thermal as th
+from bearing_fem import __version__, analytic as A
+
+from bearing_fem.physics import thermal as th
 
 A_HALF, Q_MAX, LAM = 1.0e-4, 1.0e8, 40.0
 SURFACE_X = [0.5, 1.0, 1.5, 2.0, 3.0]

@@ -63,7 +63,7 @@ def scene_for(M: float, L: float, nodes: int | None = None, u_sum_isoviscous: fl
 
 def default_nodes(M: float, L: float) -> int:
     """Node count of the solver's own default mesh for case (M, L)."""
-    from bearing_fem.solver import line_setup
+    from bearing_fem.contacts.line import line_setup
 
     return int(line_setup(scene_for(M, L)).disc.x.size)
 

@@ -3,8 +3,8 @@
 Question
     The Reynolds equation of an EHL contact degenerates to pure advection where the
     viscosity is huge, and needs stabilisation. Which of the two stabilisations in
-    :mod:`bearing_fem.reynolds` (SUPG on the whole strong residual, or the first-order
-    upwinded wedge term, :class:`~bearing_fem.reynolds.UpwindFluxModel`) converges on fine
+    :mod:`bearing_fem.physics.reynolds` (SUPG on the whole strong residual, or the first-order
+    upwinded wedge term, :class:`~bearing_fem.physics.reynolds.UpwindFluxModel`) converges on fine
     grids, at what cost, and do they agree on h_central and h_min?
 
 Scene
@@ -28,7 +28,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import bearing_fem as bf  # noqa: E402
-from bearing_fem import solver  # noqa: E402
+from bearing_fem.contacts import line as solver  # noqa: E402
 from line_ehl_map import scene_for  # noqa: E402
 
 CASES = ((100.0, 10.0), (20.0, 5.0))

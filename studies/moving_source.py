@@ -2,7 +2,7 @@
 
 Question
     How close is the flash-temperature coefficient T_max sqrt(K rho c V)/(q sqrt b) of the
-    FE convection-diffusion solution (``bearing_fem.thermal.moving_source``) to Jaeger's
+    FE convection-diffusion solution (``bearing_fem.physics.thermal.moving_source``) to Jaeger's
     high-Peclet value 2 sqrt(2/pi) = 1.596 (uniform band, half-length b) as a function of
     Pe = V b/(2 kappa), and where does the maximum under a semi-elliptic (Hertzian) flux
     sit compared with Blok's location (computed from the high-Pe integral, ~0.652 b)?
@@ -31,7 +31,9 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from bearing_fem import __version__, analytic as A, thermal as th
+from bearing_fem import __version__, analytic as A
+
+from bearing_fem.physics import thermal as th
 
 B, Q_MAX, K, RHO, CP = 1.0e-4, 1.0e8, 40.0, 7800.0, 460.0
 KAPPA = K / (RHO * CP)

@@ -55,8 +55,8 @@ from scipy.optimize import brentq
 from bearing_fem.bearing import (Bearing, cylindrical_roller_contacts, distribute_loads,
                                  load_example, max_line_load, palmgren_heat_power,
                                  solve_bearing)
-from bearing_fem.coupling import contact_piezo, solve_thermal
-from bearing_fem.rheology import prokofiev
+from bearing_fem.contacts.coupling import contact_piezo, solve_thermal
+from bearing_fem.physics.rheology import prokofiev
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model,
                                Scene, Thermal, Traction)
 

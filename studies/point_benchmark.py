@@ -3,7 +3,7 @@
 Question
 --------
 How do wall time, Newton iterations, time per Newton iteration and peak memory of
-:func:`bearing_fem.point.solve_point` grow from 65^2 to 513^2 nodes?
+:func:`bearing_fem.contacts.point.solve_point` grow from 65^2 to 513^2 nodes?
 
 Scene
 -----
@@ -42,8 +42,8 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fem import point
-from bearing_fem.point import solve_point
+from bearing_fem.contacts import point
+from bearing_fem.contacts.point import solve_point
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from point_ehl_map import moes_scene  # noqa: E402

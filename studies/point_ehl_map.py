@@ -4,7 +4,7 @@ Hamrock-Dowson.
 
 Question
 --------
-Does the elastic point-contact solver (:func:`bearing_fem.point.solve_point`: Newton on
+Does the elastic point-contact solver (:func:`bearing_fem.contacts.point.solve_point`: Newton on
 (p, h0), Fischer-Burmeister cavitation, FFT half-space, GMRES) converge without tuning
 for M in {20, 50, 100, 200, 500} and L in {5, 10, 20} with alpha p_h <= 40? Is h_c
 grid-converged at 257^2 (change from 257^2 to the next finer grid, 513^2, below 1%), within 10% of the
@@ -39,7 +39,7 @@ import time
 from pathlib import Path
 
 from bearing_fem.formulas import point_central_film_nvm, point_films_hamrock_dowson
-from bearing_fem.point import solve_point
+from bearing_fem.contacts.point import solve_point
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Scene, SolverSpec)
 from bearing_fem.units import moes_point, point_scene_parameters_from_moes

@@ -29,7 +29,7 @@ Scene (stated, since the thesis is rigid)
 
 Three series on the same instants:
 
-1. rigid quasi-steady (``bearing_fem.point.solve_squeeze_series``, graded 121^2 grid);
+1. rigid quasi-steady (``bearing_fem.contacts.point.solve_squeeze_series``, graded 121^2 grid);
 2. elastic quasi-steady (``scheme="quasi-steady"``: each instant a steady elastic solve
    with the squeeze source dh0/dt, no dv/dt): the elastic deformation without memory;
 3. elastic transient (BDF2): deformation and memory.
@@ -55,10 +55,11 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from bearing_fem.point import solve_squeeze_series
+import bearing_fem as bf
+from bearing_fem.contacts.series import solve_squeeze_series
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene)
-from bearing_fem.transient import (ELASTIC_GAP_RANGE_REYNOLDS, solve_elastic_gap,
+from bearing_fem.contacts.transient import (ELASTIC_GAP_RANGE_REYNOLDS, solve_elastic_gap,
                                    solve_elastic_squeeze_series)
 
 BALL_DIAMETER = 12.7e-3                  # m, D_w of bearing 209
@@ -224,7 +225,8 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
                         float(np.max(np.abs(s_tr.p_max - s_qs.p_max)) / np.max(s_qs.p_max)),
                     "seconds": time.perf_counter() - clock}
 
-    paths = tr.export(outdir / "series", name="elastic_squeeze")
+    paths = {k: str(v) for k, v in bf.io.export_series(tr, outdir / "series",
+                                                       name="elastic_squeeze").items()}
     header = (f"{'k':>3} {'t us':>7} {'h0 nm':>6} {'p_max MPa':>9} {'h_min nm':>8} "
               f"{'h_c nm':>7} {'F N':>6} {'its':>3} {'s':>5} {'qs MPa':>7} {'rigid MPa':>9}")
     lines = [header]

@@ -57,7 +57,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from point_ehl_map import _formulas, map_cases, moes_scene  # noqa: E402
 
-from bearing_fem.point import solve_point  # noqa: E402
+from bearing_fem.contacts.point import solve_point  # noqa: E402
 
 #: Settings tried for the multigrid program, in order: (start level, cycles per level,
 #: cycle type 1 = V, 2 = W). Six W cycles close the force balance best (|g| ~ 1e-6);

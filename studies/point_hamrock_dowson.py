@@ -31,7 +31,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bearing_fem.formulas import point_films_hamrock_dowson  # noqa: E402
-from bearing_fem.point import point_setup, solve_point  # noqa: E402
+from bearing_fem.contacts.point import point_setup, solve_point  # noqa: E402
 from bearing_fem.scene import MeshSpec  # noqa: E402
 from point_ehl_map import moes_scene  # noqa: E402
 

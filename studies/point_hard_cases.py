@@ -2,7 +2,7 @@
 
 Question
 --------
-Does :func:`bearing_fem.point.solve_point` converge, with its defaults and no per-case
+Does :func:`bearing_fem.contacts.point.solve_point` converge, with its defaults and no per-case
 setting, on the three circular cases where a published multigrid EHL code (C, Barus
 viscosity) returned NaN or diverged on 512 x 512 unless its coarsest start level was
 tuned by hand: M = 200, L = 10; M = 1000, L = 10; M = 50, L = 20? How grid-converged is

@@ -89,7 +89,7 @@ def test_demo_writes_four_files(tmp_path, monkeypatch, capsys):
 
 def test_demo_out_option(tmp_path, monkeypatch):
     """--out is honoured (the solve itself is replaced: covered by the test above)."""
-    import bearing_fem.solver
+    import bearing_fem.contacts.dispatch
     from bearing_fem.result import Result
 
     def fake_solve(scene):
@@ -99,7 +99,7 @@ def test_demo_out_option(tmp_path, monkeypatch):
         return Result(success=True, status="converged", message="fake", scene=scene, x=x,
                       pressure=np.zeros_like(x), film=np.full_like(x, 1e-6), h0=1e-6)
 
-    monkeypatch.setattr(bearing_fem.solver, "solve", fake_solve)
+    monkeypatch.setattr(bearing_fem.contacts.dispatch, "solve", fake_solve)
     out = tmp_path / "elsewhere"
     assert cli.main(["demo", "--out", str(out)]) == 0
     assert sorted(p.name for p in out.iterdir()) == sorted(

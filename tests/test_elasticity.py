@@ -1,4 +1,4 @@
-"""Tests of the compliance operators (bearing_fem.elasticity).
+"""Tests of the compliance operators (bearing_fem.physics.elasticity).
 
 Oracles: the Hertz dry limits of PHYSICS.md 5.3 (closed forms evaluated here, nothing
 tabulated), independent quadrature of the influence integrals, a direct O(N^2) double
@@ -15,7 +15,7 @@ import pytest
 import scipy.integrate
 import scipy.sparse
 
-from bearing_fem.elasticity import (
+from bearing_fem.physics.elasticity import (
     DENSE_POINT_CAP,
     HalfSpaceLine,
     HalfSpacePoint,

@@ -1,4 +1,4 @@
-"""Tests of bearing_fem.kodnir: seed 000's dimensionless problem (4)-(6) by FE.
+"""Tests of bearing_fem.contacts.kodnir: seed 000's dimensionless problem (4)-(6) by FE.
 
 Oracles are computed here from closed forms (Martin, Kapitsa/Barus transform), never
 hard-coded. Grids are small so the whole file runs in well under a minute.
@@ -13,7 +13,7 @@ from scipy.integrate import quad
 
 import bearing_fem as bf
 from bearing_fem import analytic as A
-from bearing_fem import kodnir as K
+from bearing_fem.contacts import kodnir as K
 
 NODES, COARSE = 1201, 201
 

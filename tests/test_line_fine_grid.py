@@ -1,5 +1,5 @@
 """Half-space line contacts on fine grids: the upwinded wedge flux, grid sequencing and
-the reuse of LU factors as a GMRES preconditioner (bearing_fem.reynolds, line, solver)."""
+the reuse of LU factors as a GMRES preconditioner (bearing_fem.physics.reynolds, line, solver)."""
 from __future__ import annotations
 
 import sys
@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 import bearing_fem as bf
-from bearing_fem import line, solver
-from bearing_fem.reynolds import FluxModel, UpwindFluxModel
+from bearing_fem.contacts import line
+from bearing_fem.physics.reynolds import FluxModel, UpwindFluxModel
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "studies"))
 from line_ehl_map import scene_for  # noqa: E402
@@ -83,9 +83,10 @@ def test_fine_grid_converges_with_sequencing_and_reuse(monkeypatch):
 def test_reused_step_equals_direct_step():
     """The GMRES step preconditioned by stale factors equals the direct LU step."""
     scene = scene_for(100, 10, 401)
-    setup = solver.line_setup(scene)
-    prob = solver._make_problem(scene, setup, (0.0, 0.0))
-    z0 = solver._initial_guess(scene, setup, prob)
+    model = line.LineModel(scene)
+    setup = model.setup
+    prob = model.problem(setup)
+    z0 = model.initial_guess(setup, prob)
     prob.prepare(z0)
     prob.newton_step(z0)  # factorises at z0
     z1 = z0 + 0.05 * prob.newton_step(z0)
@@ -105,16 +106,16 @@ def test_default_mesh_density_grows_with_moes_load():
     narrows with load); the domain [-4.5 b, 1.5 b] is the same for these cases."""
     per_b = {}
     for M in (100, 250, 1000):
-        setup = solver.line_setup(scene_for(M, 2))
+        setup = line.line_setup(scene_for(M, 2))
         x = setup.disc.x / setup.x_unit
         np.testing.assert_allclose((x[0], x[-1]), (-4.5, 1.5), rtol=1e-12,
                                    err_msg="fully flooded default domain")
         per_b[M] = 1.0 / (x[1] - x[0])
-    np.testing.assert_allclose(per_b[100], solver.NODES_PER_HALF_WIDTH, rtol=2e-3,
+    np.testing.assert_allclose(per_b[100], line.NODES_PER_HALF_WIDTH, rtol=2e-3,
                                err_msg="base density (odd node count rounding)")
     np.testing.assert_allclose(per_b[250], per_b[100], rtol=0, atol=1e-9,
                                err_msg="no refinement up to M = 250")
-    np.testing.assert_allclose(per_b[1000], 2.0 * solver.NODES_PER_HALF_WIDTH, rtol=2e-3,
+    np.testing.assert_allclose(per_b[1000], 2.0 * line.NODES_PER_HALF_WIDTH, rtol=2e-3,
                                err_msg="sqrt(1000/250) = 2")
 
 
@@ -122,10 +123,10 @@ def _element_poiseuille(reduced: bool, p_left: float, p_right: float):
     """Poiseuille flux integrated over one element [0, dx] with a uniform film, M = 5,
     L = 15 lubricant (alpha p_h = 13.4) and its Hertz pressure [Pa] (int F dx, m^3/s)."""
     scene = scene_for(5, 15)
-    setup = solver.line_setup(scene)
+    setup = line.line_setup(scene)
     disc = line.LineDiscretisation.uniform(0.0, 1e-6, 2)
     ops = disc.ops
-    flux = solver._make_problem(scene, setup, (0.0, 0.0)).flux
+    flux = line.LineModel(scene).problem(setup).flux
     if not reduced:
         flux = replace(flux, reduced_alpha=None)
     p = np.array([p_left, p_right]) * setup.p_ref
@@ -162,10 +163,11 @@ def test_reduced_poiseuille_jacobian_matches_central_differences():
     """LineProblem with the reduced-pressure Poiseuille term: J v equals the central
     difference of the residual (the q'(p_j) column term included)."""
     scene = scene_for(5, 15, 301)
-    setup = solver.line_setup(scene)
-    prob = solver._make_problem(scene, setup, (0.0, 0.0))
+    model = line.LineModel(scene)
+    setup = model.setup
+    prob = model.problem(setup)
     assert prob.flux.reduced_alpha, "Barus half-space line scene uses the reduced term"
-    z = solver._initial_guess(scene, setup, prob)
+    z = model.initial_guess(setup, prob)
     z = z + 0.01 * np.random.default_rng(3).standard_normal(z.size)
     prob.prepare(z)
     j = prob.jacobian(z)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from bearing_fem.plot import plot_result
-from bearing_fem.point import solve_point
+from bearing_fem.contacts.point import solve_point
 from bearing_fem.scene import Contact, Kinematics, Load, Lubricant, MeshSpec, Model, Scene
 
 
@@ -39,7 +39,7 @@ def test_matplotlib_fallback(point_result, tmp_path, monkeypatch):
 
 
 def test_line_result_png(tmp_path):
-    from bearing_fem.solver import solve
+    from bearing_fem.contacts.dispatch import solve
 
     scene = Scene(contact=Contact(kind="line", rx=0.01), lubricant=Lubricant(viscosity=0.01),
                   kinematics=Kinematics(u1=1.0, u2=1.0), load=Load(gap=1e-6),

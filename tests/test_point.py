@@ -1,4 +1,4 @@
-"""Point/elliptical contacts (bearing_fem.point): Kapitsa oracles, convergence, status.
+"""Point/elliptical contacts (bearing_fem.contacts.point): Kapitsa oracles, convergence, status.
 
 The rigid oracles (PHYSICS.md 5.1) are imposed as Dirichlet data on the finite domain,
 so only the discretisation error is measured.
@@ -12,8 +12,10 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
+import bearing_fem as bf
 from bearing_fem import analytic as an
-from bearing_fem.point import PointGrid, solve_point
+from bearing_fem.contacts.point import solve_point
+from bearing_fem.contacts.point_grid import PointGrid
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene, SolverSpec)
 
@@ -125,7 +127,7 @@ def test_bad_input():
 
 
 def test_squeeze_series_matches_kapitsa(tmp_path):
-    from bearing_fem.point import solve_squeeze_series
+    from bearing_fem.contacts.series import solve_squeeze_series
 
     rx, ry = 0.01, 0.02
     eps = 0.3
@@ -141,7 +143,7 @@ def test_squeeze_series_matches_kapitsa(tmp_path):
                                            "zero boundary data on +-30 contact lengths "
                                            "truncates the 1/r^3 far field)")
     np.testing.assert_allclose(series.gap, H0 * (1 + eps * np.cos(omega * series.times)))
-    paths = series.export(tmp_path / "series")
+    paths = {k: str(v) for k, v in bf.io.export_series(series, tmp_path / "series").items()}
     import meshio
 
     assert "DataSet" in open(paths["pvd"]).read()
@@ -223,7 +225,7 @@ def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
     # The y-symmetric scene is solved on its half y >= 0 and mirrored; the same scene on
     # the whole grid must give the same Newton history and fields, and the reported
     # residual is the whole grid's.
-    import bearing_fem.point as pt
+    import bearing_fem.contacts.point as pt
 
     scene = _moes_scene(100, 10, 65, ry_over_rx)
     half = solve_point(scene)
@@ -248,16 +250,15 @@ def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
 
 
 def test_half_grid_needs_a_symmetric_scene():
-    import bearing_fem.point as pt
+    import bearing_fem.contacts.point as pt
 
     scene = _moes_scene(100, 10, 65)
-    setup = pt.point_setup(scene)
-    assert pt._symmetric(scene, setup, None)
-    assert not pt._symmetric(scene, setup, lambda x, y: 0.0 * x), "Dirichlet data given"
+    assert pt.PointModel(scene).symmetric
+    assert not pt.PointModel(scene, lambda x, y: 0.0 * x).symmetric, "Dirichlet data given"
     even = dataclasses.replace(scene, mesh=MeshSpec(nodes=(65, 64)))
-    assert not pt._symmetric(even, pt.point_setup(even), None), "no node row at y = 0"
+    assert not pt.PointModel(even).symmetric, "no node row at y = 0"
     shifted = dataclasses.replace(scene, mesh=MeshSpec(nodes=(65, 65), y_range=(-3.0, 2.5)))
-    assert not pt._symmetric(shifted, pt.point_setup(shifted), None), "asymmetric range"
+    assert not pt.PointModel(shifted).symmetric, "asymmetric range"
     with pytest.raises(ValueError, match="y_range symmetric"):
         pt.point_setup(shifted, symmetric=True)
 
@@ -383,7 +384,7 @@ def test_quadrature_operators_equal_coo_assembly(kind):
     from skfem import (CellBasis, ElementLineP2, ElementQuad1, ElementTriP1, MeshLine,
                        MeshQuad, MeshTri)
 
-    from bearing_fem.fe import quadrature_operators
+    from bearing_fem.numerics.fe import quadrature_operators
 
     basis = {"quad": lambda: CellBasis(MeshQuad.init_tensor(np.linspace(0, 1, 7),
                                                             np.linspace(0, 2, 5)),
@@ -440,7 +441,7 @@ def test_element_assembler_matches_sparse_products():
 
 @pytest.mark.parametrize("nx, ny", [(1, 1), (7, 5), (30, 17)])
 def test_nested_dissection_is_a_separator_order(nx, ny):
-    from bearing_fem.point import nested_dissection
+    from bearing_fem.contacts.point_grid import nested_dissection
 
     perm = nested_dissection(nx, ny, leaf=2)
     assert np.array_equal(np.sort(perm), np.arange(nx * ny))
@@ -449,11 +450,12 @@ def test_nested_dissection_is_a_separator_order(nx, ny):
 def test_preconditioner_fast_path_equals_sparse_products():
     # the gathered, dissected LU solves the same matrix as the sparse-product fallback
     scene = _moes_scene(100, 10, 17)
-    import bearing_fem.point as bp
+    import bearing_fem.contacts.point as bp
 
-    setup = bp.point_setup(scene)
-    prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
-    z = bp._initial_guess(scene, setup, prob)
+    model = bp.PointModel(scene)
+    level = model.level(model.fine_nodes, half=False)
+    prob = model.problem(level)
+    z = model.initial_guess(level, prob)
     prob.prepare(z)
     a_p, a_h, _, row_factor, da = prob._blocks(z)
     scale = row_factor * prob.p_ref
@@ -477,15 +479,15 @@ def _flux_inputs(seed: int, n: int = 500):
 def test_upwind_flux_derivatives_match_complex_step():
     from dataclasses import replace
 
-    import bearing_fem.point as bp
-    from bearing_fem.reynolds import FluxModel
+    import bearing_fem.contacts.point as bp
+    from bearing_fem.physics.reynolds import FluxModel
 
     scene = _moes_scene(100, 10, 17)
     setup = bp.point_setup(scene)
     p, h, gp, gh, _ = _flux_inputs(1)
     dx = np.full(p.size, 1e-5)
     for law in ({}, {"density": "dowson-higginson"}, {"viscosity_law": "roelands"}):
-        flux = bp._flux(replace(scene, lubricant=replace(scene.lubricant, **law)), setup)
+        flux = bp.flux_model(replace(scene, lubricant=replace(scene.lubricant, **law)), setup)
         fast = flux.flux_and_derivatives(p, h, gp, gh, dx)
         ref = FluxModel.flux_and_derivatives(flux, p, h, gp, gh, dx)  # complex step for all
         for k in (0, 1):
@@ -506,11 +508,11 @@ def test_upwind_flux_derivatives_match_complex_step():
 def test_reduced_flux_derivatives_match_complex_step():
     # the reduced-pressure flux used by elastic point contacts: d/dp (complex step inside)
     # and the analytic d/dh against a complex step of the flux at fixed gradients
-    import bearing_fem.point as bp
-    from bearing_fem.reynolds import _STEP
+    import bearing_fem.contacts.point as bp
+    from bearing_fem.physics.reynolds import _STEP
 
     scene = _moes_scene(100, 10, 17)
-    flux = bp._flux(scene, bp.point_setup(scene))
+    flux = bp.flux_model(scene, bp.point_setup(scene))
     assert flux.reduced_alpha and flux.upwind_compliance > 0.0, "Peclet fade-out tested"
     p, h, gp, gh, rng = _flux_inputs(2)
     n = p.size
@@ -533,14 +535,15 @@ def test_reduced_flux_derivatives_match_complex_step():
 def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
     # the Jacobian (element assembly, column scaling by dq/dp, FFT compliance) against
     # central differences of the residual, GMRES solved to 1e-9 (no inexact forcing)
-    import bearing_fem.point as bp
+    import bearing_fem.contacts.point as bp
 
     monkeypatch.setattr(bp, "GMRES_FORCING_MAX", 0.0)
     scene = _moes_scene(100, 10, 33)
-    setup = bp.point_setup(scene)
-    prob = bp._make_problem(scene, setup, bp._boundary_values(setup.grid, None), 0.0)
+    model = bp.PointModel(scene)
+    level = model.level(model.fine_nodes, half=False)
+    prob = model.problem(level)
     assert prob.flux.reduced_alpha == scene.lubricant.piezo
-    z = bp._initial_guess(scene, setup, prob)
+    z = model.initial_guess(level, prob)
     prob.prepare(z)
     f = prob.residual(z)
     dz = prob.newton_step(z)
@@ -557,15 +560,15 @@ def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
 
 
 def test_xi_complex_step_equals_analytic_derivative():
-    from bearing_fem.reynolds import _coth_minus_inverse
+    from bearing_fem.physics.reynolds import upwind_factor
 
     x = np.array([-50.0, -3.0, -1e-3, 0.0, 1e-3, 0.5, 2.0, 39.0, 41.0, 1e3])
     s = 1e-20
-    d = np.imag(_coth_minus_inverse(x + 1j * s)) / s
+    d = np.imag(upwind_factor(x + 1j * s)) / s
     xm = x[(np.abs(x) >= 1e-2) & (np.abs(x) <= 40)]
     exact = 1 / xm**2 - 1 / np.sinh(xm) ** 2
     np.testing.assert_allclose(d[(np.abs(x) >= 1e-2) & (np.abs(x) <= 40)], exact, rtol=1e-10,
                                err_msg="xi' = 1/x^2 - 1/sinh^2 x")
-    np.testing.assert_allclose(np.real(_coth_minus_inverse(x + 1j * s)),
-                               _coth_minus_inverse(x), rtol=0, atol=0,
+    np.testing.assert_allclose(np.real(upwind_factor(x + 1j * s)),
+                               upwind_factor(x), rtol=0, atol=0,
                                err_msg="real part of the complex step is the real value")

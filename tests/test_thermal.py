@@ -1,4 +1,4 @@
-"""Tests of the thermal FE patch (bearing_fem.thermal) and its oracles (analytic Section B).
+"""Tests of the thermal FE patch (bearing_fem.physics.thermal) and its oracles (analytic Section B).
 
 Oracles are computed from the closed forms in PHYSICS.md 5.4 (bearing_fem.analytic);
 no reference number is typed in. Every tolerance states its reason.
@@ -10,7 +10,7 @@ import pytest
 from scipy.integrate import quad
 
 from bearing_fem import analytic as A
-from bearing_fem import thermal as th
+from bearing_fem.physics import thermal as th
 
 # a steel-like contact: a = 0.1 mm, q_max = 100 MW/m^2, lambda = 40 W/(m K) -> T_n = 250 K
 A_HALF = 1.0e-4

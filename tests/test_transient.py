@@ -1,4 +1,4 @@
-"""Elastic transient squeeze (bearing_fem.transient): rigid limit vs Kapitsa, time order,
+"""Elastic transient squeeze (bearing_fem.contacts.transient): rigid limit vs Kapitsa, time order,
 steady limit, Jacobian of the time terms, status contract, bad input.
 
 Grids are coarse (25^2 to 57^2) to keep the module fast; every tolerance says why.
@@ -11,11 +11,12 @@ import pathlib
 import numpy as np
 import pytest
 
+import bearing_fem as bf
 from bearing_fem import analytic as an
 from bearing_fem.errors import SceneError
 from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,
                                Model, Scene)
-from bearing_fem.transient import (BDF_COEFFICIENTS, solve_elastic_gap,
+from bearing_fem.contacts.transient import (BDF_COEFFICIENTS, solve_elastic_gap,
                                    solve_elastic_squeeze_series)
 
 U_M = 1.0                 # m/s
@@ -79,7 +80,7 @@ def test_stiff_transient_reproduces_kapitsa_each_step(tmp_path):
         f"cost cap: the stiff problem is nearly linear, got {series.newton_iterations}")
     assert np.all(np.isfinite(series.p_max))
 
-    paths = series.export(tmp_path / "stiff")
+    paths = {k: str(v) for k, v in bf.io.export_series(series, tmp_path / "stiff").items()}
     import meshio
 
     assert paths["pvd"].endswith(".pvd") and "DataSet" in open(paths["pvd"]).read()
@@ -143,7 +144,7 @@ def test_zero_amplitude_gives_steady_solution_every_step():
 # (d) consistency: steady gap solve vs the load-controlled solver; exact time Jacobian
 # ---------------------------------------------------------------------------------------
 def test_steady_gap_solution_matches_load_controlled_solver():
-    from bearing_fem.point import solve_point
+    from bearing_fem.contacts.point import solve_point
     from bearing_fem.units import hertz_point
 
     sc = scene(cavitation="reynolds")
@@ -173,8 +174,8 @@ def test_newton_step_consistent_with_time_residual(monkeypatch):
     # The time terms of the Jacobian (rho' h and rho C, Fischer-Burmeister rows) are exact:
     # along the Newton direction dz, F(z + d dz) - F(z - d dz) = -2 d F(z) to O(d^2) and
     # the GMRES tolerance.
-    from bearing_fem import point
-    from bearing_fem.transient import _make_step_problem, elastic_gap_setup
+    from bearing_fem.contacts import point
+    from bearing_fem.contacts.transient import _make_step_problem, elastic_gap_setup
 
     # the solver's inexact Newton loosens GMRES to |F| far from the solution; this check
     # needs the exact step, so GMRES runs to its tight tolerance
@@ -206,14 +207,15 @@ def test_newton_step_consistent_with_time_residual(monkeypatch):
 # status contract and bad input
 # ---------------------------------------------------------------------------------------
 def test_failed_step_stops_series_with_status(monkeypatch):
-    import bearing_fem.transient as tr
+    import bearing_fem.contacts.transient as tr
 
     real = tr.damped_newton
     calls = {"n": 0}
 
     def failing_after_three(problem, z0, **kw):
+        # the steady start (step 0) is solved by the shared driver, the time steps here
         calls["n"] += 1
-        if calls["n"] > 3:  # steps >= 3: no iteration allowed -> max_iterations
+        if calls["n"] > 2:  # steps >= 3: no iteration allowed -> max_iterations
             kw["max_iterations"] = 0
         return real(problem, z0, **kw)
 
@@ -231,11 +233,11 @@ def test_failed_step_stops_series_with_status(monkeypatch):
 def test_start_falls_back_to_compliance_continuation(monkeypatch):
     # If the direct Newton solve of the steady start fails, the start is reached by
     # continuation in the compliance 1/E' (rigid -> elastic) and is the same solution.
-    import bearing_fem.transient as tr
+    import bearing_fem.contacts.driver as driver
 
     sc = scene(nodes=25, cavitation="reynolds")
     direct = solve_elastic_gap(sc)
-    real = tr.damped_newton
+    real = driver.damped_newton
     calls = {"n": 0}
 
     def first_attempt_fails(problem, z0, **kw):
@@ -244,11 +246,13 @@ def test_start_falls_back_to_compliance_continuation(monkeypatch):
             kw["max_iterations"] = 0
         return real(problem, z0, **kw)
 
-    monkeypatch.setattr(tr, "damped_newton", first_attempt_fails)
+    monkeypatch.setattr(driver, "damped_newton", first_attempt_fails)
     res = solve_elastic_gap(sc)
     assert res.status == "converged", res.message
     assert "continuation in compliance" in res.message
-    assert res.continuation[0][0] == 0.0 and res.continuation[-1][0] == 1.0
+    assert res.continuation[0][:2] == (1.0, "max_iterations (25x25 nodes)"), \
+        "the failed direct attempt comes first"
+    assert res.continuation[1][0] == 0.0 and res.continuation[-1][0] == 1.0
     np.testing.assert_allclose(res.pressure, direct.pressure, rtol=0,
                                atol=1e-6 * direct.quantities["p_max"],
                                err_msg="same steady solution by either route (Newton "
@@ -261,7 +265,7 @@ def test_start_failure_has_nothing_to_export(tmp_path):
     assert series.status == "max_iterations" and series.results == []
     assert "step 0" in series.message
     with pytest.raises(ValueError, match="nothing to export"):
-        series.export(tmp_path)
+        bf.io.export_series(series, tmp_path)
 
 
 @pytest.mark.parametrize("kwargs, match", [
@@ -323,7 +327,7 @@ def test_elastic_squeeze_study_coarse(tmp_path, load_study):
 def test_solve_routes_elastic_gap_scenes_to_the_elastic_solver():
     """bf.solve on a half-space point scene with load.gap is elastic, not rigid."""
     import bearing_fem as bf
-    from bearing_fem.transient import solve_elastic_gap
+    from bearing_fem.contacts.transient import solve_elastic_gap
 
     sc = scene()  # I-40A ball, 33^2: strongly elastic at the 0.1 um gap
     via_solve = bf.solve(sc)

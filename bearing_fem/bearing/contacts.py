@@ -13,7 +13,7 @@ rounded to 10 significant digits is the key. The public solver API has no initia
 guess, so no warm start from a neighbouring element is made.
 
 This module uses only the public API of the contact solver (:class:`bearing_fem.scene.Scene`,
-:func:`bearing_fem.solve`) and the temperature laws of :mod:`bearing_fem.coupling`.
+:func:`bearing_fem.solve`) and the temperature laws of :mod:`bearing_fem.contacts.coupling`.
 """
 from __future__ import annotations
 
@@ -117,13 +117,13 @@ def lubricant_at_oil_temperature(bearing: Bearing) -> tuple[float, float]:
 
     ``temperature_law = "none"``: ``lubricant.viscosity`` and ``lubricant.piezo``. Else
     the Prokofiev law and the ln-linear alpha(t) table, evaluated by
-    :func:`bearing_fem.coupling.contact_viscosity` and
-    :func:`~bearing_fem.coupling.contact_piezo` (the thermal scenes use the same laws).
+    :func:`bearing_fem.contacts.coupling.contact_viscosity` and
+    :func:`~bearing_fem.contacts.coupling.contact_piezo` (the thermal scenes use the same laws).
     """
     lub = bearing.lubricant
     if lub.temperature_law == "none":
         return float(lub.viscosity), float(lub.piezo)
-    from ..coupling import contact_piezo, contact_viscosity
+    from ..contacts.coupling import contact_piezo, contact_viscosity
 
     scene = _helper_scene(bearing)
     t = bearing.operation.oil_temperature

@@ -23,6 +23,7 @@ import math
 from typing import Any
 
 from .. import formulas
+from ..validation import require_nonnegative, require_positive
 
 __all__ = ["palmgren_friction_torque", "palmgren_heat_power", "palmgren_torque",
            "palmgren_f1", "palmgren_equivalent_load", "PALMGREN_F0",
@@ -31,18 +32,6 @@ __all__ = ["palmgren_friction_torque", "palmgren_heat_power", "palmgren_torque",
            "NIKITIN_CHURNING", "film_formulas", "torque_to_heat_power", "empirical_models"]
 
 
-def _pos(name: str, value: float, unit: str) -> float:
-    v = float(value)
-    if not math.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be > 0 {unit}, got {value!r}")
-    return v
-
-
-def _nonneg(name: str, value: float, unit: str) -> float:
-    v = float(value)
-    if not math.isfinite(v) or v < 0.0:
-        raise ValueError(f"{name} must be >= 0 {unit}, got {value!r}")
-    return v
 
 
 def torque_to_heat_power(torque_nmm: float, rpm: float) -> float:
@@ -82,14 +71,14 @@ def palmgren_friction_torque(kinematic_viscosity_mm2s: float, rpm: float, mean_d
     -------
     dict with M0, M1, M [N mm].
     """
-    nu = _pos("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
-    n = _pos("rpm", rpm, "1/min")
-    d0 = _pos("mean_diameter_mm", mean_diameter_mm, "mm")
-    d = _pos("bore_mm", bore_mm, "mm")
-    fr = _pos("radial_load", radial_load, "N")
-    fa = _nonneg("axial_load", axial_load, "N")
-    f0 = _pos("f0", f0, "(dimensionless)")
-    f_pr = _pos("f_pr", f_pr, "(dimensionless)")
+    nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
+    n = require_positive("rpm", rpm, "1/min")
+    d0 = require_positive("mean_diameter_mm", mean_diameter_mm, "mm")
+    d = require_positive("bore_mm", bore_mm, "mm")
+    fr = require_positive("radial_load", radial_load, "N")
+    fa = require_nonnegative("axial_load", axial_load, "N")
+    f0 = require_positive("f0", f0, "(dimensionless)")
+    f_pr = require_positive("f_pr", f_pr, "(dimensionless)")
     m0 = _palmgren_viscous(nu, n, d0, f0)
     m1 = f_pr * math.hypot(fr, fa) * d / 2.0
     return {"M0": m0, "M1": m1, "M": m0 + m1}
@@ -139,8 +128,8 @@ def palmgren_f1(bearing_type: str, static_equivalent_load: float | None = None,
         z, y = (0.0005, 0.55) if bearing_type == "deep-groove-ball" else (0.001, 0.33)
         ratio = 0.125
         if static_equivalent_load is not None and static_load_rating is not None:
-            ratio = _pos("static_equivalent_load", static_equivalent_load, "N") / \
-                _pos("static_load_rating", static_load_rating, "N")
+            ratio = require_positive("static_equivalent_load", static_equivalent_load, "N") / \
+                require_positive("static_load_rating", static_load_rating, "N")
         return z * ratio**y
     if bearing_type == "cylindrical-roller":
         return 0.00055 if full_complement else 0.0003
@@ -156,8 +145,8 @@ def palmgren_equivalent_load(bearing_type: str, radial_load: float, axial_load: 
     Deep groove: max(0.9 Fa cot(alpha) - 0.1 Fr, Fr) with the loaded contact angle
     alpha (radial load only: Fr); angular contact: max(Fa - 0.1 Fr, Fr); roller: Fr.
     """
-    fr = _nonneg("radial_load", radial_load, "N")
-    fa = _nonneg("axial_load", axial_load, "N")
+    fr = require_nonnegative("radial_load", radial_load, "N")
+    fa = require_nonnegative("axial_load", axial_load, "N")
     if bearing_type == "deep-groove-ball":
         if fa == 0.0:
             return fr
@@ -184,12 +173,12 @@ def palmgren_torque(kinematic_viscosity_mm2s: float, rpm: float, mean_diameter_m
     -------
     dict with M0, M1, M [N mm].
     """
-    nu = _pos("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
-    n = _pos("rpm", rpm, "1/min")
-    dm = _pos("mean_diameter_mm", mean_diameter_mm, "mm")
-    p1 = _nonneg("equivalent_load", equivalent_load, "N")
-    m0 = _palmgren_viscous(nu, n, dm, _pos("f0", f0, "(dimensionless)"))
-    m1 = _pos("f1", f1, "(dimensionless)") * p1 * dm
+    nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
+    n = require_positive("rpm", rpm, "1/min")
+    dm = require_positive("mean_diameter_mm", mean_diameter_mm, "mm")
+    p1 = require_nonnegative("equivalent_load", equivalent_load, "N")
+    m0 = _palmgren_viscous(nu, n, dm, require_positive("f0", f0, "(dimensionless)"))
+    m1 = require_positive("f1", f1, "(dimensionless)") * p1 * dm
     return {"M0": m0, "M1": m1, "M": m0 + m1}
 
 
@@ -240,12 +229,12 @@ def skf_friction_torque(bearing_type: str, bore_mm: float, outside_mm: float, rp
     dict with M_rr, M_sl, M_seal, M_drag, M [N mm] and phi_ish, phi_rs, phi_bl, mu_sl,
     G_rr, G_sl.
     """
-    d = _pos("bore_mm", bore_mm, "mm")
-    big_d = _pos("outside_mm", outside_mm, "mm")
-    n = _pos("rpm", rpm, "1/min")
-    nu = _pos("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
-    fr = _nonneg("radial_load", radial_load, "N")
-    fa = _nonneg("axial_load", axial_load, "N")
+    d = require_positive("bore_mm", bore_mm, "mm")
+    big_d = require_positive("outside_mm", outside_mm, "mm")
+    n = require_positive("rpm", rpm, "1/min")
+    nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
+    fr = require_nonnegative("radial_load", radial_load, "N")
+    fa = require_nonnegative("axial_load", axial_load, "N")
     dm = 0.5 * (d + big_d)
     if bearing_type == "deep-groove-ball":
         if fa == 0.0:
@@ -320,18 +309,18 @@ def _nikitin_groups(rpm: float, bore: float, outside: float, ball_diameter: floa
                     contact_angle_deg: float, balls: int, kinematic_viscosity: float,
                     density: float, thermal_diffusivity: float, radial_load: float,
                     axial_load: float) -> dict[str, float]:
-    n = _pos("rpm", rpm, "1/min")
-    db = _pos("ball_diameter", ball_diameter, "m")
-    nu = _pos("kinematic_viscosity", kinematic_viscosity, "m^2/s")
-    rho = _pos("density", density, "kg/m^3")
-    a = _pos("thermal_diffusivity", thermal_diffusivity, "m^2/s")
+    n = require_positive("rpm", rpm, "1/min")
+    db = require_positive("ball_diameter", ball_diameter, "m")
+    nu = require_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
+    rho = require_positive("density", density, "kg/m^3")
+    a = require_positive("thermal_diffusivity", thermal_diffusivity, "m^2/s")
     m = int(balls)
     # the paper prints the ball-centre diameter as (D - d)/2; the pitch diameter
     # (D + d)/2 is meant (a diameter of the ball centres)
-    dcg = 0.5 * (_pos("bore", bore, "m") + _pos("outside", outside, "m"))
+    dcg = 0.5 * (require_positive("bore", bore, "m") + require_positive("outside", outside, "m"))
     u = math.pi * (dcg - db * math.cos(math.radians(contact_angle_deg))) * n / 120.0
-    fa = _nonneg("axial_load", axial_load, "N")
-    fr = _nonneg("radial_load", radial_load, "N")
+    fa = require_nonnegative("axial_load", axial_load, "N")
+    fr = require_nonnegative("radial_load", radial_load, "N")
     p_eq = 0.41 * fr + 0.87 * fa if fa > 0.0 else fr
     re = u * db / nu
     pr = nu / a
@@ -364,7 +353,7 @@ def nikitin_power_loss(rpm: float, bore: float, outside: float, ball_diameter: f
                         kinematic_viscosity, density, thermal_diffusivity, radial_load,
                         axial_load)
     k, b, x, y, z = NIKITIN_TOTAL[coefficient_set]
-    phi = k * _pos("flow_ratio", flow_ratio, "(dimensionless)") ** b * g["Re"] ** x \
+    phi = k * require_positive("flow_ratio", flow_ratio, "(dimensionless)") ** b * g["Re"] ** x \
         * g["Pr"] ** y * g["Eu"] ** z
     return {"heat_power": phi * g["scale"], "phi": phi, "u": g["u"], "Re": g["Re"],
             "Pr": g["Pr"], "Eu": g["Eu"]}

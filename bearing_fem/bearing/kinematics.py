@@ -29,17 +29,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..validation import require_positive
 from .geometry import contact_radii
 
 __all__ = ["RollerContacts", "cylindrical_roller_contacts", "max_line_load",
            "ElementKinematics", "element_kinematics"]
 
-
-def _pos(name: str, value: float, unit: str) -> float:
-    v = float(value)
-    if not math.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be > 0 {unit}, got {value!r}")
-    return v
 
 
 @dataclass(frozen=True)
@@ -73,9 +68,9 @@ def cylindrical_roller_contacts(pitch_diameter: float, roller_diameter: float,
     ----------
     pitch_diameter : d_m [m]; roller_diameter : D_w [m] (< d_m); inner_rpm : n [1/min].
     """
-    dm = _pos("pitch_diameter", pitch_diameter, "m")
-    dw = _pos("roller_diameter", roller_diameter, "m")
-    n = _pos("inner_rpm", inner_rpm, "1/min")
+    dm = require_positive("pitch_diameter", pitch_diameter, "m")
+    dw = require_positive("roller_diameter", roller_diameter, "m")
+    n = require_positive("inner_rpm", inner_rpm, "1/min")
     if dw >= dm:
         raise ValueError(f"roller_diameter must be < pitch_diameter (m), got {dw!r} >= {dm!r}")
     k = element_kinematics(2.0 * math.pi * n / 60.0, dm, dw, 0.0, 0.0)
@@ -91,11 +86,11 @@ def max_line_load(radial_load: float, rollers: int, roller_length: float,
     radial_load Fr [N]; rollers z (all rows); roller_length l_w [m]; k: K [-]
     (Stribeck's 4.08 for zero clearance, ~4.6 with clearance).
     """
-    fr = _pos("radial_load", radial_load, "N")
+    fr = require_positive("radial_load", radial_load, "N")
     if isinstance(rollers, bool) or not isinstance(rollers, int) or rollers < 1:
         raise ValueError(f"rollers must be a positive integer, got {rollers!r}")
-    lw = _pos("roller_length", roller_length, "m")
-    return _pos("k", k, "(dimensionless)") * fr / (rollers * lw)
+    lw = require_positive("roller_length", roller_length, "m")
+    return require_positive("k", k, "(dimensionless)") * fr / (rollers * lw)
 
 
 @dataclass(frozen=True)

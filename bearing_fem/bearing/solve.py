@@ -304,12 +304,17 @@ def solve_bearing(bearing: Bearing, *,
         warnings.append(f"friction torque x omega differs from the contacts' heat power by "
                         f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
                         "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
+    # the contact solver's warnings, once per distinct scene, naming the contacts using it
+    users: dict[str, list[str]] = {}
     for spec in specs:
         for key in spec.keys:
-            for w in results[key].warnings:
-                msg = f"contact {spec.element} {spec.raceway}: {w}"
-                if msg not in warnings:
-                    warnings.append(msg)
+            name = f"{spec.element} {spec.raceway}"
+            if name not in users.setdefault(key, []):
+                users[key].append(name)
+    for key, names in users.items():
+        for w in results[key].warnings:
+            who = ", ".join(names[:4]) + (f" (+{len(names) - 4} more)" if len(names) > 4 else "")
+            warnings.append(f"contact{'s' if len(names) > 1 else ''} {who}: {w}")
     n_solved = len(results)
     n_scenes = sum(len(s.keys) for s in specs)
     if failed:

@@ -4,10 +4,10 @@ Loop (``model.thermal = "patch"``, see ``docs/coupling.md``)::
 
     T = t_oil                                      contact temperature [deg C]
     repeat:
-        eta0 = eta_ref (t_ref / T)^n                Prokofiev (seed 000), T in deg C
+        eta0 = eta_ref (t_ref / T)^n                Prokofiev law, T in deg C
         alpha = alpha(T)                            optional ln-linear table
-        isothermal EHL solve (solver.solve_line) with eta0, alpha
-        q(x) = Couette tau u_s + Poiseuille u_m p' (h - h*)  [W/m^2]  (traction.heat_flux_line)
+        isothermal EHL solve (line.LineModel, shared driver) with eta0, alpha
+        q(x) = Couette tau u_s + Poiseuille u_m p' (h - h*)  [W/m^2]  (LineModel.heat_flux)
         q_i = f_i q, f_i from Blok's partition (thermal.heat_partition)
         flash temperature of each body in the ROLLING plane (moving source, body i moving
             at its surface speed u_i under the fixed source q_i)
@@ -25,7 +25,7 @@ Korovchinsky patch gives only temperature differences in 2D (its constant C need
 Flash temperature (``thermal.source_model``): ``"jaeger"`` the high-Pe closed form
 T(x) = (pi lambda rho c V)^(-1/2) int_{-inf}^{x} q(s) (x - s)^(-1/2) ds, integrated exactly
 for the piecewise-constant element flux; ``"fe"`` the FE moving source
-(:func:`bearing_fem.thermal.moving_source`) on the band covering the heated zone.
+(:func:`bearing_fem.physics.thermal.moving_source`) on the band covering the heated zone.
 """
 from __future__ import annotations
 
@@ -35,11 +35,15 @@ from dataclasses import replace
 
 import numpy as np
 
-from . import thermal, traction
-from .errors import SceneError
-from .result import Result
-from .rheology import prokofiev
-from .scene import Scene
+from ..errors import SceneError
+from ..numerics.newton import BUDGET_STATUSES
+from ..physics import thermal
+from ..physics.rheology import prokofiev
+from ..physics.traction import shear_parameters
+from ..result import Result
+from ..scene import Scene
+from .driver import finish, solve_newton_model
+from .line import LineModel
 
 __all__ = ["solve_thermal", "contact_viscosity", "contact_piezo", "jaeger_surface_temperature",
            "flash_temperature"]
@@ -121,10 +125,6 @@ def flash_temperature(x_nodes: np.ndarray, q_elements: np.ndarray, x_eval: np.nd
     return np.interp(np.asarray(x_eval, dtype=float) - centre, ms.x, ms.surface_temperature)
 
 
-def _zero_like_quantities(res: Result) -> dict[str, float]:
-    return {k: float(v) for k, v in res.quantities.items() if np.isfinite(v)}
-
-
 def solve_thermal(scene: Scene) -> Result:
     """Thermally coupled steady line-contact solve (see module docstring).
 
@@ -135,14 +135,13 @@ def solve_thermal(scene: Scene) -> Result:
         (temperature loop exhausted: fields of the last iterate) or the EHL solver's status
         when an isothermal solve fails. Quantities (per metre of length) add
         ``contact_temperature`` [deg C], ``contact_temperature_rise`` [K],
-        ``contact_temperature_rise_max`` [K], ``heat_power`` [W/m] (conservative form),
-        ``heat_power_couette``/``_poiseuille``, ``heat_power_direct`` [W/m] (post's direct
-        quadrature, diagnostic), ``heat_flux_body1``/``body2`` [W/m],
+        ``contact_temperature_rise_max`` [K], ``heat_flux_body1``/``body2`` [W/m],
         ``heat_fraction_body1`` [-], ``contact_viscosity`` [Pa s], ``contact_piezo`` [1/Pa],
-        ``peclet_min`` [-], ``thermal_iterations``.
+        ``peclet_min`` [-], ``thermal_iterations``, ``thermal_residual`` |G(T) - T| [K];
+        friction and heat power as every line solve (:mod:`bearing_fem.post`), at the
+        final contact temperature. ``history`` is the Newton history of the last
+        isothermal solve; ``error_estimate`` and ``warnings`` are its own.
     """
-    from .solver import solve_line
-
     t0 = time.perf_counter()
     if scene.thermal is None:
         raise SceneError("model.thermal = 'patch' needs a [thermal] section")
@@ -160,7 +159,8 @@ def solve_thermal(scene: Scene) -> Result:
     cap = (th.heat_capacity, th.heat_capacity2 or th.heat_capacity)
     part = thermal.heat_partition(lam, rho, cap, speeds, rule="blok")
     fractions = (part.fraction_1, part.fraction_2)
-    tr_kw = traction._model_kwargs(scene.traction)
+    shear = shear_parameters(scene.traction)
+    model_name = shear["model"]
 
     t_oil = th.oil_temperature
     T = t_oil
@@ -170,13 +170,29 @@ def solve_thermal(scene: Scene) -> Result:
     res = None
     status, converged = "max_iterations", False
     info: dict[str, float] = {}
+    notes: list[str] = []
+    temps: list[np.ndarray] = []
+    q_e = np.zeros(0)
     prev: tuple[float, float] | None = None     # (T, G(T) - T) of the previous iteration
+    sol = scene.solver
     for it in range(1, th.max_iterations + 1):
+        left_its = sol.iteration_budget - newton_its
+        elapsed = time.perf_counter() - t0
+        if left_its <= 0 or (sol.time_limit is not None and elapsed >= sol.time_limit):
+            status = "budget_exhausted" if left_its <= 0 else "time_limit"
+            msg = (f"{status}: the thermal loop stopped before iteration {it} after "
+                   f"{newton_its} Newton iterations (budget {sol.iteration_budget}) and "
+                   f"{elapsed:.3g} s" + (f" (time limit {sol.time_limit:.3g} s)"
+                                         if sol.time_limit is not None else ""))
+            break
         eta0 = contact_viscosity(scene, T)
         alpha = contact_piezo(scene, T)
         lub = replace(scene.lubricant, viscosity=eta0, piezo=alpha)
-        iso = replace(scene, model=iso_model, lubricant=lub, thermal=None)
-        res = solve_line(iso)
+        inner = replace(sol, iteration_budget=left_its, time_limit=None if sol.time_limit
+                        is None else sol.time_limit - elapsed)
+        iso = replace(scene, model=iso_model, lubricant=lub, thermal=None, solver=inner)
+        model = LineModel(iso)
+        res = solve_newton_model(model, iso, time.perf_counter())
         newton_its += res.newton_iterations
         if not res.success:
             status = res.status
@@ -184,15 +200,10 @@ def solve_thermal(scene: Scene) -> Result:
                    f"(contact temperature {T:.4g} deg C, eta0 = {eta0:.4g} Pa s, alpha = "
                    f"{alpha:.4g} 1/Pa): {res.message}")
             break
-        eta_nodes = res.extra_fields["viscosity_Pa_s"]
-        hf = traction.heat_flux_line(res.x, res.pressure, res.film, eta_nodes,
-                                     kin.mean_speed, kin.sliding_speed,
-                                     cavitation=scene.model.cavitation, **tr_kw)
+        q_e, _ = model.heat_flux(res.pressure, res.h0)
         xn = res.x
-        temps = []
-        for i in range(2):
-            temps.append(flash_temperature(xn, fractions[i] * hf.q, xn, lam[i], rho[i], cap[i],
-                                           speeds[i], source_model=th.source_model))
+        temps = [flash_temperature(xn, fractions[i] * q_e, xn, lam[i], rho[i], cap[i],
+                                   speeds[i], source_model=th.source_model) for i in range(2)]
         p_pos = np.maximum(res.pressure, 0.0)
         wts = np.gradient(xn) * p_pos
         mean_rise = float(np.mean([wts @ T_i for T_i in temps]) / wts.sum())
@@ -201,42 +212,35 @@ def solve_thermal(scene: Scene) -> Result:
         G = t_oil + rise
         delta = G - T
         history.append(abs(delta))
-        q_nz = np.nonzero(hf.q != 0)[0]
+        q_nz = np.nonzero(q_e != 0)[0]
         band = 0.5 * (xn[q_nz[-1] + 1] - xn[q_nz[0]]) if q_nz.size else float(np.ptp(xn)) / 2
         peclet = min(speeds[i] * band * rho[i] * cap[i] / (2 * lam[i]) for i in range(2))
+        total = float(np.diff(xn) @ q_e)
         info = {
             "contact_temperature": float(T),
             "contact_temperature_rise": float(T - t_oil),
             "contact_temperature_rise_computed": rise,
             "contact_temperature_rise_mean": mean_rise,
             "contact_temperature_rise_max": max_rise,
-            "heat_power": hf.heat_power,
-            "heat_power_couette": hf.heat_power_couette,
-            "heat_power_poiseuille": hf.heat_power_poiseuille,
-            "heat_power_direct": float(res.quantities.get("heat_power", np.nan)),
-            "heat_power_direct_poiseuille": hf.heat_power_direct_poiseuille,
-            "heat_flux_body1": float(fractions[0] * (hf.dx @ hf.q)),
-            "heat_flux_body2": float(fractions[1] * (hf.dx @ hf.q)),
+            "heat_flux_body1": float(fractions[0] * total),
+            "heat_flux_body2": float(fractions[1] * total),
             "heat_fraction_body1": fractions[0],
-            "rolling_resistance": hf.rolling_resistance,
-            "sliding_friction": hf.sliding_friction,
-            "friction_force": hf.friction_force,
-            "friction_coefficient": hf.friction_force / scene.load.force
-            if scene.load.force else 0.0,
             "contact_viscosity": eta0,
             "contact_piezo": alpha,
             "peclet_min": float(peclet),
             "thermal_iterations": float(it),
+            "thermal_residual": float(abs(delta)),
         }
+        heat = res.quantities["heat_power"]
         if rise > th.max_temperature_rise:
             status = "diverged"
             msg = (f"diverged: computed contact temperature rise {rise:.4g} K exceeds "
                    f"thermal.max_temperature_rise = {th.max_temperature_rise:.4g} K at thermal "
-                   f"iteration {it} (heat power {hf.heat_power:.4g} W/m, of which Couette "
-                   f"{hf.heat_power_couette:.4g} W/m, traction model "
-                   f"{tr_kw['model']!r}); no physical fixed point"
+                   f"iteration {it} (heat power {heat:.4g} W/m, of which Couette "
+                   f"{res.quantities['heat_power_couette']:.4g} W/m, traction model "
+                   f"{model_name!r}); no physical fixed point"
                    + (" - Newtonian Barus traction is unphysical under sliding, use "
-                      "traction.model = 'eyring' or 'limiting'" if tr_kw["model"] == "newtonian"
+                      "traction.model = 'eyring-limiting'" if model_name == "newtonian"
                       else ""))
             break
         if abs(delta) < th.tolerance:
@@ -253,23 +257,32 @@ def solve_thermal(scene: Scene) -> Result:
         T = T + step
         if T <= 0.0:  # keep the Prokofiev law defined (t > 0 deg C)
             T = 0.5 * t_oil
-    if res is None:  # pragma: no cover - max_iterations >= 1
-        raise RuntimeError("no thermal iteration ran")
-    if res.success and status != "diverged":
+    if res is None:
+        # the budget was spent before the first isothermal solve: report the oil state
+        lub = replace(scene.lubricant, viscosity=contact_viscosity(scene, T),
+                      piezo=contact_piezo(scene, T))
+        iso = replace(scene, model=iso_model, lubricant=lub, thermal=None)
+        model = LineModel(iso)
+        problem = model.problem(model.setup)
+        z0 = model.initial_guess(model.setup, problem)
+        res = finish(iso, model.solution(problem, z0, post=False), status=status,
+                     message=msg, t0=t0)
+    if res.success and status not in ("diverged",) + BUDGET_STATUSES:
         if converged:
             msg = (f"converged: contact temperature {T:.4g} deg C (rise {T - t_oil:.4g} K over "
                    f"oil {t_oil:.4g} deg C) after {len(history)} thermal iteration(s), "
                    f"|G(T) - T| = {history[-1]:.2e} K < tol {th.tolerance:.2e} K; heat power "
-                   f"{info['heat_power']:.4g} W/m; {res.message}")
+                   f"{res.quantities['heat_power']:.4g} W/m; {res.message}")
         else:
             msg = (f"max_iterations: contact temperature not converged after {len(history)} "
                    f"thermal iterations (|G(T) - T| = {history[-1]:.3g} K > tol "
                    f"{th.tolerance:.2e} K, relaxation {th.relaxation}); fields of the last "
                    "iterate")
         if info.get("peclet_min", np.inf) < 5.0 and th.source_model == "jaeger":
-            msg += (f"; warning: Peclet number {info['peclet_min']:.3g} < 5, the high-Pe "
-                    "Jaeger formula overestimates; use thermal.source_model = 'fe'")
-    quantities = _zero_like_quantities(res)
+            notes.append(f"Peclet number {info['peclet_min']:.3g} < 5: the high-Peclet "
+                         "Jaeger formula overestimates the flash temperature; use "
+                         "thermal.source_model = 'fe'")
+    quantities = {k: v for k, v in res.quantities.items()}
     quantities.update({"contact_temperature": float(T),
                        "contact_temperature_rise": float(T - t_oil),
                        "contact_viscosity": contact_viscosity(scene, T),
@@ -277,12 +290,16 @@ def solve_thermal(scene: Scene) -> Result:
                        "thermal_iterations": float(len(history) or 1)})
     quantities.update({k: float(v) for k, v in info.items() if np.isfinite(v)})
     extra = dict(res.extra_fields)
-    if info and res.success:
+    if info and res.success and temps:
         extra["surface_temperature_rise_body1_K"] = temps[0]
         extra["surface_temperature_rise_body2_K"] = temps[1]
-        extra["heat_flux_W_m2"] = np.interp(res.x, hf.x, hf.q)
-    return Result(success=converged and res.success, status=status, message=msg, scene=scene,
+        extra["heat_flux_W_m2"] = np.interp(res.x, 0.5 * (res.x[1:] + res.x[:-1]), q_e)
+    success = converged and res.success
+    return Result(success=success, status=status, message=msg, scene=scene,
                   x=res.x, pressure=res.pressure, film=res.film, h0=res.h0,
-                  quantities=quantities, history=history, newton_iterations=newton_its,
+                  quantities=quantities, history=list(res.history), newton_iterations=newton_its,
                   linear_solves=res.linear_solves, wall_time_s=time.perf_counter() - t0,
-                  continuation=res.continuation, extra_fields=extra)
+                  continuation=res.continuation, extra_fields=extra,
+                  warnings=list(res.warnings) + notes,
+                  error_estimate=res.error_estimate if success else None,
+                  traction_model=res.traction_model)

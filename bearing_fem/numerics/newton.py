@@ -9,7 +9,8 @@ interface, :class:`NonlinearProblem`; this module knows nothing of the physics.
   admissible iterates (positive film, finite values).
 * Status strings follow scipy's contract: ``converged``, ``max_iterations``,
   ``stalled`` (no admissible decrease along the Newton direction), ``diverged``
-  (non-finite values).
+  (non-finite values), and ``budget_exhausted`` / ``time_limit`` when the
+  :class:`Budget` of the whole solve is spent.
 """
 from __future__ import annotations
 
@@ -39,6 +40,54 @@ class NonlinearProblem(Protocol):
         """True if z is a physically admissible iterate (e.g. positive film)."""
 
 
+#: Statuses that end a whole solve (not just one attempt): the budget is spent.
+BUDGET_STATUSES = ("budget_exhausted", "time_limit")
+
+
+class Budget:
+    """Newton iterations and wall time allowed to a whole solve (all grids, attempts and
+    continuation steps together).
+
+    Parameters
+    ----------
+    iterations : int or None
+        Newton iterations allowed (None: no limit).
+    seconds : float or None
+        Wall-clock time allowed [s] (None: no limit), counted from construction.
+    """
+
+    def __init__(self, iterations: int | None = None, seconds: float | None = None) -> None:
+        self.iterations = iterations
+        self.seconds = seconds
+        self.used = 0
+        self._start = time.perf_counter()
+
+    @property
+    def elapsed(self) -> float:
+        """Wall time since construction [s]."""
+        return time.perf_counter() - self._start
+
+    def charge(self, iterations: int = 1) -> None:
+        """Count Newton iterations against the budget."""
+        self.used += int(iterations)
+
+    def exhausted(self) -> str | None:
+        """``"budget_exhausted"`` or ``"time_limit"`` once spent, else None."""
+        if self.iterations is not None and self.used >= self.iterations:
+            return "budget_exhausted"
+        if self.seconds is not None and self.elapsed >= self.seconds:
+            return "time_limit"
+        return None
+
+    def describe(self) -> str:
+        """What was spent, for messages."""
+        its = f"{self.used} Newton iterations" + (
+            f" of a budget of {self.iterations}" if self.iterations is not None else "")
+        t = f"{self.elapsed:.3g} s" + (f" of a time limit of {self.seconds:.3g} s"
+                                       if self.seconds is not None else "")
+        return f"{its}, {t}"
+
+
 @dataclass
 class NewtonOutcome:
     """Result of :func:`damped_newton` (scaled unknowns)."""
@@ -59,7 +108,8 @@ class NewtonOutcome:
 def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-8,
                   max_iterations: int = 50, min_step: float = 2.0**-8,
                   memory: int = 5, initial_shift: float = 0.0,
-                  callback: Callable[[int, float], None] | None = None) -> NewtonOutcome:
+                  callback: Callable[[int, float], None] | None = None,
+                  budget: Budget | None = None) -> NewtonOutcome:
     """Damped, diagonally regularised Newton iteration on ``problem`` from ``z0``.
 
     Each iteration solves (J + sigma D) dz = -F, D = identity on the field unknowns
@@ -94,6 +144,12 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
         close in most of the domain but not near a sharp feature (a solution
         interpolated from a coarser grid) converges more reliably with a small shift
         that decays (/4 per accepted step) before plain Newton takes over.
+    callback : callable, optional
+        ``callback(iteration, residual_norm)`` after every accepted step.
+    budget : Budget, optional
+        Iterations and time of the whole solve; every iteration is charged to it and
+        the iteration stops with its status (``budget_exhausted``, ``time_limit``)
+        once it is spent.
 
     Returns
     -------
@@ -123,7 +179,13 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
         if sigma > 1.0:  # three regularised retries failed: give up on this attempt
             status = "stalled"
             break
+        spent = budget.exhausted() if budget is not None else None
+        if spent:
+            status = spent
+            break
         it += 1
+        if budget is not None:
+            budget.charge()
         try:
             dz = problem.newton_step(z, shift=sigma)
         except (np.linalg.LinAlgError, RuntimeError) as exc:
@@ -181,15 +243,18 @@ def continuation(make_problem: Callable[[float], NonlinearProblem], z_start: np.
                  *, s_start: float = 0.0, first_step: float = 0.25, tol: float = 1e-8,
                  max_iterations: int = 50, max_steps: int = 40,
                  min_increment: float = 1e-3, intermediate_tol: float | None = None,
-                 initial_shift: float = 0.0) -> ContinuationOutcome:
+                 initial_shift: float = 0.0, memory: int = 5,
+                 callback: Callable[[int, float], None] | None = None,
+                 budget: Budget | None = None) -> ContinuationOutcome:
     """Natural-parameter continuation s: s_start -> 1 with adaptive steps.
 
     ``make_problem(s)`` returns the problem at parameter s (s = 1 is the target). Each
     step starts Newton from the last converged solution; a failed step is retried with
     half the increment, a successful one grows it by 1.5. Steps with s < 1 stop at
     ``intermediate_tol`` (default ``tol``: they only provide starting points); the final
-    step at s = 1 always converges to ``tol``. ``initial_shift`` is passed to every
-    :func:`damped_newton`.
+    step at s = 1 always converges to ``tol``. ``initial_shift``, ``memory``, ``callback``
+    and ``budget`` are passed to every :func:`damped_newton`; a spent budget ends the
+    continuation with its status.
     """
     tol_mid = tol if intermediate_tol is None else max(tol, intermediate_tol)
     z = np.array(z_start, dtype=float)
@@ -199,8 +264,9 @@ def continuation(make_problem: Callable[[float], NonlinearProblem], z_start: np.
     record: list[tuple[float, str, int]] = []
     last = None
     # converge at the starting parameter first
-    out = damped_newton(make_problem(s), z, tol=tol if s >= 1.0 else tol_mid,
-                        max_iterations=max_iterations, initial_shift=initial_shift)
+    newton = dict(max_iterations=max_iterations, initial_shift=initial_shift, memory=memory,
+                  callback=callback, budget=budget)
+    out = damped_newton(make_problem(s), z, tol=tol if s >= 1.0 else tol_mid, **newton)
     total += out.iterations
     record.append((s, out.status, out.iterations))
     last = out
@@ -212,19 +278,23 @@ def continuation(make_problem: Callable[[float], NonlinearProblem], z_start: np.
             break
         s_try = min(1.0, s + ds)
         out = damped_newton(make_problem(s_try), z, tol=tol if s_try >= 1.0 else tol_mid,
-                            max_iterations=max_iterations, initial_shift=initial_shift)
+                            **newton)
         total += out.iterations
         record.append((s_try, out.status, out.iterations))
         last = out
         if out.converged:
             s, z = s_try, out.z
             ds *= 1.5
+        elif out.status in BUDGET_STATUSES:
+            break
         else:
             ds *= 0.5
             if ds < min_increment:
                 break
     status = "converged" if s >= 1.0 else (last.status if last and not last.converged
                                             else "max_iterations")
+    if budget is not None and s < 1.0 and budget.exhausted():
+        status = budget.exhausted()
     return ContinuationOutcome(z, status, total, record, last, s)
 
 

@@ -6,7 +6,7 @@ undeformed bodies [m]; v = C p elastic displacement [m] (Boussinesq half-space, 
 rho density relative to ambient [-]; eta viscosity [Pa s]; u_m mean speed [m/s];
 eps vibration amplitude [-]; omega angular frequency [rad/s]; dt time step [s].
 
-Problem (PHYSICS.md 2, seed 001): the gap oscillates as h0(t) = h0 (1 + eps cos(omega t))
+Problem (``docs/theory.md``; the vibrating 209 bearing of Kadochnikova 2018): the gap oscillates as h0(t) = h0 (1 + eps cos(omega t))
 (``load.gap`` = h0, the mean) and the film is
 
     h(x, y, t) = h0(t) + g(x, y) + v[p(t)](x, y),
@@ -19,7 +19,7 @@ contains dh0/dt, the elastic deformation rate dv/dt = C dp/dt and the density ch
 the pressure has memory, the steps are coupled in time.
 
 Weak form and time discretisation (conservative, the time derivative acts on the mass
-rho h itself). With the steady residual of :class:`bearing_fem.point.PointProblem`,
+rho h itself). With the steady residual of :class:`bearing_fem.contacts.point.PointProblem`,
 R_steady(phi) = int F . grad phi, F = rho h^3/(12 eta) grad p - u_m rho h e_x (+ the
 upwinding of the elastic path), step n solves for p^n
 
@@ -32,7 +32,7 @@ start-up error instead of carrying it; the trapezoidal rule (Crank-Nicolson) is 
 the algebraic part it gives S(p^n) = -S(p^(n-1)) + ..., so an error of the start flips
 sign every step and never decays. It is not offered.
 
-Newton on step n (:func:`bearing_fem.newton.damped_newton`, the GMRES machinery of
+Newton on step n (:func:`bearing_fem.numerics.newton.damped_newton`, the GMRES machinery of
 :meth:`PointProblem.newton_step`): the time term adds to the sparse blocks
 
     A_p += (c_0/dt) M[rho'(p) h],     A_h += (c_0/dt) M[rho],
@@ -69,12 +69,17 @@ from typing import Callable
 import numpy as np
 import scipy.sparse as sp
 
-from .errors import SceneError
-from .line import fischer_burmeister
-from .newton import continuation, damped_newton, outcome_message
-from .point import (PointGrid, PointProblem, PointSetup, SqueezeSeries, _boundary_values,
-                    _finish, _flux, _rigid_start)
-from .result import Result
+from ..errors import SceneError
+from ..numerics.newton import BUDGET_STATUSES, damped_newton, outcome_message
+from ..physics.elasticity import HalfSpacePoint
+from ..result import Result
+from ..scene import Scene
+from .driver import DriverSettings, finish, make_budget, solve_levels, solve_newton_model
+from .point import (PointLevel, PointModel, PointProblem, PointSetup, boundary_values,
+                    flux_model, rigid_start)
+from .point_grid import PointGrid
+from .problem import fischer_burmeister
+from .series import SqueezeSeries
 
 log = logging.getLogger(__name__)
 
@@ -112,12 +117,11 @@ def elastic_gap_setup(scene, nodes: tuple[int, int] | None = None,
     Returns
     -------
     PointSetup
-        ``compliance`` is a :class:`~bearing_fem.elasticity.HalfSpacePoint`;
-        ``stab_compliance`` = 4 L_x/(pi E') (upwinding scale of the wedge term, the
-        analogue of 4 a_x/(pi E') of load-controlled scenes); ``hertz`` is None.
+        ``compliance`` is a :class:`~bearing_fem.physics.elasticity.HalfSpacePoint`;
+        ``stab_compliance`` = C_00, the self-compliance of a grid node (the upwinding
+        scale of load-controlled scenes, :data:`bearing_fem.contacts.point.
+        UPWIND_COMPLIANCE_FACTOR`); ``hertz`` is None.
     """
-    from .elasticity import HalfSpacePoint
-
     h0 = scene.load.gap
     rx, ry = scene.contact.rx, scene.contact.ry
     lx, ly = math.sqrt(2.0 * rx * h0), math.sqrt(2.0 * ry * h0)
@@ -133,7 +137,9 @@ def elastic_gap_setup(scene, nodes: tuple[int, int] | None = None,
     comp = HalfSpacePoint(grid.x, grid.y, scene.e_prime)
     if pressure_scale is None:
         pressure_scale = scene.lubricant.viscosity * scene.kinematics.mean_speed * lx / h0**2
-    c_stab = 4.0 * lx / (math.pi * scene.e_prime)
+    # the grid-scale compliance of every elastic point scene (point.point_setup): a
+    # contact-scale one (4 L_x/(pi E')) keeps first-order upwinding across the inlet
+    c_stab = float(comp.kernel()[0, 0])
     return PointSetup(grid, comp, float(pressure_scale), h0, lx, ly, h0, c_stab, None)
 
 
@@ -143,7 +149,7 @@ def elastic_gap_setup(scene, nodes: tuple[int, int] | None = None,
 class TransientPointProblem(PointProblem):
     """One time step of the transient Reynolds-elasticity system (a NonlinearProblem).
 
-    The residual is that of :class:`~bearing_fem.point.PointProblem` plus the BDF mass
+    The residual is that of :class:`~bearing_fem.contacts.point.PointProblem` plus the BDF mass
     term int (1/dt) sum_k c_k (rho h)^(n-k) phi (module docstring); the film of the
     earlier levels enters only through ``history``. With ``time_step=None`` the problem
     is the steady one (optionally with the squeeze source of the base class).
@@ -151,7 +157,7 @@ class TransientPointProblem(PointProblem):
     Parameters
     ----------
     *args, **kwargs
-        As :class:`~bearing_fem.point.PointProblem` (``gap`` = h0^n [m]).
+        As :class:`~bearing_fem.contacts.point.PointProblem` (``gap`` = h0^n [m]).
     time_step : float or None
         dt [s]; None: steady (no time term).
     coefficients : sequence of float
@@ -231,7 +237,7 @@ class TransientPointProblem(PointProblem):
 # ---------------------------------------------------------------------------------------
 @dataclass
 class ElasticSqueezeSeries(SqueezeSeries):
-    """Elastic transient squeeze series (a :class:`~bearing_fem.point.SqueezeSeries`).
+    """Elastic transient squeeze series (a :class:`~bearing_fem.contacts.point.SqueezeSeries`).
 
     Step 0 is the steady start at t0; steps 1.. are the time steps. The arrays cover the
     solved steps only: a failed step stops the series, its Result is ``failure`` and
@@ -283,21 +289,11 @@ class ElasticSqueezeSeries(SqueezeSeries):
     def success(self) -> bool:
         return self.status == "converged"
 
-    def export(self, directory, name: str = "elastic_squeeze") -> dict[str, str]:
-        """VTU files + PVD index and an XDMF/HDF5 time series of the solved steps
-        (``pressure_Pa``, ``film_m``); see :meth:`SqueezeSeries.export`."""
-        if not self.results:
-            raise ValueError(f"nothing to export: the series has no solved step "
-                             f"(status {self.status!r}: {self.message})")
-        return super().export(directory, name=name)
-
 
 # ---------------------------------------------------------------------------------------
 # driver
 # ---------------------------------------------------------------------------------------
 def _check_scene(scene, who: str) -> None:
-    from .scene import Scene
-
     if not isinstance(scene, Scene):
         raise SceneError(f"{who} needs a Scene, got {type(scene).__name__}")
     if scene.contact.kind != "point":
@@ -305,7 +301,7 @@ def _check_scene(scene, who: str) -> None:
     if scene.model.elasticity != "half-space":
         raise SceneError(f"{who} needs model.elasticity = 'half-space' (an elastic scene), "
                          f"got {scene.model.elasticity!r}; rigid scenes have no memory: use "
-                         f"bearing_fem.point.solve_squeeze_series")
+                         f"bearing_fem.contacts.series.solve_squeeze_series")
     if scene.load.gap is None:
         raise SceneError(f"{who} needs a prescribed gap load.gap (m), the mean rigid offset "
                          f"h0 of h0(t) = h0 (1 + eps cos(omega t)); got load.force = "
@@ -318,52 +314,95 @@ def _check_scene(scene, who: str) -> None:
 
 def _make_step_problem(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, *,
                        squeeze: float = 0.0, time_step: float | None = None,
-                       coefficients=(), history=(), compliance_scale: float = 1.0
-                       ) -> TransientPointProblem:
+                       coefficients=(), history=(), compliance_scale: float = 1.0,
+                       tolerance: float | None = None) -> TransientPointProblem:
     comp = setup.compliance
     if compliance_scale != 1.0:
-        from .elasticity import HalfSpacePoint
-
         comp = None if compliance_scale == 0.0 else HalfSpacePoint(
             setup.grid.x, setup.grid.y, scene.e_prime / compliance_scale)
     return TransientPointProblem(
-        setup.grid, _flux(scene, setup), scene.contact.rx, scene.contact.ry, comp,
+        setup.grid, flux_model(scene, setup), scene.contact.rx, scene.contact.ry, comp,
         scene.model.cavitation, None, gap, setup.p_ref, setup.h_ref,
         scene.lubricant.viscosity, p_bc, squeeze, time_step=time_step,
-        coefficients=coefficients, history=history)
+        coefficients=coefficients, history=history, tolerance=tolerance)
 
 
-def _solve_start(scene, setup: PointSetup, gap: float, p_bc: np.ndarray, squeeze: float,
-                 max_iterations: int):
-    """Steady elastic solution at the gap (direct Newton, then continuation in 1/E')."""
-    tol = scene.solver.tolerance
-    problem = _make_step_problem(scene, setup, gap, p_bc, squeeze=squeeze)
-    z0 = _rigid_start(scene, setup, problem, gap)  # the problem carries p_bc and squeeze
-    out = damped_newton(problem, z0, tol=tol, max_iterations=max_iterations)
-    if out.converged or not scene.solver.continuation:
-        return out.z, out.status, out.iterations, problem, [], list(out.history)
-    log.info("steady elastic start %s after %d iterations; continuing in compliance",
-             out.status, out.iterations)
-    cont = continuation(lambda s: _make_step_problem(scene, setup, gap, p_bc, squeeze=squeeze,
-                                                     compliance_scale=s),
-                        z0, tol=tol, max_iterations=max_iterations)
-    its = out.iterations + cont.iterations
-    history = list(out.history) + list(cont.last.history)
-    if cont.parameter >= 1.0 and cont.status == "converged":
-        return cont.z, "converged", its, problem, cont.steps, history
-    return out.z, out.status, its, problem, cont.steps, history
+class ElasticGapModel(PointModel):
+    """The steady elastic point contact at a prescribed gap as a driver model.
+
+    One grid (uniform, in units of sqrt(2 r h0), :func:`elastic_gap_setup`); the direct
+    attempt starts from the rigid isoviscous solution at the gap, and the fallback is
+    continuation in the compliance 1/E' from the rigid problem (s = 0) to the elastic
+    one (s = 1). Post-processing, transfer and the coarser grids of the error estimate
+    as :class:`~bearing_fem.contacts.point.PointModel`.
+
+    Parameters
+    ----------
+    scene : Scene
+        Elastic point scene with ``load.gap`` = h0 [m].
+    setup : PointSetup
+        Its grid (shared by every step of a series).
+    gap : float
+        The rigid offset of this solve [m] (h0(t) of a series step).
+    p_bc_fn : callable or ndarray or None
+        Dirichlet pressure (as :func:`~bearing_fem.contacts.point.solve_point`).
+    squeeze : float
+        dh0/dt [m/s] (the source rho dh0/dt; no dv/dt).
+    """
+
+    settings = DriverSettings()
+    continuation_parameter = "compliance"
+    grid_note = ""
+
+    def __init__(self, scene, setup: PointSetup, gap: float, p_bc_fn=None,
+                 squeeze: float = 0.0) -> None:
+        self.scene = scene
+        self.boundary_pressure = p_bc_fn
+        self.squeeze = float(squeeze)
+        self.gap = float(gap)
+        self.setup = setup
+        self.fine_nodes = (setup.grid.x.size, setup.grid.y.size)
+        self.elastic = True
+        self.symmetric = False
+        self._levels = {}
+        self._problems = []
+
+    def level(self, nodes: tuple[int, int], half: bool | None = None) -> PointLevel:
+        key = (tuple(nodes), False)
+        if key not in self._levels:
+            setup = self.setup if tuple(nodes) == self.fine_nodes else \
+                elastic_gap_setup(self.scene, tuple(nodes), self.setup.p_ref)
+            self._levels[key] = PointLevel(setup, tuple(nodes),
+                                           boundary_values(setup.grid, self.boundary_pressure))
+        return self._levels[key]
+
+    def levels(self) -> list[PointLevel]:
+        return [self.level(self.fine_nodes)]
+
+    def problem(self, level: PointLevel, s: float = 1.0,
+                tolerance: float | None = None) -> TransientPointProblem:
+        problem = _make_step_problem(self.scene, level.setup, self.gap, level.p_bc,
+                                     squeeze=self.squeeze, compliance_scale=s,
+                                     tolerance=tolerance)
+        self._problems.append(problem)
+        return problem
+
+    def initial_guess(self, level: PointLevel, problem: PointProblem,
+                      s: float = 1.0) -> np.ndarray:
+        return rigid_start(self.scene, level.setup, problem, self.gap)
 
 
 def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
                       boundary_pressure: Callable | np.ndarray | None = None,
-                      max_iterations: int | None = None) -> Result:
+                      max_iterations: int | None = None, progress=None) -> Result:
     """Steady elastic point contact with a prescribed rigid offset h0 = ``load.gap``.
 
     The film is h = h0 + g + v[p] (half-space compliance) and the steady Reynolds equation
     carries the squeeze source rho dh0/dt (no dv/dt): the start of
     :func:`solve_elastic_squeeze_series` and its quasi-steady comparison.
-    :func:`bearing_fem.point.solve_point` handles elastic scenes under a load; this is the
-    gap-controlled counterpart (no load balance, uniform grid in sqrt(2 rx h0) units).
+    :func:`bearing_fem.contacts.point.solve_point` handles elastic scenes under a load;
+    this is the gap-controlled counterpart (no load balance, uniform grid in
+    sqrt(2 rx h0) units), solved by the shared driver (:class:`ElasticGapModel`).
 
     Parameters
     ----------
@@ -375,24 +414,26 @@ def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
         Dirichlet pressure [Pa]: ``(x [m], y [m]) -> p`` or nodal values (ny, nx). Default 0.
     max_iterations : int, optional
         Newton iterations per attempt (default ``scene.solver.max_iterations``).
+    progress : callable, optional
+        Progress callback (:func:`bearing_fem.contacts.driver.solve_levels`).
 
     Returns
     -------
     Result
-        As :func:`~bearing_fem.point.solve_point`; never raises for non-convergence.
+        As :func:`~bearing_fem.contacts.point.solve_point`; never raises for
+        non-convergence.
     """
-    who = "solve_elastic_gap"
-    _check_scene(scene, who)
+    _check_scene(scene, "solve_elastic_gap")
     sq = float(squeeze_velocity)
     if not math.isfinite(sq):
         raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
+    if max_iterations is not None:
+        scene = dc_replace(scene, solver=dc_replace(scene.solver,
+                                                    max_iterations=int(max_iterations)))
     t0 = time.perf_counter()
     setup = elastic_gap_setup(scene, pressure_scale=_pressure_scale(scene, abs(sq)))
-    p_bc = _boundary_values(setup.grid, boundary_pressure)
-    maxit = max_iterations or scene.solver.max_iterations
-    z, status, its, problem, steps, hist = _solve_start(scene, setup, scene.load.gap, p_bc,
-                                                        sq, maxit)
-    return _result(scene, setup, problem, z, status, its, t0, steps, hist, "steady elastic")
+    model = ElasticGapModel(scene, setup, scene.load.gap, boundary_pressure, sq)
+    return solve_newton_model(model, scene, t0, progress=progress, prefix="steady elastic: ")
 
 
 def _pressure_scale(scene, rate: float) -> float:
@@ -403,20 +444,16 @@ def _pressure_scale(scene, rate: float) -> float:
                                         + rate * lx**2 / h0) / h0**2
 
 
-def _result(scene, setup: PointSetup, problem: TransientPointProblem, z: np.ndarray,
-            status: str, iterations: int, t0: float, steps, history, what: str) -> Result:
-    p, h0 = problem.unpack(z)
+def _step_result(scene, model: ElasticGapModel, problem: TransientPointProblem,
+                 z: np.ndarray, status: str, iterations: int, t0: float, history,
+                 what: str) -> Result:
+    """Result of one step of a series (no error estimate: the steps share one grid)."""
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
-    tol = scene.solver.tolerance
-    n_cont = len([s for s in steps if s[0] < 1.0])
-    note = f", continuation in compliance ({n_cont} steps)" if n_cont else ""
-    msg = outcome_message(status, iterations, resid, tol, prefix=f"{what}: ", detail=note)
-    if scene.model.cavitation == "reynolds":
-        p = np.maximum(p, 0.0)
-    sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(h0)))
-    res = _finish(sc, setup, problem, p, h0, status, msg, t0, iterations=iterations,
-                  history=history, continuation_steps=steps)
+    msg = outcome_message(status, iterations, resid, scene.solver.tolerance,
+                          prefix=f"{what}: ")
+    res = finish(scene, model.solution(problem, z), status=status, message=msg, t0=t0,
+                 iterations=iterations, history=history)
     res.quantities["gmres_iterations"] = float(problem.linear_iterations)
     return res
 
@@ -445,7 +482,7 @@ def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = 
         Relative amplitude [-], 0 <= eps < 1.
     omega : float, optional
         Angular frequency [rad/s], > 0; default u_m / sqrt(2 rx h0) (as
-        :func:`~bearing_fem.point.solve_squeeze_series`).
+        :func:`~bearing_fem.contacts.point.solve_squeeze_series`).
     n_steps : int
         Time steps per period (>= 2); dt = 2 pi/(omega n_steps) [s].
     periods : int
@@ -507,18 +544,22 @@ def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = 
     times = t0 + dt * np.arange(n_total + 1)
     gaps = h0m * (1.0 + eps * np.cos(omega * times))
     rates = -h0m * eps * omega * np.sin(omega * times)
+    if max_iterations is not None:
+        scene = dc_replace(scene, solver=dc_replace(scene.solver,
+                                                    max_iterations=int(max_iterations)))
     setup = elastic_gap_setup(scene, pressure_scale=_pressure_scale(scene, h0m * eps * omega))
-    maxit = max_iterations or scene.solver.max_iterations
+    maxit = scene.solver.max_iterations
     tol = scene.solver.tolerance
 
-    def p_bc_at(t: float) -> np.ndarray:
+    def p_bc_at(t: float):
         if boundary_pressure is None:
-            return _boundary_values(setup.grid, None)
-        return _boundary_values(setup.grid, lambda x, y: boundary_pressure(x, y, t))
+            return None
+        return lambda x, y: boundary_pressure(x, y, t)
 
     def step_scene(g: float):
         return dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
 
+    budget = make_budget(scene.solver)
     results: list[Result] = []
     masses: list[np.ndarray] = []   # (rho h) at the quadrature points, latest first
     zs: list[np.ndarray] = []
@@ -526,31 +567,34 @@ def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = 
     status, message = "converged", ""
     for n, (t, g, rate) in enumerate(zip(times, gaps, rates)):
         clock = time.perf_counter()
-        p_bc = p_bc_at(t)
         what = f"step {n} (t = {t:.6g} s)"
-        if n == 0 or scheme == "quasi-steady":
-            if n == 0:
-                z, st, its, problem, steps, hist = _solve_start(scene, setup, float(g),
-                                                                p_bc, float(rate), maxit)
-            else:
-                problem = _make_step_problem(scene, setup, float(g), p_bc,
-                                             squeeze=float(rate))
-                out = damped_newton(problem, _guess(problem, zs), tol=tol,
-                                    max_iterations=maxit)
-                z, st, its, steps, hist = out.z, out.status, out.iterations, [], out.history
+        sc = step_scene(g)
+        model = ElasticGapModel(sc, setup, float(g), p_bc_at(t), float(rate))
+        level = model.levels()[0]
+        steps: list = []
+        if n == 0:
+            out = solve_levels(model, sc.solver, budget=budget)
+            z, st, its, problem, hist, steps = (out.z, out.status, out.iterations,
+                                                out.problem, out.history, out.steps)
+        elif scheme == "quasi-steady":
+            problem = model.problem(level, 1.0, tol)
+            res_n = damped_newton(problem, _guess(problem, zs), tol=tol, max_iterations=maxit,
+                                  budget=budget)
+            z, st, its, hist = res_n.z, res_n.status, res_n.iterations, res_n.history
         else:
             coeffs = BDF_COEFFICIENTS[scheme]
-            problem = _make_step_problem(scene, setup, float(g), p_bc, time_step=dt,
+            problem = _make_step_problem(sc, setup, float(g), level.p_bc, time_step=dt,
                                          coefficients=coeffs,
-                                         history=masses[:len(coeffs) - 1])
-            z, st, its, hist = _step_newton(problem, zs, tol, maxit)
-            steps = []
-        res = _result(step_scene(g), setup, problem, z, st, its, clock, steps, hist, what)
+                                         history=masses[:len(coeffs) - 1], tolerance=tol)
+            z, st, its, hist = _step_newton(problem, zs, tol, maxit, budget)
+        res = _step_result(sc, model, problem, z, st, its, clock, hist, what)
+        res.continuation = list(steps)
         if not res.success:
             failure = res
             status = st
+            spent = f"; spent {budget.describe()}" if st in BUDGET_STATUSES else ""
             message = (f"{what} {st}: series stopped after {n} of {n_total + 1} instants "
-                       f"({res.message})")
+                       f"({res.message}{spent})")
             break
         p, _ = problem.unpack(z)
         masses.insert(0, problem.mass_q(p, float(g)))
@@ -588,15 +632,15 @@ def _guess(problem: TransientPointProblem, zs: list[np.ndarray]) -> np.ndarray:
 
 
 def _step_newton(problem: TransientPointProblem, zs: list[np.ndarray], tol: float,
-                 maxit: int):
+                 maxit: int, budget=None):
     """Newton from the extrapolated start; one retry from the previous step."""
     z0 = _guess(problem, zs)
-    out = damped_newton(problem, z0, tol=tol, max_iterations=maxit)
+    out = damped_newton(problem, z0, tol=tol, max_iterations=maxit, budget=budget)
     its, history = out.iterations, list(out.history)
-    if not out.converged and z0 is not zs[0]:
+    if not out.converged and z0 is not zs[0] and out.status not in BUDGET_STATUSES:
         log.info("time step: Newton %s from the extrapolated start; retrying from the "
                  "previous step", out.status)
-        out = damped_newton(problem, zs[0], tol=tol, max_iterations=maxit)
+        out = damped_newton(problem, zs[0], tol=tol, max_iterations=maxit, budget=budget)
         its += out.iterations
         history += list(out.history)
     return out.z, out.status, its, history

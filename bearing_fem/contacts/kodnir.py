@@ -49,7 +49,7 @@ discretisation-error indicator.
 Stabilisation. Where exp(b_alpha k) is large, eps -> 0 and the equation degenerates to
 the advection of k through the elastic film term C k (Galerkin P1 then gives odd-even
 oscillations). The flux is stabilised by streamline-upwind Petrov-Galerkin exactly as
-in :mod:`bearing_fem.reynolds` (test function v + tau beta dv/dz, advection speed
+in :mod:`bearing_fem.physics.reynolds` (test function v + tau beta dv/dz, advection speed
 beta = -C, tau beta = -(dz/2)(coth Pe - 1/Pe), Pe = C dz / (2 eps), multiplying the
 element strong residual S = -d(eps)/dz dk/dz - dH/dz); consistent (S = 0 for the exact
 solution) and absent when C = 0. The derivatives of the pointwise flux are taken by the
@@ -71,10 +71,11 @@ import scipy.sparse.linalg as spla
 from scipy.optimize import brentq
 from skfem import CellBasis, ElementLineP1, MeshLine
 
-from .fe import QuadratureOperators, quadrature_operators
-from .line import fischer_burmeister
-from .newton import NewtonOutcome, damped_newton
-from .reynolds import _coth_minus_inverse
+from ..numerics.fe import QuadratureOperators, quadrature_operators
+from .problem import fischer_burmeister
+from ..numerics.newton import NewtonOutcome, damped_newton
+from ..post import parabola_vertex
+from ..physics.reynolds import upwind_factor
 
 log = logging.getLogger(__name__)
 
@@ -176,7 +177,7 @@ def _flux(k, H, kp, Hp, dz, b_alpha: float, C: float):
     if C > 0.0:
         strong = -eps * (3.0 * Hp / H - b_alpha * kp) * kp - Hp
         pe = C * dz / (2.0 * eps)
-        f = f - 0.5 * dz * _coth_minus_inverse(pe) * strong
+        f = f - 0.5 * dz * upwind_factor(pe) * strong
     return f
 
 
@@ -388,19 +389,6 @@ class KodnirResult:
 # ----------------------------------------------------------------------------------------
 # Post-processing of a discrete solution
 # ----------------------------------------------------------------------------------------
-def _parabola_extremum(z: np.ndarray, f: np.ndarray, i: int) -> tuple[float, float]:
-    """Vertex of the parabola through nodes i-1, i, i+1 (falls back to the node)."""
-    if i <= 0 or i >= z.size - 1:
-        return float(z[i]), float(f[i])
-    c = np.polyfit(z[i - 1:i + 2] - z[i], f[i - 1:i + 2], 2)
-    if c[0] == 0.0:
-        return float(z[i]), float(f[i])
-    zv = -c[1] / (2 * c[0])
-    if abs(zv) > max(z[i + 1] - z[i], z[i] - z[i - 1]):
-        return float(z[i]), float(f[i])
-    return float(z[i] + zv), float(np.polyval(c, zv))
-
-
 #: Relative level below which a nodal k counts as zero (cavitated) in post-processing.
 PRESSURISED_FLOOR = 1e-12
 
@@ -460,11 +448,11 @@ def _finish(res: KodnirResult, prob: KodnirProblem, u: np.ndarray) -> KodnirResu
     res.flux = float(prob.nodal_residual(k, h_off)[-1])
     res.z_a = -math.sqrt(max(1.0 - h_off, 0.0))
     res.z_a_free_boundary = _free_boundary(z, k)
-    res.z_k_max, res.k_max = _parabola_extremum(z, k, int(np.argmax(k)))
+    res.z_k_max, res.k_max = parabola_vertex(z, k, int(np.argmax(k)))
     inside = z >= res.z_a
     idx = np.nonzero(inside)[0]
     i_min = int(idx[np.argmin(H[idx])])
-    res.z_h_min, res.h_min = _parabola_extremum(z, H, i_min)
+    res.z_h_min, res.h_min = parabola_vertex(z, H, i_min)
     res.friction_integral, res.couette_integral = _integrals(prob, k, h_off, res.z_a)
     return res
 
@@ -778,7 +766,7 @@ def kodnir_scales(h_star: float, radius: float, viscosity: float, sum_speed: flo
         B1 = sqrt(2 h* R), B = 6 eta0 U_sum B1/h*^2, C = A' B/(E h*) with
         A' = 2.54 b_H, b_H = 1.52 sqrt(q_H R/E), and B alpha.
     """
-    from .elasticity import kodnir_local_coefficient
+    from ..physics.elasticity import kodnir_local_coefficient
 
     for name, val, unit in (("h_star", h_star, "m"), ("radius", radius, "m"),
                             ("viscosity", viscosity, "Pa s"), ("sum_speed", sum_speed, "m/s")):

@@ -7,7 +7,7 @@ gap curvatures [1/m]; eta0 [Pa s]; alpha Barus coefficient [1/Pa]; u_m mean spee
 
 Grid: a tensor-product grid x (nx,), y (ny,) meshed by ``ElementQuad1`` cells, node
 numbering ``j*nx + i`` (x fastest), the layout of
-:class:`~bearing_fem.elasticity.HalfSpacePoint`. Fields in the :class:`Result` are
+:class:`~bearing_fem.physics.elasticity.HalfSpacePoint`. Fields in the :class:`Result` are
 ``(ny, nx)`` arrays, ``pressure[j, i]`` at ``(x[i], y[j])``.
 
 Film: h = h0 + x^2/(2 rx) + y^2/(2 ry) + v(x, y) (geometry exact at the quadrature
@@ -29,37 +29,45 @@ Two paths (a scene pays only for what it needs):
   (Reynolds cavitation q >= 0). p = -ln(1 - alpha q)/alpha exists only while
   alpha max q < 1; otherwise status ``no_solution`` and the fields hold q.
   Default rigid grid: sinh-graded (fine at the centre), since no FFT is needed.
-* **Newton** - everything else: damped Newton (:func:`bearing_fem.newton.damped_newton`)
+* **Newton** - everything else: damped Newton (:func:`bearing_fem.numerics.newton.damped_newton`)
   on the scaled unknowns (p at interior nodes, h0 under load balance) with
-  Fischer-Burmeister cavitation rows and a load row, as :mod:`bearing_fem.line`. The
+  Fischer-Burmeister cavitation rows and a load row, as :mod:`bearing_fem.contacts.line`. The
   Jacobian dR/dp = A_p + A_h C couples the sparse Reynolds blocks with the dense
   half-space compliance C (FFT apply); each Newton step is solved by GMRES with the
   matrix-free Jacobian, preconditioned by a sparse LU of A_p + A_h C_near
   (C truncated to a near-field stencil; nested-dissection order), to an inexact-Newton
   forcing tolerance. Elastic scenes with Barus viscosity take the Poiseuille term from
   the interpolated nodal reduced pressure (``REDUCED_POISEUILLE``). Grid sequencing
-  (coarse solve, bilinear interpolation, few fine steps) and continuation in alpha as
-  :mod:`bearing_fem.solver`, warm-started from the interpolated solution on finer grids.
+  (coarse solve, bilinear interpolation, few fine steps) and continuation in alpha by
+  the shared driver (:mod:`bearing_fem.contacts.driver`), warm-started from the
+  interpolated solution on finer grids (:data:`POINT_DRIVER`).
 """
 from __future__ import annotations
 
 import logging
 import math
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
-from skfem import CellBasis, ElementQuad1, MeshQuad
 
-from .errors import SceneError
-from .fe import QuadratureOperators, quadrature_operators
-from .line import ScaledResidual, fischer_burmeister
-from .newton import continuation, damped_newton, gmres_right, outcome_message
-from .result import Result
-from .reynolds import FluxModel, UpwindFluxModel
+from .. import units
+from ..analytic import reduced_from_barus
+from ..errors import SceneError
+from ..formulas import point_central_film_nvm
+from ..numerics.newton import gmres_right
+from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
+from ..physics.reynolds import FluxModel, UpwindFluxModel
+from ..post import film_numbers, friction_and_heat
+from ..result import Result
+from ..scene import Scene
+from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
+from .linear import active_set_solve, pressure_from_reduced
+from .point_grid import LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates
+from .problem import ScaledResidual, fischer_burmeister
 
 log = logging.getLogger(__name__)
 
@@ -138,119 +146,6 @@ GMRES_FORCING_MAX = 1e-3
 #: Newton tolerance. Only the last one or two steps are affected (where |F_k| is within a
 #: few decades of tol); there GMRES stops after ~10 instead of 30-40 iterations.
 GMRES_TOLERANCE_FRACTION = 0.1
-#: SuperLU threshold partial pivoting of the preconditioner LU: the diagonal is kept as
-#: pivot unless it is below this fraction of the largest entry of its column (the fill-
-#: reducing nested-dissection order survives; 1.0 would be classical partial pivoting).
-LU_PIVOT_THRESHOLD = 0.1
-#: Nested dissection: blocks of at most this many nodes per side are not split further
-#: (measured on the 255 x 255 free nodes of 257^2: 4 -> fill 5.2e6, factor 0.21 s,
-#: solve 6 ms; COLAMD: fill 9.0e6, 0.67 s, 15 ms; MMD on A^T + A: 5.5e6, 0.28 s, 8 ms).
-ND_LEAF_NODES = 4
-
-
-# ---------------------------------------------------------------------------------------
-# grid
-# ---------------------------------------------------------------------------------------
-@dataclass
-class PointGrid:
-    """Tensor grid of bilinear quads with node numbering ``j*nx + i``.
-
-    Attributes
-    ----------
-    x, y : ndarray
-        Node coordinates [m], strictly increasing.
-    mirror_y : bool
-        True for the half y >= 0 of a y-symmetric domain (row 0 is the symmetry line).
-    mesh : skfem.MeshQuad
-    basis : skfem.CellBasis
-    ops : QuadratureOperators
-    """
-
-    x: np.ndarray
-    y: np.ndarray
-    mesh: MeshQuad
-    basis: CellBasis
-    ops: QuadratureOperators
-    mirror_y: bool = False
-
-    @classmethod
-    def tensor(cls, x: np.ndarray, y: np.ndarray, intorder: int | None = None,
-               mirror_y: bool = False) -> "PointGrid":
-        """Build the grid from node coordinates x (nx,), y (ny,) [m].
-
-        ``mirror_y``: the grid is the half y >= 0 (``y[0] = 0``) of a domain symmetric in
-        y; its first row is the symmetry line (free nodes, natural condition).
-        """
-        x = np.asarray(x, dtype=float)
-        y = np.asarray(y, dtype=float)
-        for name, v in (("x", x), ("y", y)):
-            if v.ndim != 1 or v.size < 3 or np.any(np.diff(v) <= 0):
-                raise ValueError(f"grid {name} must be >= 3 strictly increasing coordinates "
-                                 f"in m, got shape {v.shape}")
-        nx, ny = x.size, y.size
-        xx, yy = np.meshgrid(x, y)  # (ny, nx): flat index j*nx + i
-        p = np.vstack([xx.ravel(), yy.ravel()])
-        i, j = np.meshgrid(np.arange(nx - 1), np.arange(ny - 1))
-        n00 = (j * nx + i).ravel()
-        # same local orientation as MeshQuad.init_tensor: (i,j), (i,j+1), (i+1,j+1), (i+1,j)
-        t = np.vstack([n00, n00 + nx, n00 + nx + 1, n00 + 1])
-        mesh = MeshQuad(p, t)
-        kw = {} if intorder is None else {"intorder": intorder}
-        basis = CellBasis(mesh, ElementQuad1(), **kw)
-        if mirror_y and y[0] != 0.0:
-            raise ValueError(f"a mirrored grid starts at y = 0 m, got y[0] = {y[0]!r} m")
-        return cls(x=x, y=y, mesh=mesh, basis=basis, ops=quadrature_operators(basis),
-                   mirror_y=mirror_y)
-
-    @property
-    def shape(self) -> tuple[int, int]:
-        """(ny, nx)."""
-        return self.y.size, self.x.size
-
-    @property
-    def size(self) -> int:
-        return self.x.size * self.y.size
-
-    def node_coordinates(self) -> tuple[np.ndarray, np.ndarray]:
-        """Flat node coordinates (X, Y) [m], index j*nx + i."""
-        xx, yy = np.meshgrid(self.x, self.y)
-        return xx.ravel(), yy.ravel()
-
-    def boundary_mask(self) -> np.ndarray:
-        """Flat boolean mask of the boundary nodes."""
-        m = np.zeros(self.shape, dtype=bool)
-        m[0, :] = m[-1, :] = m[:, 0] = m[:, -1] = True
-        if self.mirror_y:
-            m[0, 1:-1] = False  # symmetry line
-        return m.ravel()
-
-    def interpolate(self, field: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-        """Bilinear interpolation of a nodal field to points (x, y) [m] (flattened)."""
-        from scipy.interpolate import RegularGridInterpolator
-
-        f = RegularGridInterpolator((self.y, self.x), np.asarray(field).reshape(self.shape),
-                                    bounds_error=False, fill_value=None)
-        return f(np.column_stack([np.ravel(y), np.ravel(x)]))
-
-
-def graded_coordinates(lo: float, hi: float, nodes: int, unit: float,
-                       stretch: float = 1.0) -> np.ndarray:
-    """Nodes on [lo, hi] * unit [m], dense near 0: x = unit stretch sinh(s), s uniform.
-
-    Parameters
-    ----------
-    lo, hi : float
-        Range in units of ``unit`` [-], lo < 0 < hi.
-    nodes : int
-        Node count.
-    unit : float
-        Length unit [m].
-    stretch : float
-        Length [in ``unit``] below which the spacing is nearly uniform [-].
-    """
-    s = np.linspace(math.asinh(lo / stretch), math.asinh(hi / stretch), nodes)
-    return unit * stretch * np.sinh(s)
-
 
 # ---------------------------------------------------------------------------------------
 # setup
@@ -306,14 +201,10 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
     Rigid scenes: lengths in sqrt(2 rx h0) (x) and sqrt(2 ry h0) (y), sinh-graded grid.
     Elastic scenes: lengths in the Hertz semi-axes a_x, a_y, uniform grid (FFT compliance).
     ``nodes`` overrides ``scene.mesh.nodes`` (grid sequencing). ``symmetric`` (elastic
-    scenes under load with a y-symmetric grid, see :func:`_symmetric`): the half grid
-    y >= 0 with :class:`~bearing_fem.elasticity.MirroredHalfSpacePoint`; ``nodes`` still
+    scenes under load with a y-symmetric grid, see :meth:`PointModel._symmetric`): the half grid
+    y >= 0 with :class:`~bearing_fem.physics.elasticity.MirroredHalfSpacePoint`; ``nodes`` still
     counts the whole grid.
     """
-    from . import units
-    from .elasticity import HalfSpacePoint, MirroredHalfSpacePoint
-    from .formulas import point_central_film_nvm
-
     rx, ry = scene.contact.rx, scene.contact.ry
     lub, kin, model = scene.lubricant, scene.kinematics, scene.model
     u_m = kin.mean_speed
@@ -378,13 +269,13 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
     return PointSetup(grid, None, p_ref, h0, x_unit, y_unit, h0, 0.0, None)
 
 
-def _is_linear(scene) -> bool:
+def is_linear(scene) -> bool:
     m, lub = scene.model, scene.lubricant
     return (m.elasticity == "rigid" and lub.density == "incompressible"
             and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
 
 
-def _boundary_values(grid: PointGrid, boundary_pressure) -> np.ndarray:
+def boundary_values(grid: PointGrid, boundary_pressure) -> np.ndarray:
     """Flat nodal Dirichlet pressure [Pa] (zero off the boundary)."""
     out = np.zeros(grid.size)
     if boundary_pressure is None:
@@ -448,131 +339,9 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
     f = ops.weak_divergence(mean_speed * h, zero)
     if squeeze_velocity:
         f = f - ops.value.T @ (ops.weights * squeeze_velocity)
-    from .solver import active_set_solve
-
     free = np.nonzero(~grid.boundary_mask())[0]
     return active_set_solve(a, f, np.where(grid.boundary_mask(), q_bc, 0.0), free,
                             cavitation)
-
-
-def _solve_linear(scene, setup: PointSetup, p_bc: np.ndarray, squeeze_velocity: float,
-                  t0: float) -> Result:
-    from .analytic import reduced_from_barus
-
-    lub = scene.lubricant
-    alpha = lub.effective_piezo
-    h0 = scene.load.gap
-    grid = setup.grid
-    q_bc = reduced_from_barus(p_bc, alpha) if alpha > 0 else p_bc
-    q, solves, active = reduced_pressure_solve(
-        grid, h0, scene.contact.rx, scene.contact.ry, scene.kinematics.mean_speed,
-        lub.viscosity, q_bc, scene.model.cavitation, squeeze_velocity)
-    from .solver import pressure_from_reduced
-
-    problem = PointProblem(grid, _flux(scene, setup), scene.contact.rx, scene.contact.ry,
-                           None, scene.model.cavitation, None, h0, setup.p_ref, setup.h_ref,
-                           lub.viscosity, p_bc, squeeze_velocity)
-    status, field, msg = pressure_from_reduced(q, alpha, solves,
-                                               f", {grid.x.size} x {grid.y.size} nodes")
-    return _finish(scene, setup, problem, field, h0, status, msg, t0, linear_solves=solves,
-                   post=status == "linear", cavitated=active)
-
-
-# ---------------------------------------------------------------------------------------
-# preconditioner pattern
-# ---------------------------------------------------------------------------------------
-def nested_dissection(nx: int, ny: int, leaf: int = ND_LEAF_NODES) -> np.ndarray:
-    """Nested-dissection order of an nx x ny tensor grid (flat index j*nx + i).
-
-    The grid is split recursively across its longer side by one grid line (a separator
-    for the 9-point stencil of bilinear quads); both halves are ordered first, the
-    separator last. Blocks of at most ``leaf`` nodes per side keep their natural order.
-
-    Parameters
-    ----------
-    nx, ny : int
-        Nodes along x and y [-].
-    leaf : int
-        Largest block side [nodes] that is not split further.
-
-    Returns
-    -------
-    perm : ndarray of int, shape (nx * ny,)
-        ``perm[k]`` is the flat index of the node eliminated k-th.
-    """
-    out: list[np.ndarray] = []
-    stack = [(0, nx, 0, ny, False)]
-    while stack:  # explicit stack: (i0, i1, j0, j1, emit) with emit = separator line
-        i0, i1, j0, j1, emit = stack.pop()
-        if emit:
-            out.append(np.add.outer(np.arange(j0, j1) * nx, np.arange(i0, i1)).ravel())
-            continue
-        ni, nj = i1 - i0, j1 - j0
-        if ni <= 0 or nj <= 0:
-            continue
-        if ni <= leaf and nj <= leaf:
-            out.append(np.add.outer(np.arange(j0, j1) * nx, np.arange(i0, i1)).ravel())
-            continue
-        # pushed in reverse: first half, second half, then the separator
-        if ni >= nj:
-            c = (i0 + i1) // 2
-            stack += [(c, c + 1, j0, j1, True), (c + 1, i1, j0, j1, False),
-                      (i0, c, j0, j1, False)]
-        else:
-            c = (j0 + j1) // 2
-            stack += [(i0, i1, c, c + 1, True), (i0, i1, c + 1, j1, False),
-                      (i0, i1, j0, c, False)]
-    return np.concatenate(out)
-
-
-class _FreePattern:
-    """Free-node block of a grid's assembler pattern, permuted for a sparse LU (internal).
-
-    ``factor(m, scale, diag)`` forms diag(scale) M[free, free] + diag(diag) (M given by
-    its values on the assembler pattern) in nested-dissection order as a csc matrix
-    and factors it; ``perm``/``inverse`` map free-node vectors to that order and back.
-    """
-
-    def __init__(self, grid: PointGrid, free: np.ndarray) -> None:
-        ny, nx = grid.shape
-        interior = np.zeros(grid.size, dtype=bool)
-        interior.reshape(ny, nx)[1:-1, 1:-1] = True
-        self.dissected = bool(np.array_equal(np.nonzero(interior)[0], free))
-        if self.dissected:
-            self.perm = nested_dissection(nx - 2, ny - 2)
-        else:  # not the interior block of the grid: SuperLU orders it (MMD on A^T + A)
-            self.perm = np.arange(free.size)
-        self.inverse = np.empty_like(self.perm)
-        self.inverse[self.perm] = np.arange(self.perm.size)
-        asm = grid.ops.assembler
-        n = grid.size
-        where = np.full(n, -1, dtype=np.int64)  # node -> position in the permuted order
-        where[free[self.perm]] = np.arange(free.size)
-        rows = np.repeat(np.arange(n), np.diff(asm.indptr))
-        r, c = where[rows], where[asm.indices]
-        keep = np.nonzero((r >= 0) & (c >= 0))[0]
-        r, c = r[keep], c[keep]
-        order = np.lexsort((r, c))  # csc: by column, then row
-        self._select = keep[order]
-        self._row = r[order]
-        self.indices = r[order].astype(np.int32)
-        self.indptr = np.searchsorted(c[order], np.arange(free.size + 1)).astype(np.int32)
-        diag_entries = np.nonzero(self._row == c[order])[0]
-        if diag_entries.size != free.size:
-            raise ValueError("assembler pattern lacks a diagonal entry at a free node")
-        self._diag = diag_entries[np.argsort(self._row[diag_entries])]
-        self.size = free.size
-
-    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray) -> spla.SuperLU:
-        """splu of diag(scale) M[free, free] + diag(diag) in the permuted order.
-
-        ``scale`` and ``diag`` are free-node vectors in the original (free) order.
-        """
-        data = m[self._select] * np.asarray(scale)[self.perm][self._row]
-        data[self._diag] += np.asarray(diag)[self.perm]
-        a = sp.csc_matrix((data, self.indices, self.indptr), shape=(self.size, self.size))
-        return spla.splu(a, permc_spec="NATURAL" if self.dissected else "MMD_AT_PLUS_A",
-                         diag_pivot_thresh=LU_PIVOT_THRESHOLD, options={"SymmetricMode": True})
 
 
 # ---------------------------------------------------------------------------------------
@@ -714,8 +483,8 @@ class PointProblem(ScaledResidual):
         """Nodal weak residual R_i [m^3/s] (all nodes)."""
         pq, h, gp, gh = self.fields_q(p, h0)
         ops = self.grid.ops
-        if self._reduced:
-            fl = self.flux.flux(pq, h, gp, gh, ops.element_size, gq=self._grad_reduced(p))
+        if self.uses_reduced:
+            fl = self.flux.flux(pq, h, gp, gh, ops.element_size, gq=self.grad_reduced(p))
         else:
             fl = self.flux.flux(pq, h, gp, gh, ops.element_size)
         r = ops.weak_divergence(*fl)
@@ -730,9 +499,9 @@ class PointProblem(ScaledResidual):
         ops = self.grid.ops
         pq, h, gp, gh = self.fields_q(p, h0)
         asm = ops.assembler  # element-wise assembly on one fixed pattern
-        if self._reduced:
+        if self.uses_reduced:
             fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
-                pq, h, gp, gh, ops.element_size, self._grad_reduced(p))
+                pq, h, gp, gh, ops.element_size, self.grad_reduced(p))
             zero = np.zeros_like(pq)
             fluidity = self.flux.fluidity(p)  # d grad q_h / d p_j = q'(p_j) grad phi_j
             extra = [(d, zero, (dgq[0][d], dgq[1][d]), fluidity) for d in range(2)]
@@ -782,10 +551,10 @@ class PointProblem(ScaledResidual):
         return sp.bmat([[j, sp.csr_matrix(col)], [sp.csr_matrix(load_row), None]],
                        format="csc")
 
-    def _free_pattern(self) -> _FreePattern:
+    def _free_pattern(self) -> FreePattern:
         """Free-node block of the assembler pattern in nested-dissection order (cached)."""
         if self._pattern is None:
-            self._pattern = _FreePattern(self.grid, self.free)
+            self._pattern = FreePattern(self.grid, self.free)
         return self._pattern
 
     def _preconditioner_lu(self, a_p: sp.spmatrix, a_h: sp.spmatrix, scale: np.ndarray,
@@ -889,7 +658,10 @@ class PointProblem(ScaledResidual):
         return dz
 
 
-def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
+def flux_model(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
+    """The Reynolds flux of a point scene on a setup: upwinded with the reduced-pressure
+    Poiseuille term for elastic scenes, plain for rigid ones; ``piezo_scale`` scales
+    alpha (continuation)."""
     if setup.compliance is not None:
         lub = scene.lubricant
         reduced = None
@@ -902,31 +674,7 @@ def _flux(scene, setup: PointSetup, piezo_scale: float = 1.0) -> FluxModel:
                                     compliance=setup.stab_compliance, piezo_scale=piezo_scale)
 
 
-def _make_problem(scene, setup: PointSetup, p_bc, squeeze_velocity: float,
-                  piezo_scale: float = 1.0, tolerance: float | None = None) -> PointProblem:
-    return PointProblem(setup.grid, _flux(scene, setup, piezo_scale), scene.contact.rx,
-                        scene.contact.ry, setup.compliance, scene.model.cavitation,
-                        scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
-                        scene.lubricant.viscosity, p_bc, squeeze_velocity,
-                        tolerance=tolerance)
-
-
-def _initial_guess(scene, setup: PointSetup, problem: PointProblem) -> np.ndarray:
-    """Hertzian pressure (elastic, loaded) or the rigid isoviscous solution."""
-    grid = setup.grid
-    X, Y = grid.node_coordinates()
-    if scene.load.force is not None and setup.compliance is not None:
-        hz = setup.hertz
-        p = hz.p_h * np.sqrt(np.maximum(1.0 - (X / hz.a_x) ** 2 - (Y / hz.a_y) ** 2, 0.0))
-        p = p * scene.load.force / (problem.mass @ p)
-        v0 = float(grid.interpolate(problem.displacement(p), np.array([0.0]),
-                                    np.array([0.0]))[0])
-        return problem.pack(p, setup.h_estimate - v0)
-    return _rigid_start(scene, setup, problem,
-                       scene.load.gap if scene.load.gap is not None else setup.h_ref)
-
-
-def _rigid_start(scene, setup: PointSetup, problem: PointProblem, h0: float) -> np.ndarray:
+def rigid_start(scene, setup: PointSetup, problem: PointProblem, h0: float) -> np.ndarray:
     """Isoviscous rigid (Kapitsa-type) solution at the offset h0 [m], with the
     problem's Dirichlet data and squeeze velocity, as packed unknowns of ``problem``."""
     q, _, _ = reduced_pressure_solve(setup.grid, h0, scene.contact.rx, scene.contact.ry,
@@ -937,191 +685,282 @@ def _rigid_start(scene, setup: PointSetup, problem: PointProblem, h0: float) -> 
     return problem.pack(q, h0)
 
 
-def _attempt(scene, setup, p_bc, squeeze, z0, max_iterations, initial_shift: float = 0.0,
-             tol: float | None = None, transferred: bool = False):
-    """Damped Newton on one grid, with alpha continuation as the fallback.
+#: How the shared driver attacks elastic point contacts (measured reasons at the
+#: constants above): a small decaying Newton shift from the Hertzian start and from an
+#: interpolated solution; at most TRANSFER_DIRECT_ITERATIONS direct iterations on a finer
+#: level, then warm alpha continuation from s = WARM_START_ALPHA; coarse levels and
+#: intermediate continuation steps stop at COARSE_TOLERANCE.
+POINT_DRIVER = DriverSettings(transfer_iterations=TRANSFER_DIRECT_ITERATIONS,
+                              start_shift=START_SHIFT, transfer_shift=TRANSFER_SHIFT,
+                              coarse_tolerance=COARSE_TOLERANCE,
+                              intermediate_tolerance=COARSE_TOLERANCE,
+                              warm_start=WARM_START_ALPHA)
+#: Rigid Newton scenes (loaded, or non-Barus laws): plain Newton as validated.
+RIGID_POINT_DRIVER = replace(POINT_DRIVER, start_shift=0.0, transfer_shift=0.0)
 
-    1. Direct Newton from ``z0`` (at most ``TRANSFER_DIRECT_ITERATIONS`` iterations when
-       ``z0`` was interpolated from a coarser grid).
-    2. Only for an interpolated ``z0``: warm continuation in alpha, s = WARM_START_ALPHA
-       -> 1, starting from ``z0`` itself.
-    3. Continuation in alpha from the Hertzian (or rigid) initial guess at s = 0.
 
-    ``tol`` (default ``scene.solver.tolerance``) is the Newton tolerance of this level;
-    intermediate continuation steps stop at max(tol, COARSE_TOLERANCE).
+@dataclass
+class PointLevel:
+    """One grid of a point scene's sequence (a driver level).
 
-    Returns
-    -------
-    z, status, iterations, history, steps [(s, status, iterations)], problem (s = 1),
-    linear (GMRES) iterations of all solves
+    Attributes
+    ----------
+    setup : PointSetup
+        The grid the Newton iterations run on (the half grid of a symmetric solve).
+    nodes : (int, int)
+        Whole-grid node counts (nx, ny).
+    p_bc : ndarray
+        Flat Dirichlet pressures of ``setup.grid`` [Pa].
     """
-    sol = scene.solver
-    tol = sol.tolerance if tol is None else tol
-    problems = []
 
-    def make(s: float = 1.0) -> PointProblem:
-        problems.append(_make_problem(scene, setup, p_bc, squeeze, piezo_scale=s,
-                                      tolerance=tol))
-        return problems[-1]
+    setup: PointSetup
+    nodes: tuple[int, int]
+    p_bc: np.ndarray
 
-    def linear() -> int:
-        return sum(p.linear_iterations for p in problems)
-
-    problem = make()
-    direct_cap = min(max_iterations, TRANSFER_DIRECT_ITERATIONS) if transferred \
-        else max_iterations
-    out = damped_newton(problem, z0, tol=tol, max_iterations=direct_cap,
-                        initial_shift=initial_shift)
-    history = list(out.history)
-    steps = [(1.0, out.status, out.iterations)]
-    iterations = out.iterations
-    if out.converged or not sol.continuation or scene.lubricant.effective_piezo == 0.0:
-        return out.z, out.status, iterations, history, steps, problem, linear()
-    starts = [(WARM_START_ALPHA, z0)] if transferred else []
-    starts.append((0.0, None))
-    for s_start, z_start in starts:
-        log.info("Newton %s after %d iterations; continuing in alpha from s = %g",
-                 out.status, iterations, s_start)
-        if z_start is None:
-            z_start = _initial_guess(scene, setup, problem)
-        cont = continuation(make, z_start, s_start=s_start,
-                            first_step=0.25 if s_start == 0.0 else 1.0 - s_start,
-                            tol=tol, intermediate_tol=max(tol, COARSE_TOLERANCE),
-                            max_iterations=max_iterations, initial_shift=initial_shift)
-        iterations += cont.iterations
-        steps += cont.steps
-        history += list(cont.last.history)
-        if cont.parameter >= 1.0 and cont.status == "converged":
-            return cont.z, "converged", iterations, history, steps, problem, linear()
-    return out.z, out.status, iterations, history, steps, problem, linear()
+    @property
+    def label(self) -> str:
+        return f"{self.nodes[0]}x{self.nodes[1]} nodes"
 
 
-def _levels(n: tuple[int, int]) -> list[tuple[int, int]]:
-    """Grid sequence halving the spacing each level, coarsest >= COARSEST_NODES."""
-    levels = [n]
-    while all((m - 1) % 2 == 0 and (m - 1) // 2 + 1 >= COARSEST_NODES for m in levels[-1]):
-        levels.append(tuple((m - 1) // 2 + 1 for m in levels[-1]))
-    return levels[::-1]
+class PointModel:
+    """A point-contact scene as a :class:`~bearing_fem.contacts.driver.ContactModel`.
 
+    Elastic loaded scenes are solved by grid sequencing (coarsest grid
+    ``COARSEST_NODES`` per direction); y-symmetric ones on the half grid y >= 0
+    (``Y_SYMMETRY``), mirrored to the whole grid for the result. Rigid scenes are one
+    level (linear path or Newton).
 
-def _transfer(z: np.ndarray, coarse: PointProblem, fine: PointProblem) -> np.ndarray:
-    """Bilinear interpolation of a coarse solution to a finer grid (same central film)."""
-    p_c, h0_c = coarse.unpack(z)
-    X, Y = fine.grid.node_coordinates()
-    p_f = coarse.grid.interpolate(p_c, X, Y)
-    p_f[~np.isin(np.arange(p_f.size), fine.free)] = fine.p_bc[
-        ~np.isin(np.arange(p_f.size), fine.free)]
-    o = np.array([0.0])
-    hc = float(coarse.grid.interpolate(coarse.film_nodes(p_c, h0_c), o, o)[0])
-    if fine.has_h0:
-        h0_f = hc - float(fine.grid.interpolate(fine.g_nodes + fine.displacement(p_f), o, o)[0])
-    else:
-        h0_f = h0_c
-    return fine.pack(p_f, h0_f)
+    Parameters
+    ----------
+    scene : Scene
+    boundary_pressure : callable or ndarray or None
+        Dirichlet pressure on the boundary [Pa] (see :func:`solve_point`).
+    squeeze_velocity : float
+        dh0/dt [m/s].
+    grid_scene : Scene, optional
+        The scene whose scales set the grids (default ``scene``); a rigid squeeze series
+        solves every instant on the grid of its mean gap.
+    """
 
+    def __init__(self, scene, boundary_pressure=None, squeeze_velocity: float = 0.0, *,
+                 grid_scene=None) -> None:
+        self.scene = scene
+        self.boundary_pressure = boundary_pressure
+        self.squeeze = float(squeeze_velocity)
+        self.grid_scene = scene if grid_scene is None else grid_scene
+        self.setup = point_setup(self.grid_scene)
+        grid = self.setup.grid
+        self.fine_nodes = (grid.x.size, grid.y.size)
+        self.elastic = self.setup.compliance is not None
+        self.symmetric = self._symmetric()
+        self.settings = POINT_DRIVER if self.elastic else RIGID_POINT_DRIVER
+        piezo = scene.lubricant.effective_piezo > 0.0
+        self.continuation_parameter = "alpha" if piezo else None
+        self.grid_note = ", each solved on its half y >= 0 by symmetry" if self.symmetric \
+            else ""
+        self._levels: dict[tuple[tuple[int, int], bool], PointLevel] = {}
+        self._problems: list[PointProblem] = []
 
-def _symmetric(scene, setup: PointSetup, boundary_pressure) -> bool:
-    """True if the elastic Newton solve may run on the half grid y >= 0 (``Y_SYMMETRY``):
-    a loaded elastic scene with zero boundary pressure on a grid whose rows mirror each
-    other about y = 0. The contact geometry (x^2/(2 rx) + y^2/(2 ry)), rolling along x and
-    the half-space kernel are even in y, so the discrete problem maps even pressures to
-    even residuals."""
-    y = setup.grid.y
-    return (Y_SYMMETRY and setup.compliance is not None and scene.load.force is not None
-            and boundary_pressure is None and y.size % 2 == 1
-            and np.array_equal(y, -y[::-1]))
+    def _symmetric(self) -> bool:
+        """True if the elastic Newton solve may run on the half grid y >= 0
+        (``Y_SYMMETRY``): a loaded elastic scene with zero boundary pressure on a grid
+        whose rows mirror each other about y = 0. The contact geometry
+        (x^2/(2 rx) + y^2/(2 ry)), rolling along x and the half-space kernel are even in
+        y, so the discrete problem maps even pressures to even residuals."""
+        y = self.setup.grid.y
+        return (Y_SYMMETRY and self.elastic and self.scene.load.force is not None
+                and self.boundary_pressure is None and y.size % 2 == 1
+                and bool(np.array_equal(y, -y[::-1])))
 
+    # -- levels ----------------------------------------------------------------------------
+    def level(self, nodes: tuple[int, int], half: bool | None = None) -> PointLevel:
+        """The scene on the grid of ``nodes`` (whole-grid counts), on its half y >= 0 when
+        ``half`` (default: as the model's solve). Cached: the driver recognises a level
+        by identity."""
+        half = self.symmetric if half is None else half
+        key = (tuple(nodes), half)
+        if key not in self._levels:
+            if tuple(nodes) == self.fine_nodes and not half:
+                setup = self.setup
+            else:
+                setup = point_setup(self.grid_scene, nodes=tuple(nodes), symmetric=half)
+            self._levels[key] = PointLevel(setup, tuple(nodes),
+                                           boundary_values(setup.grid, self.boundary_pressure))
+        return self._levels[key]
 
-def _solve_newton(scene, setup: PointSetup, p_bc_fn, squeeze: float, t0: float,
-                  max_iterations: int | None) -> Result:
-    sol = scene.solver
-    maxit = max_iterations or sol.max_iterations
-    n_fine = (setup.grid.x.size, setup.grid.y.size)
-    levels = _levels(n_fine) if setup.compliance is not None else [n_fine]
-    symmetric = _symmetric(scene, setup, p_bc_fn)
-    # the setup the Newton iterations run on at the finest level (whole or half grid)
-    work = point_setup(scene, nodes=n_fine, symmetric=True) if symmetric else setup
-    iterations, history, steps = 0, [], []
-    z, prev, status = None, None, "max_iterations"
-    linear_its = 0
-    problem = None
-    for n in levels:
-        lvl = work if n == n_fine else point_setup(scene, nodes=n, symmetric=symmetric)
-        p_bc = _boundary_values(lvl.grid, p_bc_fn)
-        problem = _make_problem(scene, lvl, p_bc, squeeze)
-        if z is None:
-            z0, shift = _initial_guess(scene, lvl, problem), START_SHIFT
+    def levels(self) -> list[PointLevel]:
+        if not self.elastic:
+            return [self.level(self.fine_nodes)]
+        seq = [self.fine_nodes]
+        while all((m - 1) % 2 == 0 and (m - 1) // 2 + 1 >= COARSEST_NODES for m in seq[-1]):
+            seq.append(tuple((m - 1) // 2 + 1 for m in seq[-1]))
+        return [self.level(n) for n in seq[::-1]]
+
+    def coarsen(self, level: PointLevel) -> PointLevel | None:
+        """The level with every other node in each direction, or None."""
+        nodes = level.nodes
+        if any((m - 1) % 2 or (m - 1) // 2 < 8 for m in nodes):
+            return None
+        coarse = tuple((m - 1) // 2 + 1 for m in nodes)
+        if self.symmetric and coarse[1] % 2 == 0:
+            return None
+        return self.level(coarse)
+
+    # -- problems --------------------------------------------------------------------------
+    def problem(self, level: PointLevel, s: float = 1.0,
+                tolerance: float | None = None) -> PointProblem:
+        scene = self.scene
+        setup = level.setup
+        problem = PointProblem(setup.grid, flux_model(scene, setup, s), scene.contact.rx,
+                               scene.contact.ry, setup.compliance, scene.model.cavitation,
+                               scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
+                               scene.lubricant.viscosity, level.p_bc, self.squeeze,
+                               tolerance=tolerance)
+        self._problems.append(problem)
+        return problem
+
+    def initial_guess(self, level: PointLevel, problem: PointProblem,
+                      s: float = 1.0) -> np.ndarray:
+        """Hertzian pressure (elastic, loaded) or the rigid isoviscous solution."""
+        scene = self.scene
+        setup = level.setup
+        grid = setup.grid
+        if scene.load.force is not None and setup.compliance is not None:
+            X, Y = grid.node_coordinates()
+            hz = setup.hertz
+            p = hz.p_h * np.sqrt(np.maximum(1.0 - (X / hz.a_x) ** 2 - (Y / hz.a_y) ** 2, 0.0))
+            p = p * scene.load.force / (problem.mass @ p)
+            v0 = float(grid.interpolate(problem.displacement(p), np.array([0.0]),
+                                        np.array([0.0]))[0])
+            return problem.pack(p, setup.h_estimate - v0)
+        return rigid_start(scene, setup, problem,
+                           scene.load.gap if scene.load.gap is not None else setup.h_ref)
+
+    def transfer(self, z: np.ndarray, coarse: PointProblem, fine: PointProblem) -> np.ndarray:
+        """Bilinear interpolation of a solution to another grid of the same domain (same
+        central film); boundary nodes take the fine problem's Dirichlet data."""
+        p_c, h0_c = coarse.unpack(z)
+        X, Y = fine.grid.node_coordinates()
+        p_f = coarse.grid.interpolate(p_c, X, Y)
+        fixed = np.ones(p_f.size, dtype=bool)
+        fixed[fine.free] = False
+        p_f[fixed] = fine.p_bc[fixed]
+        o = np.array([0.0])
+        hc = float(coarse.grid.interpolate(coarse.film_nodes(p_c, h0_c), o, o)[0])
+        if fine.has_h0:
+            h0_f = hc - float(fine.grid.interpolate(fine.g_nodes + fine.displacement(p_f),
+                                                    o, o)[0])
         else:
-            z0, shift = _transfer(z, prev, problem), TRANSFER_SHIFT
-        if setup.compliance is None:
-            shift = 0.0  # rigid Newton scenes: plain Newton as validated
-        # coarse levels only provide a start: the interpolation to the next grid leaves a
-        # residual ~1e-3..1e-2 there, so converging them below COARSE_TOLERANCE buys
-        # nothing; the finest level converges to the scene's tolerance
-        tol = sol.tolerance if n == n_fine else max(sol.tolerance, COARSE_TOLERANCE)
-        z, status, it, hist, st, problem, lin = _attempt(
-            scene, lvl, p_bc, squeeze, z0, maxit, initial_shift=shift, tol=tol,
-            transferred=prev is not None)
-        linear_its += lin
-        iterations += it
-        history += hist
-        steps += [(s, f"{stat} ({n[0]}x{n[1]} nodes)", i) for s, stat, i in st]
-        prev = problem
-        if status != "converged":
-            break
-    if status != "converged" and len(levels) > 1 and problem.grid.size != work.grid.size:
-        p_bc = _boundary_values(work.grid, p_bc_fn)
-        problem = _make_problem(scene, work, p_bc, squeeze)
-        z, status, it, hist, st, problem, lin = _attempt(
-            scene, work, p_bc, squeeze, _initial_guess(scene, work, problem), maxit,
-            initial_shift=START_SHIFT if work.compliance is not None else 0.0)
-        linear_its += lin
-        iterations += it
-        history += hist
-        steps += [(s, f"{stat} ({n_fine[0]}x{n_fine[1]} nodes)", i) for s, stat, i in st]
-    if symmetric:  # mirror to the whole grid; the residual below is the whole system's
+            h0_f = h0_c
+        return fine.pack(p_f, h0_f)
+
+    def whole(self, problem: PointProblem, z: np.ndarray) -> tuple[PointProblem, np.ndarray]:
+        """A half-grid solution mirrored to the whole grid (there the residual of the
+        whole discrete system is evaluated and reported); others as they are."""
+        if not problem.grid.mirror_y:
+            return problem, z
         p_half, h0 = problem.unpack(z)
-        whole = _make_problem(scene, setup, _boundary_values(setup.grid, p_bc_fn), squeeze)
-        z = whole.pack(problem.compliance.mirror(p_half).ravel(), h0)
-        problem = whole
-    p, h0 = problem.unpack(z)
-    problem.prepare(z)
-    resid = float(np.max(np.abs(problem.residual(z))))
-    n_cont = sum(1 for s in steps if s[0] < 1.0)
-    note = f", continuation in alpha ({n_cont} steps)" if n_cont else ""
-    half = ", each solved on its half y >= 0 by symmetry" if symmetric else ""
-    msg = outcome_message(status, iterations, resid, sol.tolerance,
-                          detail=f" (grids {[f'{a}x{b}' for a, b in levels]}{half}{note})",
-                          cap=maxit)
-    if scene.model.cavitation == "reynolds":
-        p = np.maximum(p, 0.0)
-    res = _finish(scene, setup, problem, p, h0, status, msg, t0, iterations=iterations,
-                  history=history, continuation_steps=steps)
-    res.extra_fields = dict(res.extra_fields)
-    res.quantities["gmres_iterations"] = float(linear_its)
-    return res
+        nodes = (problem.grid.x.size, 2 * problem.grid.y.size - 1)
+        whole = self.problem(self.level(nodes, half=False), 1.0, problem.tolerance)
+        return whole, whole.pack(problem.compliance.mirror(p_half).ravel(), h0)
+
+    # -- solutions -------------------------------------------------------------------------
+    def solution(self, problem: PointProblem, z: np.ndarray | None = None, *,
+                 field: np.ndarray | None = None, h0: float | None = None,
+                 post: bool = True, cavitated: np.ndarray | None = None) -> Solution:
+        """Fields and post-processed numbers of unknowns ``z`` (or of a nodal pressure
+        ``field`` at the offset ``h0``, for the linear path; ``cavitated`` marks the
+        nodes of its active set)."""
+        scene = self.scene
+        grid = problem.grid
+        ops = grid.ops
+        if z is not None:
+            p, h0 = problem.unpack(z)
+            if scene.model.cavitation == "reynolds":
+                p = np.maximum(p, 0.0)
+        else:
+            p = np.asarray(field, dtype=float).ravel()
+        h_nodes = problem.film_nodes(p, h0)
+        out = Solution(x=grid.x, y=grid.y, pressure=np.asarray(p).reshape(grid.shape),
+                       film=np.asarray(h_nodes).reshape(grid.shape), h0=float(h0))
+        if not post:
+            return out
+        q = out.quantities
+        pq, h_q, gp, gh = problem.fields_q(p, h0)
+        o = np.array([0.0])
+        v = problem.displacement(p)
+        load = float(problem.mass @ p)
+        nums, notes = film_numbers(h_nodes, h_q, float(h0 + grid.interpolate(v, o, o)[0]), p,
+                                   load, grid.x, grid.y)
+        q.update(nums)
+        if scene.model.cavitation == "reynolds":
+            full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
+            full = full | grid.boundary_mask()
+            ind = (ops.value @ full.astype(float) >= 0.5).astype(float)
+        else:
+            ind = np.ones_like(h_q)
+        eta_q = problem.flux.viscosity(pq)
+        gq = problem.grad_reduced(p) if problem.uses_reduced else None
+        kin = scene.kinematics
+        numbers, more, d = friction_and_heat(
+            ops, h_q, gp, eta_q, pq, mean_speed=kin.mean_speed,
+            sliding_speed=kin.sliding_speed, indicator_q=ind, load=load,
+            gross_load=float(problem.mass @ np.abs(p)), traction=scene.traction,
+            reduced=None if gq is None else (gq, problem.flux.viscosity0),
+            stabilisation=problem.flux.stabilisation_flux(pq, h_q, gp, gh, ops.element_size,
+                                                          gq))
+        q.update(numbers)
+        out.traction_model = d.shear["model"]
+        out.warnings += notes + more
+        out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
+        if self.elastic:
+            q["gmres_iterations"] = float(sum(pr.linear_iterations for pr in self._problems))
+        return out
+
+    def linear(self, level: PointLevel) -> tuple[str, Solution, str, int]:
+        """Linear (reduced-pressure) solve on ``level``: status, solution, message and the
+        number of linear solves."""
+        scene = self.scene
+        lub = scene.lubricant
+        alpha = lub.effective_piezo
+        h0 = scene.load.gap
+        grid = level.setup.grid
+        q_bc = reduced_from_barus(level.p_bc, alpha) if alpha > 0 else level.p_bc
+        q, solves, active = reduced_pressure_solve(
+            grid, h0, scene.contact.rx, scene.contact.ry, scene.kinematics.mean_speed,
+            lub.viscosity, q_bc, scene.model.cavitation, self.squeeze)
+        status, field, msg = pressure_from_reduced(q, alpha, solves,
+                                                   f", {grid.x.size} x {grid.y.size} nodes")
+        problem = self.problem(level)
+        return status, self.solution(problem, field=field, h0=h0, post=status == "linear",
+                                     cavitated=active), msg, solves
 
 
 # ---------------------------------------------------------------------------------------
 # public API
 # ---------------------------------------------------------------------------------------
 def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None,
-                squeeze_velocity: float = 0.0, max_iterations: int | None = None) -> Result:
-    """Solve a point/elliptical contact scene.
+                squeeze_velocity: float = 0.0, max_iterations: int | None = None,
+                progress=None) -> Result:
+    """Solve a point/elliptical contact scene under a load, or a rigid one with a gap.
 
     Parameters
     ----------
     scene : Scene
-        ``contact.kind == "point"``.
+        ``contact.kind == "point"``. (Elastic scenes with a prescribed gap are solved by
+        :func:`bearing_fem.contacts.transient.solve_elastic_gap`; ``bearing_fem.solve``
+        routes every scene.)
     boundary_pressure : callable or ndarray, optional
         Dirichlet pressure on the domain boundary [Pa]: a callable ``(x [m], y [m]) -> p``
         on flat arrays, or nodal values of shape (ny, nx) (only boundary nodes are used).
         Default 0. The analytic-oracle tests impose the exact Kapitsa solution this way.
     squeeze_velocity : float
         Approach rate dh0/dt [m/s] (negative: the surfaces approach, positive squeeze
-        pressure). A scene has no key for it yet (proposed: ``[kinematics] squeeze``).
+        pressure).
     max_iterations : int, optional
         Overrides ``scene.solver.max_iterations`` (Newton iterations per attempt).
+    progress : callable, optional
+        Progress callback (:func:`bearing_fem.contacts.driver.solve_levels`).
 
     Returns
     -------
@@ -1129,209 +968,22 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
         ``x`` (nx,), ``y`` (ny,) [m]; ``pressure`` [Pa] and ``film`` [m] as (ny, nx)
         arrays. Never raises for non-convergence or non-existence (see ``status``).
     """
-    from .scene import Scene
-
     if not isinstance(scene, Scene):
         raise SceneError(f"solve_point() needs a Scene, got {type(scene).__name__}")
     if scene.contact.kind != "point":
         raise SceneError(f"solve_point() needs contact.kind = 'point', got "
                          f"{scene.contact.kind!r}")
+    if scene.model.elasticity == "half-space" and scene.load.gap is not None:
+        raise SceneError("solve_point() solves loaded or rigid point scenes; an elastic "
+                         "scene with load.gap (m) is solved by bearing_fem.solve (or "
+                         "bearing_fem.contacts.transient.solve_elastic_gap)")
     sq = float(squeeze_velocity)
     if not math.isfinite(sq):
         raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
-    if scene.model.elasticity == "half-space" and scene.load.gap is not None:
-        # elastic with a prescribed rigid offset: no load balance, grid in sqrt(2 r h0)
-        from .transient import solve_elastic_gap
-
-        return solve_elastic_gap(scene, squeeze_velocity=sq,
-                                 boundary_pressure=boundary_pressure,
-                                 max_iterations=max_iterations)
+    if max_iterations is not None:
+        scene = replace(scene, solver=replace(scene.solver, max_iterations=int(max_iterations)))
     t0 = time.perf_counter()
-    setup = point_setup(scene)
-    if _is_linear(scene):
-        return _solve_linear(scene, setup, _boundary_values(setup.grid, boundary_pressure),
-                             sq, t0)
-    return _solve_newton(scene, setup, boundary_pressure, sq, t0, max_iterations)
-
-
-@dataclass
-class SqueezeSeries:
-    """Rigid transient squeeze series h0(t) = h0 (1 + eps cos(omega t)) (PHYSICS.md 2, 5.1).
-
-    Attributes
-    ----------
-    times : ndarray
-        t [s].
-    gap : ndarray
-        h0(t) [m].
-    squeeze_velocity : ndarray
-        dh0/dt = -h0 eps omega sin(omega t) [m/s].
-    p_max : ndarray
-        Maximum pressure of each step [Pa] (``inf`` for a step without solution).
-    results : list of Result
-        One quasi-steady solve per step, all on the same grid.
-    """
-
-    times: np.ndarray
-    gap: np.ndarray
-    squeeze_velocity: np.ndarray
-    p_max: np.ndarray
-    results: list
-
-    @property
-    def statuses(self) -> list[str]:
-        return [r.status for r in self.results]
-
-    def export(self, directory, name: str = "squeeze") -> dict[str, str]:
-        """Write the series as VTU files + a PVD index and as one XDMF/HDF5 time series.
-
-        Fields per node: ``pressure_Pa``, ``film_m``. Returns the written paths
-        (``pvd``, ``xdmf``). Uses meshio (imported here only).
-        """
-        import os
-        from pathlib import Path
-
-        import meshio
-
-        out = Path(directory)
-        out.mkdir(parents=True, exist_ok=True)
-        r0 = self.results[0]
-        grid = PointGrid.tensor(r0.x, r0.y)
-        X, Y = grid.node_coordinates()
-        points = np.column_stack([X, Y, np.zeros_like(X)])
-        cells = [("quad", np.ascontiguousarray(grid.mesh.t.T))]
-        entries = []
-        for k, (t, r) in enumerate(zip(self.times, self.results)):
-            fname = f"{name}_{k:04d}.vtu"
-            meshio.write(out / fname, meshio.Mesh(points, cells, point_data={
-                "pressure_Pa": r.pressure.ravel(), "film_m": r.film.ravel()}))
-            entries.append(f'    <DataSet timestep="{t:.9g}" part="0" file="{fname}"/>')
-        pvd = out / f"{name}.pvd"
-        pvd.write_text('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
-                       "  <Collection>\n" + "\n".join(entries) + "\n  </Collection>\n"
-                       "</VTKFile>\n", encoding="utf-8")
-        xdmf = out / f"{name}.xdmf"
-        cwd = os.getcwd()
-        try:  # meshio writes the .h5 next to the .xdmf with a relative reference
-            os.chdir(out)
-            with meshio.xdmf.TimeSeriesWriter(xdmf.name) as w:
-                w.write_points_cells(points, cells)
-                for t, r in zip(self.times, self.results):
-                    w.write_data(float(t), point_data={"pressure_Pa": r.pressure.ravel(),
-                                                       "film_m": r.film.ravel()})
-        finally:
-            os.chdir(cwd)
-        return {"pvd": str(pvd), "xdmf": str(xdmf)}
-
-
-def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
-                         times: np.ndarray | None = None, n_steps: int = 16, *,
-                         boundary_pressure: Callable | None = None) -> SqueezeSeries:
-    """Quasi-steady rigid series for h0(t) = h0 (1 + eps cos(omega t)).
-
-    Each step solves the rigid wedge + squeeze problem with the gap h0(t) and the
-    squeeze source dh0/dt = -h0 eps omega sin(omega t) (the film has no memory in the
-    rigid incompressible Reynolds equation, so the steps are independent). All steps use
-    the grid of the mean gap h0, so the series exports on one mesh.
-
-    Parameters
-    ----------
-    scene : Scene
-        Rigid point scene with a prescribed gap (``load.gap`` = h0, the mean) and a
-        linear lubricant law (constant or Barus, incompressible).
-    eps : float
-        Relative amplitude [-], 0 <= eps < 1.
-    omega : float, optional
-        Angular frequency [rad/s]; default u_m / sqrt(2 rx h0) (one hydrodynamic length
-        per period/(2 pi)).
-    times : array, optional
-        Instants [s]; default ``n_steps`` instants over one period.
-    n_steps : int
-        Used when ``times`` is None.
-    boundary_pressure : callable, optional
-        ``(x, y, t) -> p`` Dirichlet data [Pa] (default 0).
-
-    Returns
-    -------
-    SqueezeSeries
-    """
-    from dataclasses import replace as dc_replace
-
-    if scene.contact.kind != "point":
-        raise SceneError(f"solve_squeeze_series needs contact.kind = 'point', got "
-                         f"{scene.contact.kind!r}")
-    if not _is_linear(scene):
-        raise SceneError("solve_squeeze_series needs a rigid, incompressible scene with "
-                         "load.gap (m) and a constant or Barus viscosity law")
-    eps = float(eps)
-    if not 0.0 <= eps < 1.0:
-        raise ValueError(f"eps must lie in [0, 1) (dimensionless), got {eps!r}")
-    h0 = scene.load.gap
-    if omega is None:
-        omega = scene.kinematics.mean_speed / math.sqrt(2 * scene.contact.rx * h0)
-    omega = float(omega)
-    if not (math.isfinite(omega) and omega > 0.0):
-        raise ValueError(f"omega must be > 0 rad/s, got {omega!r}")
-    if times is None:
-        if not isinstance(n_steps, int) or n_steps < 1:
-            raise ValueError(f"n_steps must be a positive integer, got {n_steps!r}")
-        times = np.arange(n_steps) * (2 * math.pi / omega) / n_steps
-    times = np.asarray(times, dtype=float).ravel()
-    setup = point_setup(scene)
-    gaps = h0 * (1.0 + eps * np.cos(omega * times))
-    rates = -h0 * eps * omega * np.sin(omega * times)
-    results = []
-    for t, g, r in zip(times, gaps, rates):
-        sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
-        bp = None if boundary_pressure is None else (
-            lambda x, y, _t=t: boundary_pressure(x, y, _t))
-        t0 = time.perf_counter()
-        res = _solve_linear(sc, dc_replace(setup, h_ref=float(g)),
-                            _boundary_values(setup.grid, bp), float(r), t0)
-        results.append(res)
-    p_max = np.array([r.quantities.get("p_max", np.inf) if r.success else np.inf
-                      for r in results])
-    return SqueezeSeries(times, gaps, rates, p_max, results)
-
-
-def _finish(scene, setup: PointSetup, problem: PointProblem, p: np.ndarray, h0: float,
-            status: str, message: str, t0: float, *, iterations: int = 0,
-            linear_solves: int = 0, history=None, continuation_steps=None, post: bool = True,
-            cavitated: np.ndarray | None = None) -> Result:
-    from . import post as pp
-
-    grid = problem.grid
-    ops = grid.ops
-    h_nodes = problem.film_nodes(p, h0)
-    quantities: dict[str, float] = {}
-    extra: dict[str, np.ndarray] = {}
-    if post:
-        pq, h_q, gp, _ = problem.fields_q(p, h0)
-        o = np.array([0.0])
-        v = problem.displacement(p)
-        load = float(problem.mass @ p)
-        quantities.update({
-            "h_min": float(min(np.min(h_nodes), np.min(h_q))),
-            "h_central": float(h0 + grid.interpolate(v, o, o)[0]),
-            "p_max": float(np.max(p)),
-            "load": load,
-        })
-        if scene.model.cavitation == "reynolds":
-            full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
-            full = full | grid.boundary_mask()
-            ind = (ops.value @ full.astype(float) >= 0.5).astype(float)
-        else:
-            ind = np.ones_like(h_q)
-        with np.errstate(all="ignore"):  # unconverged iterates may overflow exp(alpha p)
-            eta_q = problem.flux.viscosity(pq)
-            quantities.update(pp.friction_and_heat(ops, h_q, gp, eta_q,
-                                                   scene.kinematics.sliding_speed, ind, load))
-            extra["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
-    success = status in ("converged", "linear")
-    return Result(success=success, status=status, message=message, scene=scene, x=grid.x,
-                  y=grid.y, pressure=np.asarray(p).reshape(grid.shape),
-                  film=np.asarray(h_nodes).reshape(grid.shape), h0=float(h0),
-                  quantities=quantities, history=list(history or []),
-                  newton_iterations=iterations, linear_solves=linear_solves,
-                  wall_time_s=time.perf_counter() - t0,
-                  continuation=list(continuation_steps or []), extra_fields=extra)
+    model = PointModel(scene, boundary_pressure, sq)
+    if is_linear(scene):
+        return solve_linear_model(model, scene, t0)
+    return solve_newton_model(model, scene, t0, progress=progress)

@@ -1,0 +1,91 @@
+"""``solve(scene)``: route a scene to the cheapest correct path and run it.
+
+Paths (a scene pays only for what it needs):
+
+* rigid, incompressible, constant or Barus viscosity, prescribed gap: the **linear**
+  path (:mod:`bearing_fem.contacts.linear`): Kapitsa's reduced pressure, one sparse
+  solve or an active-set sequence, and the explicit status ``no_solution`` beyond the
+  existence limit alpha q_max < 1;
+* everything else: **damped Newton** by the shared driver
+  (:mod:`bearing_fem.contacts.driver`) on the line (:mod:`~bearing_fem.contacts.line`)
+  or point (:mod:`~bearing_fem.contacts.point`) discretisation, elastic point scenes
+  with a prescribed gap by :mod:`~bearing_fem.contacts.transient`;
+* ``model.thermal = "patch"``: the thermal fixed point of
+  :mod:`bearing_fem.contacts.coupling` around isothermal line solves. Only thermal
+  scenes import it.
+
+Floating-point warnings of intermediate iterates never reach the user: they are
+silenced during the solve and logged at debug level; a failure is a status and a
+message, never a warning.
+"""
+from __future__ import annotations
+
+import logging
+import warnings
+from typing import Any, Callable
+
+import numpy as np
+
+from ..errors import SceneError
+from ..result import Result
+from ..scene import Scene
+
+log = logging.getLogger(__name__)
+
+
+def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
+          progress: Callable[[dict[str, Any]], None] | None = None) -> Result:
+    """Solve a contact scene.
+
+    Parameters
+    ----------
+    scene : Scene
+    boundary_pressure : (float, float), optional
+        Dirichlet pressures at the inlet and outlet ends of a line domain [Pa]
+        (default 0, 0). Used by the analytic-oracle tests to impose exact data.
+    progress : callable, optional
+        Called with one dict per event of a Newton solve: ``{"event": "level",
+        "level": i, "levels": n, "grid": "257x257"}`` when a grid level starts and
+        ``{"event": "newton", "level": i, "iteration": k, "residual": r}`` after each
+        Newton iteration (``bearing_fem.contacts.driver.solve_levels``).
+
+    Returns
+    -------
+    Result
+        Never raises for non-convergence or non-existence: see ``result.status``.
+
+    Raises
+    ------
+    SceneError
+        ``scene`` is not a Scene, or asks for something the package does not solve
+        (e.g. Dirichlet end pressures of a point contact).
+    """
+    if not isinstance(scene, Scene):
+        raise SceneError(f"solve() needs a Scene, got {type(scene).__name__}")
+    if boundary_pressure is not None and (scene.contact.kind != "line"
+                                          or scene.model.thermal != "none"):
+        raise SceneError("boundary_pressure (Pa) applies to isothermal line contacts only")
+    with np.errstate(all="ignore"), warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = _route(scene, boundary_pressure, progress)
+    for w in caught:
+        log.debug("suppressed during the solve: %s: %s", w.category.__name__, w.message)
+    return result
+
+
+def _route(scene: Scene, boundary_pressure, progress) -> Result:
+    if scene.model.thermal == "patch":
+        from .coupling import solve_thermal  # only thermal scenes import the patch
+
+        return solve_thermal(scene)
+    if scene.contact.kind == "point":
+        if scene.model.elasticity == "half-space" and scene.load.gap is not None:
+            from .transient import solve_elastic_gap
+
+            return solve_elastic_gap(scene, progress=progress)
+        from .point import solve_point
+
+        return solve_point(scene, progress=progress)
+    from .line import solve_line
+
+    return solve_line(scene, boundary_pressure=boundary_pressure, progress=progress)

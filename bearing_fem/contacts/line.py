@@ -1,0 +1,752 @@
+"""Line contact: 1D finite elements (scikit-fem, P1) for the Reynolds-elasticity system.
+
+Unknowns: nodal pressures p_i at the free nodes (the two end nodes carry Dirichlet
+data, 0 by default) and, under load balance, the rigid offset h0.
+
+Equations (all scaled to O(1)):
+
+* Reynolds rows: the weak flux-form residual R_i = int F dphi_i/dx (see
+  :mod:`bearing_fem.physics.reynolds`), scaled to a pressure as r_i = R_i dx / (2 eps0_i p_ref)
+  with eps0_i the isoviscous flow coefficient at node i. With ``cavitation = "none"``
+  the row is r_i = 0; with ``"reynolds"`` it is the Fischer-Burmeister function
+  phi(p_i/p_ref, r_i) = a + b - sqrt(a^2 + b^2) of the complementarity problem
+  p >= 0, R >= 0, p R = 0 (semismooth Newton).
+* Load row: (int p dx - w) / w = 0, partner of h0.
+
+Film: h(x) = h0 + x^2/(2R) + v(x), the geometry evaluated exactly at the quadrature
+points and the elastic displacement v = C p interpolated from the nodes.
+
+Jacobian: dR/dp = A_p + A_h C and dR/dh0 = A_h 1, with A_p, A_h the sparse
+derivative matrices of the flux form (exact, complex-step pointwise derivatives) and C
+the compliance (dense Toeplitz for the half-space, diagonal for Kodnir's local model).
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, replace
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from skfem import CellBasis, ElementLineP1, MeshLine
+
+from .. import units
+from ..analytic import reduced_from_barus
+from ..formulas import line_central_film_moes
+from ..numerics.fe import QuadratureOperators, quadrature_operators
+from ..numerics.newton import gmres_right
+from ..physics.elasticity import (HalfSpaceLine, LocalCompliance, RigidCompliance,
+                                  kodnir_local_coefficient)
+from ..physics.reynolds import FluxModel, UpwindFluxModel
+from ..post import (FilmDissipation, film_numbers, friction_and_heat,
+                    full_film_indicator_line, outlet_position_line)
+from ..result import Result
+from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
+from .linear import active_set_solve, pressure_from_reduced
+from .problem import ScaledResidual, fischer_burmeister
+
+
+@dataclass
+class LineDiscretisation:
+    """Mesh, basis and precomputed operators of a uniform 1D grid."""
+
+    x: np.ndarray            # node coordinates [m]
+    mesh: MeshLine
+    basis: CellBasis
+    ops: QuadratureOperators
+
+    @classmethod
+    def uniform(cls, x_min: float, x_max: float, nodes: int, intorder: int = 4) -> "LineDiscretisation":
+        x = np.linspace(x_min, x_max, nodes)
+        mesh = MeshLine(x)
+        basis = CellBasis(mesh, ElementLineP1(), intorder=intorder)
+        return cls(x=x, mesh=mesh, basis=basis, ops=quadrature_operators(basis))
+
+    @property
+    def spacing(self) -> float:
+        return float(self.x[1] - self.x[0])
+
+
+#: Dense (half-space) Newton steps: GMRES preconditioned by the last LU factors is
+#: accepted when it reaches this relative residual within this many iterations; else the
+#: Jacobian is factorised afresh. Near convergence the Jacobian changes little and GMRES
+#: needs a few iterations of O(n^2) each instead of an O(n^3) factorisation.
+REUSE_GMRES_RTOL = 1e-10
+REUSE_GMRES_ITERATIONS = 12
+
+
+class LineProblem(ScaledResidual):
+    """Scaled nonlinear system of one line-contact scene (implements NonlinearProblem).
+
+    Parameters
+    ----------
+    disc : LineDiscretisation
+    flux : FluxModel
+    radius : float
+        Reduced radius R [m].
+    compliance : object with ``matrix()``/``apply()``/``is_zero``/``is_local``
+        From :mod:`bearing_fem.physics.elasticity`.
+    cavitation : {"reynolds", "none"}
+    load : float or None
+        Load per length w [N/m]; None means the offset is prescribed.
+    gap : float or None
+        Prescribed h0 [m] (when ``load`` is None).
+    p_ref, h_ref : float
+        Pressure [Pa] and film [m] scales of the unknowns.
+    boundary_pressure : (float, float)
+        Dirichlet pressures at the two end nodes [Pa].
+    viscosity0 : float
+        eta0 [Pa s], for the row scaling.
+    """
+
+    def __init__(self, disc: LineDiscretisation, flux: FluxModel, radius: float, compliance,
+                 cavitation: str, load: float | None, gap: float | None, p_ref: float,
+                 h_ref: float, viscosity0: float,
+                 boundary_pressure: tuple[float, float] = (0.0, 0.0)) -> None:
+        self.disc, self.flux, self.radius = disc, flux, radius
+        self.ops = disc.ops
+        self.compliance = compliance
+        self.cavitation = cavitation
+        self.load, self.gap = load, gap
+        self.p_ref, self.h_ref = p_ref, h_ref
+        self.eta0 = viscosity0
+        x = disc.x
+        n = x.size
+        self.free = np.arange(1, n - 1)
+        self.p_bc = np.zeros(n)
+        self.p_bc[0], self.p_bc[-1] = boundary_pressure
+        ops = disc.ops
+        xq = ops.points[0]
+        self.g_q = xq**2 / (2 * radius)
+        self.gx_q = xq / radius
+        self.g_nodes = x**2 / (2 * radius)
+        self.mass = ops.mass
+        self.has_h0 = load is not None
+        self.n_unknowns = self.free.size + (1 if self.has_h0 else 0)
+        if compliance.is_zero:
+            self._cmat = None
+        elif compliance.is_local:
+            self._cmat = sp.diags(compliance.diagonal(n))
+        else:
+            self._cmat = compliance.matrix(n)
+        self._row_scale = None
+        self._lu = None  # dense LU factors kept for reuse as a preconditioner
+        self.factorisations = 0
+        self.krylov_iterations = 0
+
+    # -- unknown <-> fields --------------------------------------------------------------
+    def unpack(self, z: np.ndarray) -> tuple[np.ndarray, float]:
+        p = self.p_bc.copy()
+        p[self.free] = z[: self.free.size] * self.p_ref
+        h0 = z[-1] * self.h_ref if self.has_h0 else self.gap
+        return p, h0
+
+    def pack(self, p: np.ndarray, h0: float) -> np.ndarray:
+        z = p[self.free] / self.p_ref
+        return np.append(z, h0 / self.h_ref) if self.has_h0 else z
+
+    def displacement(self, p: np.ndarray) -> np.ndarray:
+        if self._cmat is None:
+            return np.zeros_like(p)
+        return self._cmat @ p
+
+    def film_nodes(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Film at the nodes [m]."""
+        return h0 + self.g_nodes + self.displacement(p)
+
+    def fields_q(self, p: np.ndarray, h0: float):
+        """p, h, dp/dx, dh/dx at the quadrature points."""
+        ops = self.disc.ops
+        v = self.displacement(p)
+        h = h0 + self.g_q + ops.value @ v
+        hx = self.gx_q + ops.grad[0] @ v
+        return ops.value @ p, h, ops.grad[0] @ p, hx
+
+    # -- NonlinearProblem ---------------------------------------------------------------------
+    def prepare(self, z: np.ndarray) -> None:
+        p, h0 = self.unpack(z)
+        h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
+        eps0 = h**3 / (12.0 * self.eta0)
+        self._row_scale = (self.disc.spacing / (2.0 * eps0 * self.p_ref))[self.free]
+
+    def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
+        """Nodal weak residual R_i [m^2/s] (all nodes)."""
+        pq, h, px, hx = self.fields_q(p, h0)
+        dx = self.disc.ops.element_size
+        if self.uses_reduced:
+            (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx, gq=self.grad_reduced(p))
+        else:
+            (fx,) = self.flux.flux(pq, h, (px,), (hx,), dx)
+        return self.disc.ops.weak_divergence(fx)
+
+    def _blocks(self, z: np.ndarray):
+        """Pieces of the scaled Jacobian at z.
+
+        Returns
+        -------
+        a_p, a_h : csr_matrix
+            dR/dp and dR/dh at fixed h and p (interior rows, all nodes as columns).
+        scale : ndarray
+            Row factor times p_ref of the pressure columns.
+        da : ndarray or None
+            Fischer-Burmeister diagonal (Reynolds cavitation).
+        dr_dh0, load_row : ndarray or None
+            The h0 column and the load row (load balance).
+        """
+        p, h0 = self.unpack(z)
+        ops = self.disc.ops
+        pq, h, px, hx = self.fields_q(p, h0)
+        inner = slice(1, p.size - 1)  # the free (interior) nodes
+        if self.uses_reduced:
+            (fx,), dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
+                pq, h, (px,), (hx,), ops.element_size, self.grad_reduced(p))
+            # d(dq_h/dx)/dp_j = q'(p_j) dphi_j/dx: the dq/dx column term, column-scaled
+            a_q = ops.flux_jacobian(0, np.zeros_like(pq), (dgq[0][0],)) \
+                @ sp.diags(self.flux.fluidity(p))
+        else:
+            (fx,), dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, (px,), (hx,),
+                                                                   ops.element_size)
+            a_q = None
+        a_p = ops.flux_jacobian(0, dp[0], (dgp[0][0],))
+        a_p = (a_p if a_q is None else a_p + a_q).tocsr()[inner]
+        a_h = ops.flux_jacobian(0, dh[0], (dgh[0][0],)).tocsr()[inner]
+        rows = self.free
+        res = ops.weak_divergence(fx)[rows]
+        s = self._row_scale
+        da = None
+        if self.cavitation == "reynolds":
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res * s)
+            row_factor = db * s
+        else:
+            row_factor = s
+        dr_dh0 = load_row = None
+        if self.has_h0:
+            dr_dh0 = (ops.grad[0].T @ (ops.weights * dh[0]))[rows] * row_factor * self.h_ref
+            load_row = self.mass[rows] * self.p_ref / self.load
+        return a_p, a_h, row_factor * self.p_ref, da, dr_dh0, load_row
+
+    def jacobian(self, z: np.ndarray):
+        """Scaled Jacobian dF/dz (dense ndarray for the half-space, sparse otherwise)."""
+        return self._jacobian_from_blocks(*self._blocks(z))
+
+    def _jacobian_from_blocks(self, a_p, a_h, scale, da, dr_dh0, load_row):
+        inner = slice(1, a_p.shape[1] - 1)
+        if self._cmat is None:
+            j = a_p[:, inner]
+        elif sp.issparse(self._cmat):
+            j = (a_p + a_h @ self._cmat).tocsr()[:, inner]
+        else:  # dense: A_h is tridiagonal, so A_h C costs 3 n^2
+            j = np.asarray(a_h @ self._cmat[:, inner])
+            a_pi = a_p[:, inner].tocoo()
+            np.add.at(j, (a_pi.row, a_pi.col), a_pi.data)
+        if sp.issparse(j):
+            j = sp.diags(scale) @ j
+            if da is not None:
+                j = j + sp.diags(da)
+        else:
+            j *= scale[:, None]
+            if da is not None:
+                j[np.diag_indices_from(j)] += da
+        if not self.has_h0:
+            return j
+        if sp.issparse(j):
+            return sp.bmat([[j, dr_dh0[:, None]], [load_row[None, :], None]], format="csc")
+        out = np.zeros((j.shape[0] + 1, j.shape[1] + 1))
+        out[:-1, :-1] = j
+        out[:-1, -1] = dr_dh0
+        out[-1, :-1] = load_row
+        return out
+
+    def newton_step(self, z: np.ndarray, shift: float = 0.0) -> np.ndarray:
+        """Solve (J + shift D) dz = -F, D = identity on the pressure unknowns.
+
+        Sparse J (rigid, local): sparse LU. Dense J (half-space): GMRES on the exact
+        Jacobian (matrix-vector products with the blocks), preconditioned by the dense LU
+        factors of an earlier iterate's Jacobian, when it converges within
+        ``REUSE_GMRES_ITERATIONS``; otherwise J is formed and factorised afresh and the
+        factors are kept. Both give the Newton step to rounding or to a relative residual
+        of ``REUSE_GMRES_RTOL``.
+        """
+        f = self.residual(z)
+        npf = self.free.size
+        blocks = self._blocks(z)
+        if self._cmat is not None and not sp.issparse(self._cmat) and self._lu is not None:
+            dz = self._reuse_step(blocks, f, shift)
+            if dz is not None:
+                return dz
+        j = self._jacobian_from_blocks(*blocks)
+        if sp.issparse(j):
+            if shift:
+                d = np.zeros(j.shape[0])
+                d[:npf] = shift
+                j = j + sp.diags(d)
+            return spla.spsolve(j.tocsc(), -f)
+        if shift:
+            j[np.arange(npf), np.arange(npf)] += shift
+        lu = sla.lu_factor(j, overwrite_a=True, check_finite=False)
+        self._lu = lu
+        self.factorisations += 1
+        return sla.lu_solve(lu, -f, check_finite=False)
+
+    def _reuse_step(self, blocks: tuple, f: np.ndarray, shift: float) -> np.ndarray | None:
+        a_p, a_h, scale, da, dr_dh0, load_row = blocks
+        n = self.disc.x.size
+        npf = self.free.size
+        diag = (da if da is not None else 0.0) + shift
+        cmat = self._cmat
+        lu = self._lu
+
+        def matvec(u: np.ndarray) -> np.ndarray:
+            full = np.zeros(n)
+            full[1:-1] = u[:npf]
+            out = scale * (a_p @ full + a_h @ (cmat @ full)) + diag * u[:npf]
+            if self.has_h0:
+                out = out + dr_dh0 * u[npf]
+                return np.append(out, load_row @ u[:npf])
+            return out
+
+        def precond(r: np.ndarray) -> np.ndarray:
+            return sla.lu_solve(lu, r, check_finite=False)
+
+        dz, its, rel = gmres_right(matvec, precond, -f, rtol=REUSE_GMRES_RTOL,
+                                   max_iterations=REUSE_GMRES_ITERATIONS)
+        self.krylov_iterations += its
+        if rel > REUSE_GMRES_RTOL or not np.all(np.isfinite(dz)):
+            return None
+        return dz
+
+
+# =======================================================================================
+# The line-contact model: scales, default grid, levels, problems, post-processing
+# =======================================================================================
+#: h*/h0 of Martin's rigid isoviscous cylinder (sec^2 of the outlet angle, ~1.2255);
+#: used only to estimate a starting offset for rigid loaded scenes, never as an oracle.
+MARTIN_HSTAR_APPROX = 1.2255
+#: Default grid density of elastic line contacts: nodes per Hertz half-width.
+NODES_PER_HALF_WIDTH = 300
+#: Above this Moes load parameter M the default density grows as sqrt(M / this): the
+#: outlet constriction and spike narrow with load (measured at 300 nodes per b against
+#: twice as fine: h_central changes 0.08 % at M = 200 but 0.82 % at M = 1000, L = 2).
+DENSE_MESH_MOES_M = 250.0
+#: Cap on default elastic line grids (dense compliance: memory and LU time grow as N^2, N^3).
+MAX_DEFAULT_ELASTIC_NODES = 4001
+#: Default rigid-scene grid: nodes per sqrt(2 R h0).
+NODES_PER_RIGID_LENGTH = 40
+#: Stabilisation of half-space line contacts: "upwind" (first-order upwinded wedge term,
+#: :class:`~bearing_fem.physics.reynolds.UpwindFluxModel`) or "supg" (SUPG on the whole
+#: strong residual). Kodnir's local model always uses SUPG.
+#: ``studies/line_stabilisation.py`` compares the two.
+HALF_SPACE_STABILISATION = "upwind"
+#: Poiseuille term of half-space line contacts with Barus viscosity (as
+#: :data:`bearing_fem.contacts.point.REDUCED_POISEUILLE`): rho h^3/(12 eta0) dq_h/dx, q_h
+#: the P1 interpolant of the nodal reduced pressure q = (1 - exp(-alpha p))/alpha, instead
+#: of eps(p) dp/dx at the quadrature points. Over an element it is the exact integral of
+#: eps(p) dp/dx for linear p, monotone in the nodal pressures whatever the jump; the
+#: 3-point quadrature of exp(-alpha p) is not once alpha dp >> 1. Measured at the outlet
+#: spike of M = 5, L = 15 on 8001 nodes (p from 3.1 to 0.5 p_h across one element,
+#: alpha dp = 35): the quadrature flux peaks at a spike-side pressure of 1.0 p_h and falls
+#: by 4x up to 3.1 p_h, and Newton stalled at |F| = 5e-7 on that falling branch (exact
+#: Jacobian, exact linear solves, plain Newton steps growing to 1e2-1e3 p_h as it
+#: approached the fold); with the reduced term it converges in 5 iterations on 8001
+#: nodes. Same grid limit, smaller grid error: h_central 3601 -> 7201 nodes changes
+#: 0.27 % -> 0.029 % at M = 1000, L = 2 and 0.0047 % -> 0.0019 % at M = 100, L = 10
+#: (docs/line_contact.md).
+REDUCED_POISEUILLE_LINE = True
+#: Grid sequencing: coarsest grid of the line Newton solve (nodes). Finer grids are
+#: solved coarse-to-fine, halving the spacing each level, each level started from the
+#: interpolated solution of the one below (measured at M = 100, L = 10, 2001 nodes:
+#: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
+#: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge).
+COARSEST_NODES = 501
+#: Newton iterations allowed to the direct attempt and to each continuation step before
+#: backing off (fail fast: a stalled attempt costs more than a smaller step).
+ATTEMPT_ITERATIONS = 40
+#: Isoviscous continuation starts at this multiple of the entrainment speed (Moes M
+#: 10x lower), where the film is thick compared with the elastic deflection.
+CONTINUATION_SPEED_FACTOR = 100.0
+#: How the shared driver attacks line contacts: every attempt capped at
+#: ATTEMPT_ITERATIONS; a monotone line search from an interpolated coarse solution
+#: (close enough that a non-monotone search only wanders), non-monotone (window 5) from
+#: the Hertzian guess.
+LINE_DRIVER = DriverSettings(direct_iterations=ATTEMPT_ITERATIONS,
+                             transfer_iterations=ATTEMPT_ITERATIONS,
+                             continuation_iterations=ATTEMPT_ITERATIONS,
+                             start_memory=5, transfer_memory=1)
+
+
+@dataclass
+class LineSetup:
+    """Scales, grid and operators of a line scene on one grid (a driver level).
+
+    Attributes
+    ----------
+    disc : LineDiscretisation
+    compliance : Compliance
+        From :mod:`bearing_fem.physics.elasticity`.
+    p_ref, h_ref : float
+        Pressure [Pa] and film [m] scales of the unknowns.
+    x_unit : float
+        Length unit of the mesh range [m] (Hertz half-width b, or sqrt(2 R h0)).
+    h_estimate : float
+        Estimated central film [m] (Moes for elastic scenes).
+    stab_compliance : float
+        Compliance of the stabilisation [m/Pa] (0 when rigid).
+    """
+
+    disc: LineDiscretisation
+    compliance: object
+    p_ref: float
+    h_ref: float
+    x_unit: float
+    h_estimate: float
+    stab_compliance: float
+
+    @property
+    def label(self) -> str:
+        return f"{self.disc.x.size} nodes"
+
+
+def kodnir_coefficient(scene) -> float:
+    """A'/E of Kodnir's local compliance of a line scene [m/Pa]."""
+    # Kodnir's 1.52 contains nu = 0.3 for two equal bodies: E = E' (1 - 0.3^2).
+    e = scene.e_prime * (1.0 - 0.3**2)
+    return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
+
+
+def line_setup(scene, nodes: int | None = None) -> LineSetup:
+    """Reference scales, default mesh and compliance operator of a line scene.
+
+    ``nodes`` overrides the node count (grid sequencing) on the same interval.
+    """
+    R = scene.contact.rx
+    lub, kin, model = scene.lubricant, scene.kinematics, scene.model
+    u_m = kin.mean_speed
+    elastic = model.elasticity != "rigid"
+    if scene.load.force is not None and elastic:
+        w = scene.load.force
+        b, p_h = units.hertz_line(w, R, scene.e_prime)
+        h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity, u_m,
+                                       lub.effective_piezo)
+        x_unit, p_ref, h_ref = b, p_h, h_est
+        # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
+        inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
+        x_range = scene.mesh.x_range or (-inlet, 1.5)
+        moes_m = units.moes_line(w, R, scene.e_prime, lub.viscosity, u_m,
+                                 lub.effective_piezo)["M"]
+        density = NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
+    else:
+        if scene.load.gap is not None:
+            h0 = scene.load.gap
+        else:  # rigid under load: Martin's isoviscous estimate of the offset
+            h0 = 6 * lub.viscosity * u_m * R / (MARTIN_HSTAR_APPROX * scene.load.force)
+        x_unit = math.sqrt(2 * R * h0)
+        h_est, h_ref = h0, h0
+        p_ref = lub.viscosity * u_m * x_unit / h0**2
+        if model.cavitation == "none":
+            x_range = scene.mesh.x_range or (-100.0, 100.0)
+        else:
+            x_range = scene.mesh.x_range or (-100.0, 5.0)
+        density = NODES_PER_RIGID_LENGTH
+    width = x_range[1] - x_range[0]
+    cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
+    if nodes is None:
+        # n - 1 a multiple of 4: the grid and its two coarser grids (every other node)
+        # nest, for the grid sequence and the error estimate
+        auto = 4 * math.ceil(min(max(width * density, 801), cap - 1) / 4) + 1
+        nodes = scene.mesh.nodes or auto
+    disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
+    if model.elasticity == "rigid":
+        comp = RigidCompliance()
+        c_stab = 0.0
+    elif model.elasticity == "local":
+        coef = kodnir_coefficient(scene)
+        comp = LocalCompliance(coef)
+        c_stab = coef
+    else:
+        comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
+        # compliance of a pressure change over one element (~ its self-influence): a
+        # contact-width compliance would over-stabilise and wash out the outlet
+        # constriction and spike (checked: h_min/h_c 0.99 instead of 0.75 at M=100, L=10)
+        c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
+    return LineSetup(disc, comp, p_ref, h_ref, x_unit, h_est, c_stab)
+
+
+def is_linear(scene) -> bool:
+    """True if a scene is solved by linear solves (rigid, incompressible, constant or
+    Barus viscosity, prescribed gap): Kapitsa's reduced pressure."""
+    m, lub = scene.model, scene.lubricant
+    return (m.elasticity == "rigid" and lub.density == "incompressible"
+            and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
+
+
+def line_levels(nodes: int, coarsest: int = COARSEST_NODES) -> list[int]:
+    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level."""
+    levels = [nodes]
+    while (levels[-1] - 1) % 2 == 0 and (levels[-1] - 1) // 2 + 1 >= coarsest:
+        levels.append((levels[-1] - 1) // 2 + 1)
+    return levels[::-1]
+
+
+def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
+                             mean_speed: float, eta0: float, cavitation: str):
+    """Solve the rigid isoviscous Reynolds problem for the reduced pressure q [Pa].
+
+    One sparse solve for full-Sommerfeld; a primal-dual active-set sequence of sparse
+    solves for Reynolds cavitation (q >= 0, A q - f >= 0, q (A q - f) = 0).
+
+    Returns
+    -------
+    q : ndarray (nodal, Pa), linear_solves : int, active : bool ndarray (cavitated nodes)
+    """
+    ops = problem.disc.ops
+    h = h0 + problem.g_q
+    a = ops.flux_jacobian(0, np.zeros_like(h), (h**3 / (12.0 * eta0),)).tocsr()
+    f = ops.weak_divergence(mean_speed * h)
+    return active_set_solve(a, f, q_bc, problem.free, cavitation)
+
+
+class LineModel:
+    """A line-contact scene as a :class:`~bearing_fem.contacts.driver.ContactModel`.
+
+    Parameters
+    ----------
+    scene : Scene
+        ``contact.kind == "line"``.
+    boundary_pressure : (float, float)
+        Dirichlet pressures at the inlet and outlet ends [Pa].
+    """
+
+    settings = LINE_DRIVER
+
+    def __init__(self, scene, boundary_pressure: tuple[float, float] = (0.0, 0.0)) -> None:
+        self.scene = scene
+        self.bp = tuple(float(v) for v in boundary_pressure)
+        self.setup = line_setup(scene)
+        piezo = scene.lubricant.effective_piezo > 0.0
+        self.continuation_parameter = "alpha" if piezo else "speed"
+        self._setups = {self.setup.disc.x.size: self.setup}
+
+    # -- levels ----------------------------------------------------------------------------
+    def level(self, nodes: int) -> LineSetup:
+        """The scene on a uniform grid of ``nodes`` nodes over the same interval (cached:
+        the driver recognises a level by identity)."""
+        if nodes not in self._setups:
+            x = self.setup.disc.x
+            self._setups[nodes] = _regridded(self.scene, self.setup, float(x[0]),
+                                             float(x[-1]), nodes)
+        return self._setups[nodes]
+
+    def levels(self) -> list[LineSetup]:
+        return [self.level(n) for n in line_levels(self.setup.disc.x.size)]
+
+    def coarsen(self, level: LineSetup) -> LineSetup | None:
+        """The level with half the spacing's inverse (every other node), or None."""
+        n = level.disc.x.size
+        if (n - 1) % 2 or (n - 1) // 2 < 8:
+            return None
+        return self.level((n - 1) // 2 + 1)
+
+    # -- problems --------------------------------------------------------------------------
+    def problem(self, level: LineSetup, s: float = 1.0,
+                tolerance: float | None = None) -> LineProblem:
+        """The problem on ``level``; s scales alpha (or the speed, from 100x, when
+        isoviscous) for continuation."""
+        if self.continuation_parameter == "alpha":
+            return self._problem(level, piezo_scale=s)
+        return self._problem(level, speed_scale=CONTINUATION_SPEED_FACTOR ** (1.0 - s))
+
+    def _problem(self, level: LineSetup, piezo_scale: float = 1.0,
+                 speed_scale: float = 1.0) -> LineProblem:
+        scene = self.scene
+        lub = scene.lubricant
+        u_m = scene.kinematics.mean_speed * speed_scale
+        if scene.model.elasticity == "half-space" and HALF_SPACE_STABILISATION == "upwind":
+            reduced = None
+            if REDUCED_POISEUILLE_LINE and lub.viscosity_law == "barus" \
+                    and lub.effective_piezo > 0:
+                reduced = lub.effective_piezo * piezo_scale
+            flux = UpwindFluxModel.elastic(lub, u_m, level.stab_compliance,
+                                           piezo_scale=piezo_scale, reduced_alpha=reduced)
+        else:
+            flux = FluxModel.from_lubricant(lub, u_m, compliance=level.stab_compliance,
+                                            piezo_scale=piezo_scale)
+        return LineProblem(level.disc, flux, scene.contact.rx, level.compliance,
+                           scene.model.cavitation, scene.load.force, scene.load.gap,
+                           level.p_ref, level.h_ref, lub.viscosity, self.bp)
+
+    def initial_guess(self, level: LineSetup, problem: LineProblem,
+                      s: float = 1.0) -> np.ndarray:
+        """Hertzian (elastic, loaded), local-dry (Kodnir) or rigid linear initial guess.
+
+        For the isoviscous speed continuation the film estimate is that of the start
+        speed 100^(1-s) u_m (thicker than the target's)."""
+        scene = self.scene
+        x = level.disc.x
+        R = scene.contact.rx
+        lub = scene.lubricant
+        if scene.load.force is not None and scene.model.elasticity != "rigid":
+            w = scene.load.force
+            if scene.model.elasticity == "local":
+                c = level.stab_compliance
+                a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2-x^2)/(2Rc)
+                p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
+            else:
+                b = level.x_unit
+                p = level.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
+            p = p * w / (problem.mass @ p)
+            v0 = float(np.interp(0.0, x, problem.displacement(p)))
+            h_est = level.h_estimate
+            if self.continuation_parameter == "speed" and s != 1.0:
+                h_est = line_central_film_moes(
+                    w, R, scene.e_prime, lub.viscosity,
+                    scene.kinematics.mean_speed * CONTINUATION_SPEED_FACTOR ** (1.0 - s),
+                    lub.effective_piezo)
+            return problem.pack(p, h_est - v0)
+        # rigid or prescribed gap: isoviscous rigid solution at the (estimated) offset
+        h0 = scene.load.gap if scene.load.gap is not None else level.h_ref
+        q, _, _ = reduced_isoviscous_solve(problem, h0, problem.p_bc.copy(),
+                                           scene.kinematics.mean_speed, lub.viscosity,
+                                           scene.model.cavitation)
+        return problem.pack(q, h0)
+
+    def transfer(self, z: np.ndarray, coarse: LineProblem, fine: LineProblem) -> np.ndarray:
+        """Interpolate a solution to another grid of the same interval (same film at
+        x = 0)."""
+        p_c, h0_c = coarse.unpack(z)
+        xc, xf = coarse.disc.x, fine.disc.x
+        p_f = np.interp(xf, xc, p_c)
+        p_f[[0, -1]] = fine.p_bc[[0, -1]]
+        hc = float(np.interp(0.0, xc, coarse.film_nodes(p_c, h0_c)))
+        if fine.has_h0:
+            h0_f = hc - float(np.interp(0.0, xf, fine.g_nodes + fine.displacement(p_f)))
+        else:
+            h0_f = h0_c
+        return fine.pack(p_f, h0_f)
+
+    def whole(self, problem: LineProblem, z: np.ndarray) -> tuple[LineProblem, np.ndarray]:
+        """The problem and unknowns the result is reported on (the same for lines)."""
+        return problem, z
+
+    # -- solutions -------------------------------------------------------------------------
+    def solution(self, problem: LineProblem, z: np.ndarray | None = None, *,
+                 field: np.ndarray | None = None, h0: float | None = None,
+                 post: bool = True, cavitated: np.ndarray | None = None) -> Solution:
+        """Fields and post-processed numbers of unknowns ``z`` (or of a nodal pressure
+        ``field`` at the offset ``h0``, for the linear path)."""
+        scene = self.scene
+        if z is not None:
+            p, h0 = problem.unpack(z)
+            if scene.model.cavitation == "reynolds":
+                p = np.maximum(p, 0.0)  # the FB solution is >= 0 up to the tolerance
+        else:
+            p = field
+        disc = problem.disc
+        ops = disc.ops
+        h_nodes = problem.film_nodes(p, h0)
+        out = Solution(x=disc.x, y=None, pressure=p, film=h_nodes, h0=float(h0))
+        if not post:
+            return out
+        pq, h_q, px, _ = problem.fields_q(p, h0)
+        load = float(problem.mass @ p)
+        q = out.quantities
+        nums, notes = film_numbers(h_nodes, h_q, float(np.interp(0.0, disc.x, h_nodes)), p,
+                                   load, disc.x)
+        q.update(nums)
+        outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
+        ind = full_film_indicator_line(ops.points[0], outlet)
+        numbers, more, d = self._friction_and_heat(problem, p, h0, ind, load)
+        q.update(numbers)
+        out.traction_model = d.shear["model"]
+        out.warnings += notes + more
+        if outlet is not None:
+            q["outlet_position"] = outlet
+            q["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
+        out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p)
+        return out
+
+    def _friction_and_heat(self, problem: LineProblem, p: np.ndarray, h0: float,
+                           indicator: np.ndarray, load: float):
+        """:func:`bearing_fem.post.friction_and_heat` of a solution on ``problem``."""
+        pq, h_q, px, hx = problem.fields_q(p, h0)
+        gq = problem.grad_reduced(p) if problem.uses_reduced else None
+        ops = problem.disc.ops
+        kin = self.scene.kinematics
+        return friction_and_heat(
+            ops, h_q, (px,), problem.flux.viscosity(pq), pq,
+            mean_speed=kin.mean_speed, sliding_speed=kin.sliding_speed, indicator_q=indicator,
+            load=load, gross_load=float(problem.mass @ np.abs(p)), traction=self.scene.traction,
+            reduced=None if gq is None else (gq, problem.flux.viscosity0),
+            stabilisation=problem.flux.stabilisation_flux(pq, h_q, (px,), (hx,),
+                                                          ops.element_size, gq))
+
+    def heat_flux(self, pressure: np.ndarray, h0: float) -> tuple[np.ndarray, FilmDissipation]:
+        """Heat generated in the film per element [W/m^2] (element means of the Couette
+        and conservative Poiseuille densities, :class:`bearing_fem.post.FilmDissipation`)
+        of a solution on the model's own grid (``setup.disc.x``), and the dissipation."""
+        problem = self.problem(self.setup)
+        ops = self.setup.disc.ops
+        outlet = outlet_position_line(self.setup.disc.x, pressure, self.scene.model.cavitation)
+        ind = full_film_indicator_line(ops.points[0], outlet)
+        _, _, d = self._friction_and_heat(problem, pressure, h0, ind,
+                                          float(problem.mass @ pressure))
+        per_element = (ops.weights * (d.couette_density + d.poiseuille_density)).reshape(
+            -1, ops.n_quad).sum(axis=1) / np.diff(self.setup.disc.x)
+        return per_element, d
+
+    def linear(self, level: LineSetup) -> tuple[str, Solution, str, int]:
+        """Linear (reduced-pressure) solve on ``level``: status, solution, message and
+        the number of linear solves."""
+        scene = self.scene
+        lub = scene.lubricant
+        alpha = lub.effective_piezo
+        problem = self.problem(level)
+        h0 = scene.load.gap
+        q_bc = np.zeros(level.disc.x.size)
+        q_bc[0], q_bc[-1] = (reduced_from_barus(np.array(self.bp), alpha) if alpha > 0
+                             else self.bp)
+        q, solves, _ = reduced_isoviscous_solve(problem, h0, q_bc, scene.kinematics.mean_speed,
+                                                lub.viscosity, scene.model.cavitation)
+        status, field, msg = pressure_from_reduced(q, alpha, solves)
+        return status, self.solution(problem, field=field, h0=h0,
+                                     post=status == "linear"), msg, solves
+
+
+def _regridded(scene, setup: LineSetup, x0: float, x1: float, nodes: int) -> LineSetup:
+    """The same scene on another uniform grid over [x0, x1] [m] (the half-space
+    compliance and its stabilisation scale follow the grid spacing)."""
+    disc = LineDiscretisation.uniform(x0, x1, nodes)
+    comp = setup.compliance
+    c_stab = setup.stab_compliance
+    if scene.model.elasticity == "half-space":
+        comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
+        c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
+    return replace(setup, disc=disc, compliance=comp, stab_compliance=c_stab)
+
+
+def solve_line(scene, *, boundary_pressure: tuple[float, float] | None = None,
+               progress=None) -> Result:
+    """Solve a line-contact scene (the linear path or damped Newton by the shared
+    driver, :mod:`bearing_fem.contacts.driver`).
+
+    Parameters
+    ----------
+    scene : Scene
+        ``contact.kind == "line"``.
+    boundary_pressure : (float, float), optional
+        Dirichlet pressures at the inlet and outlet ends of the domain [Pa] (default
+        0, 0); the analytic-oracle tests impose exact data this way.
+    progress : callable, optional
+        Progress callback (:func:`bearing_fem.contacts.driver.solve_levels`).
+
+    Returns
+    -------
+    Result
+        Never raises for non-convergence or non-existence: see ``result.status``.
+    """
+    t0 = time.perf_counter()
+    model = LineModel(scene, (0.0, 0.0) if boundary_pressure is None else boundary_pressure)
+    if is_linear(scene):
+        return solve_linear_model(model, scene, t0)
+    return solve_newton_model(model, scene, t0, progress=progress)

@@ -1,0 +1,83 @@
+"""Parts shared by the discretised contact problems (line, point, transient, Kodnir).
+
+* :func:`fischer_burmeister` - the smoothed Fischer-Burmeister function of the Reynolds
+  cavitation complementarity problem p >= 0, R >= 0, p R = 0 (semismooth Newton).
+* :class:`ScaledResidual` - the scaled residual (Reynolds rows or their FB functions,
+  then the load row) and the admissibility test (finite unknowns, positive film).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+#: Smoothing of the Fischer-Burmeister function (scaled units). A degenerate node with
+#: p = R = 0 (the discrete free boundary) makes the plain FB Jacobian singular and lets
+#: the semismooth Newton cycle between two active sets; with mu > 0 the function is
+#: smooth and its root satisfies p >= 0, R >= 0, p R = mu^2 / 2, i.e. complementarity
+#: to 5e-21 in scaled units (p/p_ref times the scaled residual).
+FB_SMOOTHING = 1e-10
+
+def fischer_burmeister(a: np.ndarray, b: np.ndarray,
+                       mu: float = FB_SMOOTHING) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Smoothed FB function phi = a + b - sqrt(a^2 + b^2 + 2 mu^2) and its derivatives."""
+    r = np.sqrt(a * a + b * b + 2.0 * mu * mu)
+    phi = a + b - r
+    zero = r < 1e-300
+    rs = np.where(zero, 1.0, r)
+    da = np.where(zero, 1.0 - 1.0 / np.sqrt(2.0), 1.0 - a / rs)
+    db = np.where(zero, 1.0 - 1.0 / np.sqrt(2.0), 1.0 - b / rs)
+    return phi, da, db
+
+
+class ScaledResidual:
+    """Parts shared by the line and point problems: the scaled residual (Reynolds rows, or
+    their Fischer-Burmeister functions, at the free nodes, then the load row) and the
+    admissibility test (finite unknowns, positive film at every quadrature point), and
+    the reduced-pressure gradient of the Poiseuille term. Needs ``unpack``, ``fields_q``,
+    ``reynolds_residual``, ``free``, ``_row_scale``, ``cavitation``, ``p_ref``,
+    ``has_h0``, ``mass``, ``load``, ``flux`` and ``ops`` (the quadrature operators)."""
+
+    @property
+    def uses_reduced(self) -> bool:
+        """True if the Poiseuille term is rho h^3/(12 eta0) grad q_h (reduced pressure)."""
+        return getattr(self.flux, "reduced_alpha", None) is not None
+
+    def grad_reduced(self, p: np.ndarray) -> tuple[np.ndarray, ...]:
+        """Gradient of the interpolant q_h of the nodal reduced pressure q(p) at the
+        quadrature points [Pa/m], one array per dimension
+        (:meth:`~bearing_fem.physics.reynolds.UpwindFluxModel.reduced`)."""
+        q = self.flux.reduced(p)
+        return tuple(g @ q for g in self.ops.grad)
+
+    def admissible(self, z: np.ndarray) -> bool:
+        if not np.all(np.isfinite(z)):
+            return False
+        p, h0 = self.unpack(z)
+        _, h, _, _ = self.fields_q(p, h0)
+        return bool(np.min(h) > 0.0)
+
+    def nodal_residual(self, z: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
+        """p [Pa], h0 [m] and the unscaled nodal Reynolds residual of ``z``.
+
+        The last evaluation is kept: Newton asks for the residual of the same iterate
+        up to three times (line search, after the row scaling is updated, and in the
+        step), and only the row scaling differs. A problem's data never change after
+        construction, so the unknowns alone identify the evaluation.
+        """
+        cached = getattr(self, "_nodal_cache", None)
+        if cached is not None and np.array_equal(cached[0], z):
+            return cached[1], cached[2], cached[3]
+        p, h0 = self.unpack(z)
+        r = self.reynolds_residual(p, h0)
+        self._nodal_cache = (np.array(z, dtype=float, copy=True), p, h0, r)
+        return p, h0, r
+
+    def residual(self, z: np.ndarray) -> np.ndarray:
+        p, h0, r = self.nodal_residual(z)
+        r = r[self.free] * self._row_scale
+        if self.cavitation == "reynolds":
+            r, _, _ = fischer_burmeister(p[self.free] / self.p_ref, r)
+        if self.has_h0:
+            r = np.append(r, (self.mass @ p - self.load) / self.load)
+        return r
+
+

@@ -1,0 +1,118 @@
+"""Rigid transient squeeze of a point contact: h0(t) = h0 (1 + eps cos(omega t)).
+
+The rigid incompressible Reynolds equation has no memory (no dv/dt, no d(rho)/dt), so
+each instant is the quasi-steady wedge + squeeze problem at the gap h0(t) with the
+source dh0/dt, solved on the linear (reduced-pressure) path. Elastic series, whose
+pressure does have memory, are in :mod:`bearing_fem.contacts.transient`. Series are
+written to files by :func:`bearing_fem.io.export_series` (VTU + PVD, XDMF/HDF5).
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+from dataclasses import replace as dc_replace
+from typing import Callable
+
+import numpy as np
+
+from ..errors import SceneError
+from .driver import solve_linear_model
+from .point import PointModel, is_linear
+
+
+@dataclass
+class SqueezeSeries:
+    """Rigid transient squeeze series h0(t) = h0 (1 + eps cos(omega t)) (docs/theory.md: Kapitsa's squeeze solution).
+
+    Attributes
+    ----------
+    times : ndarray
+        t [s].
+    gap : ndarray
+        h0(t) [m].
+    squeeze_velocity : ndarray
+        dh0/dt = -h0 eps omega sin(omega t) [m/s].
+    p_max : ndarray
+        Maximum pressure of each step [Pa] (``inf`` for a step without solution).
+    results : list of Result
+        One quasi-steady solve per step, all on the same grid.
+    """
+
+    times: np.ndarray
+    gap: np.ndarray
+    squeeze_velocity: np.ndarray
+    p_max: np.ndarray
+    results: list
+
+    @property
+    def statuses(self) -> list[str]:
+        return [r.status for r in self.results]
+
+
+def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
+                         times: np.ndarray | None = None, n_steps: int = 16, *,
+                         boundary_pressure: Callable | None = None) -> SqueezeSeries:
+    """Quasi-steady rigid series for h0(t) = h0 (1 + eps cos(omega t)).
+
+    Each step solves the rigid wedge + squeeze problem with the gap h0(t) and the
+    squeeze source dh0/dt = -h0 eps omega sin(omega t) (the film has no memory in the
+    rigid incompressible Reynolds equation, so the steps are independent). All steps use
+    the grid of the mean gap h0, so the series exports on one mesh.
+
+    Parameters
+    ----------
+    scene : Scene
+        Rigid point scene with a prescribed gap (``load.gap`` = h0, the mean) and a
+        linear lubricant law (constant or Barus, incompressible).
+    eps : float
+        Relative amplitude [-], 0 <= eps < 1.
+    omega : float, optional
+        Angular frequency [rad/s]; default u_m / sqrt(2 rx h0) (one hydrodynamic length
+        per period/(2 pi)).
+    times : array, optional
+        Instants [s]; default ``n_steps`` instants over one period.
+    n_steps : int
+        Used when ``times`` is None.
+    boundary_pressure : callable, optional
+        ``(x, y, t) -> p`` Dirichlet data [Pa] (default 0).
+
+    Returns
+    -------
+    SqueezeSeries
+    """
+    if scene.contact.kind != "point":
+        raise SceneError(f"solve_squeeze_series needs contact.kind = 'point', got "
+                         f"{scene.contact.kind!r}")
+    if not is_linear(scene):
+        raise SceneError("solve_squeeze_series needs a rigid, incompressible scene with "
+                         "load.gap (m) and a constant or Barus viscosity law")
+    eps = float(eps)
+    if not 0.0 <= eps < 1.0:
+        raise ValueError(f"eps must lie in [0, 1) (dimensionless), got {eps!r}")
+    h0 = scene.load.gap
+    if omega is None:
+        omega = scene.kinematics.mean_speed / math.sqrt(2 * scene.contact.rx * h0)
+    omega = float(omega)
+    if not (math.isfinite(omega) and omega > 0.0):
+        raise ValueError(f"omega must be > 0 rad/s, got {omega!r}")
+    if times is None:
+        if not isinstance(n_steps, int) or n_steps < 1:
+            raise ValueError(f"n_steps must be a positive integer, got {n_steps!r}")
+        times = np.arange(n_steps) * (2 * math.pi / omega) / n_steps
+    times = np.asarray(times, dtype=float).ravel()
+    gaps = h0 * (1.0 + eps * np.cos(omega * times))
+    rates = -h0 * eps * omega * np.sin(omega * times)
+    results = []
+    for t, g, r in zip(times, gaps, rates):
+        sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
+        bp = None if boundary_pressure is None else (
+            lambda x, y, _t=t: boundary_pressure(x, y, _t))
+        t0 = time.perf_counter()
+        model = PointModel(sc, bp, float(r), grid_scene=scene)
+        res = solve_linear_model(model, sc, t0)
+        results.append(res)
+    p_max = np.array([r.quantities.get("p_max", np.inf) if r.success else np.inf
+                      for r in results])
+    return SqueezeSeries(times, gaps, rates, p_max, results)
+
