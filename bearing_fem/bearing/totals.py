@@ -60,7 +60,10 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
         ``h_min``, ``h_central`` [m], ``p_max`` [Pa], ``rolling_resistance``,
         ``sliding_friction``, ``friction_force`` [N], ``heat_power`` [W],
         ``film_parameter`` (lambda, or None), ``h_central_formula`` [m] and its name,
-        ``newton_iterations``, ``wall_time_s``, ``warnings``, ``slices``.
+        ``heat_power_poiseuille_direct`` and ``heat_power_stabilisation`` [W] (the contact
+        solver's split of the rolling heat: direct dissipation integral and numerical
+        dissipation of the stabilisation; None if not reported), ``newton_iterations``,
+        ``wall_time_s``, ``warnings``, ``slices``.
     """
     out: dict[str, Any] = {
         "raceway": spec.raceway, "load": spec.load,
@@ -74,7 +77,8 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
                    rolling_resistance=0.0, sliding_friction=0.0, friction_force=0.0,
                    heat_power=0.0, film_parameter=None, h_central_formula=None,
                    h_central_formula_name=None, newton_iterations=0, wall_time_s=0.0,
-                   warnings=[], slices=0)
+                   warnings=[], slices=0, heat_power_poiseuille_direct=0.0,
+                   heat_power_stabilisation=0.0)
         return out
     sums = [results[k].summary() for k in spec.keys]
     kind = "point" if spec.ry is not None else "line"
@@ -89,6 +93,13 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
                 complete[key] = False
             else:
                 tot[key] += v * w
+    # the contact solver's split of the rolling heat: the direct dissipation integral and
+    # the stabilisation's numerical dissipation (their sum is heat_power); None if absent
+    extra = {}
+    for key in ("heat_power_poiseuille_direct", "heat_power_stabilisation"):
+        vals = [_val(s, key) for s in sums]
+        extra[key] = None if any(v is None for v in vals) else \
+            float(sum(v * w for v, w in zip(vals, widths)))
     films = [_val(s, "h_min") for s in sums]
     pmax = [_val(s, "p_max") for s in sums]
     # central film of the most loaded scene (the middle slice of a symmetric roller)
@@ -129,7 +140,7 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
         h_central_formula=float(h_formula), h_central_formula_name=name,
         newton_iterations=int(sum(int(s.get("newton_iterations") or 0) for s in sums)),
         wall_time_s=float(sum(float(s.get("wall_time_s") or 0.0) for s in sums)),
-        warnings=warnings, slices=len(sums))
+        warnings=warnings, slices=len(sums), **extra)
     if kind == "point":
         out.pop("slices")
     return out
@@ -173,12 +184,15 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
         ``friction_torque``, ``friction_torque_inner``, ``friction_torque_outer`` [N m]
         (None if a contact failed), ``heat_power``, ``heat_power_inner``,
         ``heat_power_outer`` [W], ``energy_balance`` {torque x omega_i [W], heat power [W],
-        relative difference}, ``h_min`` [m] and ``h_min_location``, ``p_max`` [Pa] and
+        relative difference, the fraction of the heat that is the contact solver's
+        numerical (stabilisation) dissipation}, ``h_min`` [m] and ``h_min_location``,
+        ``p_max`` [Pa] and
         ``p_max_location``, ``film_parameter_min`` [-] (or None), ``complete`` (bool).
     """
     r = 0.5 * bearing.geometry.element_diameter
     omega = bearing.operation.inner_speed
-    m_in = m_out = q_in = q_out = 0.0
+    m_in = m_out = q_in = q_out = q_stab = 0.0
+    stab_known = True
     complete = True
     h_best = p_best = None
     for j, row in enumerate(rows):
@@ -195,6 +209,11 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
         m_out += b
         q_in += ci["heat_power"]
         q_out += co["heat_power"]
+        for c in (ci, co):
+            if c.get("heat_power_stabilisation") is None:
+                stab_known = False
+            else:
+                q_stab += c["heat_power_stabilisation"]
         for c in (ci, co):
             loc = {"element": j, "raceway": c["raceway"],
                    "azimuth_deg": math.degrees(float(azimuth[j]))}
@@ -216,7 +235,9 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
         "heat_power_outer": q_out if complete else None,
         "energy_balance": {"torque_times_speed": power if complete else None,
                            "heat_power": heat if complete else None,
-                           "relative_difference": rel if complete else None},
+                           "relative_difference": rel if complete else None,
+                           "stabilisation_fraction": (q_stab / heat if complete and stab_known
+                                                      and heat > 0.0 else None)},
         "h_min": None if h_best is None else h_best[0],
         "h_min_location": None if h_best is None else h_best[1],
         "p_max": None if p_best is None else p_best[0],
