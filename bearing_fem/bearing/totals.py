@@ -49,7 +49,9 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
 
     Line contacts: the per-metre results of each scene times its length (slice width),
     summed; films are minima and pressures maxima over the slices. Point contacts: the
-    scene's summary. Excluded contacts: status ``excluded`` with the reason.
+    scene's summary. Excluded contacts: status ``excluded`` with the reason. Unsuccessful
+    contacts: the status and message of the failed scene, films and pressure None (the
+    last iterate stays in the contact :class:`~bearing_fem.result.Result`).
 
     Returns
     -------
@@ -127,11 +129,14 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
         status, success = sums[0]["status"], True
         message = sums[0]["message"] if len(sums) == 1 else \
             f"{len(sums)} slices solved ({sums[imax]['message']})"
+    h_central = _val(sums[imax], "h_central")
+    p_top = None if any(p is None for p in pmax) else max(pmax)
+    if failed:  # an unsuccessful solve's last iterate is no result (Result keeps it)
+        h_min = h_central = p_top = None
     out.update(
         status=status, success=success, message=message,
         load_solved=tot["load"] if complete["load"] else None,
-        h_min=h_min, h_central=_val(sums[imax], "h_central"),
-        p_max=None if any(p is None for p in pmax) else max(pmax),
+        h_min=h_min, h_central=h_central, p_max=p_top,
         rolling_resistance=tot["rolling_resistance"] if complete["rolling_resistance"] else None,
         sliding_friction=tot["sliding_friction"] if complete["sliding_friction"] else None,
         friction_force=tot["friction_force"] if complete["friction_force"] else None,
