@@ -236,7 +236,7 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
             hc = e["inner"]["h_central"]
             u_m = e["inner"]["entrainment_speed"]
             eta = b.lubricant.viscosity
-            kap = None
+            kap = None                     # rigid Barus pressure: None = no solution
             if hc is not None:
                 q = float(kapitsa_point_max_reduced(hc, 1 / (2 * rw), 1 / (2 * rw), eta, u_m))
                 kap = float(barus_from_reduced(q, PIEZO)) if PIEZO * q < 1 else None
@@ -270,13 +270,15 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
 
     for c in rows:
         kap = c["kapitsa_rigid_p_max_Pa_at_h_central"]
+        rigid = "-" if c["h_central_m"] is None else (
+            "no solution" if kap is None else f"{kap / 1e6:.2f}")
         mesh = c["mesh"].get("point_nodes", "129x129 default")
         lines.append(
             f"| {c['oil']} | {c['speed_m_s']:g} | {c['inner_rpm']:.0f} | "
             f"{f(c['max_moes_M'], '.0f')} | {c['status']} ({mesh}) | "
             f"{f(c['h_min_m'], '.3f', 1e6)} | {f(c['h_central_m'], '.3f', 1e6)} | "
             f"{f(c['h_central_vs_nvm'], '.3f')} | {f(c['p_max_Pa'], '.2f', 1e-9)} | "
-            f"{'no solution' if kap is None else f'{kap / 1e6:.2f}'} | "
+            f"{rigid} | "
             f"{f(c['film_parameter'], '.2f')} | {f(c['friction_torque_N_m'], '.4f')} | "
             f"{f(c['heat_power_W'], '.2f')} |")
     (outdir / "whole_bearing.md").write_text("\n".join(lines) + "\n")
