@@ -111,7 +111,7 @@ def main(outdir, quick: bool = False, *, speed_is_sum: bool = True,
     quick : bool
         Coarser mesh, 6 phases and speeds (0.5, 2.5, 7.5) m/s only.
     speed_is_sum : bool
-        Seed speed is u1 + u2 (True) or the mean speed (False).
+        The thesis' speed is u1 + u2 (True) or the mean speed (False).
     omega : float, optional
         Vibration angular frequency [rad/s]; default 2 v/d_i (shaft rotation).
     nodes : int, optional

@@ -191,8 +191,8 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
         ``heat_power_outer`` [W], ``energy_balance`` {torque x omega_i [W], heat power [W],
         relative difference, the fraction of the heat that is the contact solver's
         numerical (stabilisation) dissipation}, ``h_min`` [m] and ``h_min_location``,
-        ``p_max`` [Pa] and
-        ``p_max_location``, ``film_parameter_min`` [-] (or None), ``complete`` (bool).
+        ``p_max`` [Pa] and ``p_max_location``, ``film_parameter_min`` [-] (each None when a
+        contact failed), ``complete`` (bool).
     """
     r = 0.5 * bearing.geometry.element_diameter
     omega = bearing.operation.inner_speed
@@ -243,10 +243,11 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
                            "relative_difference": rel if complete else None,
                            "stabilisation_fraction": (q_stab / heat if complete and stab_known
                                                       and heat > 0.0 else None)},
-        "h_min": None if h_best is None else h_best[0],
-        "h_min_location": None if h_best is None else h_best[1],
-        "p_max": None if p_best is None else p_best[0],
-        "p_max_location": None if p_best is None else p_best[1],
-        "film_parameter_min": (h_best[0] / sigma) if (sigma and h_best is not None) else None,
+        # the extremes over all loaded contacts, or None when a contact failed
+        "h_min": h_best[0] if complete and h_best else None,
+        "h_min_location": h_best[1] if complete and h_best else None,
+        "p_max": p_best[0] if complete and p_best else None,
+        "p_max_location": p_best[1] if complete and p_best else None,
+        "film_parameter_min": (h_best[0] / sigma) if (sigma and complete and h_best) else None,
         "complete": complete,
     }
