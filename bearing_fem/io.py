@@ -61,7 +61,7 @@ def field_unit(name: str) -> str:
     Parameters
     ----------
     name : str
-        Field name; by convention it ends with its unit (STYLE.md).
+        Field name; by convention it ends with its unit (e.g. ``film_m``, ``viscosity_Pa_s``).
 
     Returns
     -------

@@ -308,7 +308,7 @@ class Materials:
 
     @property
     def e_prime(self) -> float:
-        """Reduced modulus E' [Pa] (Hamrock convention, PHYSICS.md section 1)."""
+        """Reduced modulus E' [Pa] (Hamrock convention, docs/theory.md)."""
         if self.reduced_modulus is not None:
             return float(self.reduced_modulus)
         return 2.0 / ((1 - self.nu1**2) / self.e1 + (1 - self.nu2**2) / self.e2)
@@ -543,7 +543,7 @@ class Thermal:
     oil_temperature : float
         Bulk oil (and far-field body) temperature [deg C]. No default.
     exponent : float
-        Prokofiev exponent n [-] of eta0(t) = eta_ref (t_ref/t)^n (seed 000). No default.
+        Prokofiev exponent n [-] of eta0(t) = eta_ref (t_ref/t)^n (Yachikov & Vostrikov 2015). No default.
     temperature_law : {"prokofiev"}
     reference_temperature : float
         t_ref [deg C] at which ``reference_viscosity`` (or ``lubricant.viscosity``) holds.

@@ -81,9 +81,9 @@ def line_result():
 @pytest.fixture(scope="module")
 def readme_ball():
     """The README's ball scene (the TOML block titled "Ball on flat"), solved as given."""
-    from tests.test_readme import _blocks
-
-    text = next(b for b in _blocks("toml") if 'title = "Ball on flat"' in b)
+    blocks = re.findall(r"^```toml[^\n]*\n(.*?)^```", README.read_text(encoding="utf-8"),
+                        re.S | re.M)
+    text = next(b for b in blocks if 'title = "Ball on flat"' in b)
     result = solve(Scene.from_toml_string(text, source="README ball scene"))
     assert result.success, result.message
     return result

@@ -1,4 +1,4 @@
-"""Bad input: every scene field rejected with a message naming it (STYLE.md, tests).
+"""Bad input: every scene field rejected with a message naming its field, value and unit.
 
 Each case mutates a valid base scene and must give
 
