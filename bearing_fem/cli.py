@@ -96,7 +96,7 @@ def failure_numbers(result: Any) -> str:
     parts = []
     its = int(getattr(result, "newton_iterations", 0) or 0)
     if its:
-        parts.append(f"{its} Newton iterations")
+        parts.append(f"{its} Newton iteration{'' if its == 1 else 's'}")
     history = list(getattr(result, "history", []) or [])
     if history and result.status != "no_solution":
         last = float(history[-1])

@@ -302,6 +302,16 @@ def _window(coord: np.ndarray, field: np.ndarray, scale: float | None,
     return (a, b) if b > a else (lo, hi)
 
 
+def _save(fig: Any, ax: Any, d: PlotData, what: str, out: Path) -> None:
+    """Title (with the status stamp of an unsuccessful result), save as PNG, close."""
+    import matplotlib.pyplot as plt
+
+    ax.set_title(figure_title(d, what), fontsize=10)
+    _stamp(fig, d)
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
+
+
 def _map_window(d: PlotData) -> tuple[tuple[float, float], tuple[float, float], Any]:
     """Zoom of a point result: x and y intervals [m] and the index of the nodes inside."""
     ax_, ay_ = d.semi_axes if d.semi_axes is not None else (None, None)
@@ -369,10 +379,7 @@ def _matplotlib_map(d: PlotData, out: Path) -> None:
     ax.set_ylim(y0 * 1e3, y1 * 1e3)
     ax.set_xlabel("x [mm] (rolling direction)")
     ax.set_ylabel("y [mm]")
-    ax.set_title(figure_title(d, "pressure, film contours [um]"), fontsize=10)
-    _stamp(fig, d)
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
+    _save(fig, ax, d, "pressure, film contours [um]", out)
 
 
 def _matplotlib_surface(d: PlotData, out: Path) -> None:
@@ -389,10 +396,7 @@ def _matplotlib_surface(d: PlotData, out: Path) -> None:
     ax.set_zlabel(field_label(d))
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
-    ax.set_title(figure_title(d, "pressure surface"), fontsize=10)
-    _stamp(fig, d)
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
+    _save(fig, ax, d, "pressure surface", out)
 
 
 def _pyvista_surface(d: PlotData, out: Path, window_size) -> None:
@@ -456,8 +460,4 @@ def _matplotlib_line(d: PlotData, out: Path) -> None:
         ref = max(lo, centre) if np.isfinite(centre) else lo
         top = min(top, 4.0 * ref) if ref > 0 else top
         ax2.set_ylim(min(0.0, lo), max(top * 1.05, 1e-9))
-    ax.set_title(figure_title(d, "centre line y = 0" if d.kind == "point" else "line contact"),
-                 fontsize=10)
-    _stamp(fig, d)
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
+    _save(fig, ax, d, "centre line y = 0" if d.kind == "point" else "line contact", out)

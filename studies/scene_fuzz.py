@@ -172,6 +172,14 @@ def _traction(rng: random.Random) -> dict | None:
     return out
 
 
+def _add_traction(rng: random.Random, data: dict) -> str:
+    """Give a scene a random ``[traction]`` section (or none); return the model's name."""
+    traction = _traction(rng)
+    if traction:
+        data["traction"] = traction
+    return traction["model"] if traction else "default"
+
+
 def gen_elastic(rng: random.Random, quick: bool) -> tuple[str, dict]:
     data = (line_elastic if rng.random() < 0.6 else point_elastic)(rng, quick)
     return f"pure rolling {data['contact']['kind']}", data
@@ -181,11 +189,8 @@ def gen_sliding(rng: random.Random, quick: bool) -> tuple[str, dict]:
     data = (line_elastic if rng.random() < 0.5 else point_elastic)(rng, quick)
     srr = rng.choice([0.05, 0.5, 2.0])
     data["kinematics"] = _speeds(rng, srr)
-    traction = _traction(rng)
-    if traction:
-        data["traction"] = traction
-    return (f"{data['contact']['kind']} SRR {srr:g}, traction "
-            f"{traction['model'] if traction else 'default'}"), data
+    model = _add_traction(rng, data)
+    return f"{data['contact']['kind']} SRR {srr:g}, traction {model}", data
 
 
 def gen_point_traction(rng: random.Random, quick: bool) -> tuple[str, dict]:
@@ -208,11 +213,9 @@ def gen_thermal(rng: random.Random, quick: bool) -> tuple[str, dict]:
                        "source_model": rng.choice(["jaeger", "jaeger", "fe"]),
                        "contact_temperature": rng.choice(["mean", "max"]),
                        "max_iterations": rng.choice([1, 5, 30])}
-    traction = _traction(rng)
-    if traction:
-        data["traction"] = traction
+    model = _add_traction(rng, data)
     return (f"thermal line SRR {srr:g}, {data['thermal']['source_model']}, traction "
-            f"{traction['model'] if traction else 'default'}"), data
+            f"{model}"), data
 
 
 def gen_rigid_gap(rng: random.Random, quick: bool) -> tuple[str, dict]:
