@@ -222,10 +222,12 @@ class Contact:
     kind : {"line", "point"}
         Line contact (roller, per metre of length) or point/elliptical contact (ball).
     rx : float
-        Reduced radius in the rolling direction x [m] (1/rx = 1/r1x + 1/r2x).
+        Reduced radius in the rolling direction x [m] (1/rx = 1/r1x + 1/r2x), in
+        :data:`LENGTH_RANGE`.
     ry : float or None
-        Reduced radius across the rolling direction [m]; point contacts only
-        (``inf`` is allowed and means a line-like ellipse).
+        Reduced radius across the rolling direction [m]; point contacts only, in
+        :data:`LENGTH_RANGE`, with ry/rx within 1/:data:`MAX_RADIUS_RATIO` ..
+        :data:`MAX_RADIUS_RATIO` (a more slender contact is a line contact).
     length : float or None
         Effective contact length [m]; line contacts only, used for totals.
     """
@@ -268,7 +270,7 @@ class Materials:
     Parameters
     ----------
     e1, e2 : float
-        Young's moduli [Pa].
+        Young's moduli [Pa], in :data:`MODULUS_RANGE` (so is E').
     nu1, nu2 : float
         Poisson ratios [-], in (-1, 0.5].
     reduced_modulus : float or None
@@ -321,7 +323,8 @@ class Lubricant:
     Parameters
     ----------
     viscosity : float
-        eta0, viscosity at ambient pressure [Pa s]. No default.
+        eta0, viscosity at ambient pressure [Pa s], in :data:`VISCOSITY_RANGE`
+        (:data:`ROELANDS_VISCOSITY` with the Roelands law). No default.
     piezo : float
         Barus pressure-viscosity coefficient alpha [1/Pa] (Roelands uses it for its slope).
     viscosity_law : {"barus", "roelands", "constant"}
@@ -357,7 +360,8 @@ class Lubricant:
 
 @dataclass(frozen=True, kw_only=True)
 class Kinematics:
-    """Surface speeds along +x [m/s]. The mean (entrainment) speed must be > 0."""
+    """Surface speeds along +x [m/s], each within +-:data:`MAX_SPEED`. The mean
+    (entrainment) speed must be at least :data:`MIN_MEAN_SPEED`."""
 
     _section = "kinematics"
     u1: float
@@ -397,9 +401,10 @@ class Load:
     Parameters
     ----------
     force : float or None
-        N for a point contact, N per metre of length for a line contact.
+        N for a point contact, N per metre of length for a line contact, in
+        :data:`FORCE_RANGE`.
     gap : float or None
-        Prescribed rigid offset h0 [m] (no load balance).
+        Prescribed rigid offset h0 [m] (no load balance), in :data:`GAP_RANGE`.
     """
 
     _section = "load"
@@ -701,7 +706,15 @@ _REQUIRED = ("contact", "lubricant", "kinematics", "load")
 
 @dataclass(frozen=True, kw_only=True)
 class Scene:
-    """A complete, validated contact scene (SI units). See ``docs/scenes.md``."""
+    """A complete, validated contact scene (SI units). See ``docs/scenes.md``.
+
+    Besides each section's own checks, a scene checks the rules between sections: the
+    materials of an elastic scene, the thermal patch (its section, line contacts only,
+    both surfaces moving), the mesh layout of the contact kind, and for an elastic scene
+    with a load that its Hertz contact is small against the radii
+    (:data:`MAX_HERTZ_RATIO`) and that the viscosity at its Hertz pressure stays within
+    double precision (:data:`MAX_VISCOSITY_RATIO`).
+    """
 
     title: str = ""
     contact: Contact
