@@ -888,6 +888,9 @@ class Scene:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as exc:
             raise SceneError(f"{source} is not valid TOML: {exc}") from None
+        except RecursionError:
+            raise SceneError(f"{source} is not a scene: its arrays or tables are nested "
+                             "too deeply to read") from None
         return cls.from_dict(data)
 
     def to_dict(self) -> dict[str, Any]:

@@ -295,7 +295,10 @@ GARBAGE_VALUES = ["text", True, [1.0, 2.0], {"a": 1}, -0.0, 10**400, "1e-3", [],
 
 def _garbage(rng: random.Random, quick: bool) -> tuple[str, bytes]:
     base = rng.choice([line_elastic, point_elastic])(rng, quick)
-    choice = rng.randrange(14)
+    choice = rng.randrange(15)
+    if choice == 14:
+        depth = rng.choice([1000, 100_000])
+        return f"array nested {depth} deep", b"title = " + b"[" * depth + b"]" * depth
     if choice == 0:
         section = rng.choice(list(base))
         base.pop(section)
@@ -304,8 +307,13 @@ def _garbage(rng: random.Random, quick: bool) -> tuple[str, bytes]:
         section = rng.choice([s for s in base if isinstance(base[s], dict)])
         key = rng.choice(list(base[section]))
         value = rng.choice(GARBAGE_VALUES)
-        base[section][key] = value
-        return f"{section}.{key} of wrong type {type(value).__name__}", _toml(base)
+        if isinstance(value, dict):  # an inline table: written by hand (not a scene value)
+            base[section][key] = "__inline__"
+            text = _toml(base).replace(b'"__inline__"', b"{ a = 1 }")
+        else:
+            base[section][key] = value
+            text = _toml(base)
+        return f"{section}.{key} of wrong type {type(value).__name__}", text
     if choice == 2:
         section = rng.choice([s for s in base if isinstance(base[s], dict)])
         base[section]["colour"] = "blue"

@@ -420,7 +420,10 @@ def test_cli_rejects_with_exit_2(base, changes, expect, tmp_path, capsys):
     ("[contact]\nrx = 0.01\nrx = 0.02\n", "not valid TOML"),
     ("[lubricant]\nviscosity = \n", "not valid TOML"),
     ("title = 'unterminated\n", "not valid TOML"),
-], ids=["open-table", "duplicate-key", "missing-value", "open-string"])
+    ("title = " + "[" * 100_000 + "]" * 100_000 + "\n", "nested too deeply"),
+    ("title = " + "{a=" * 5000 + "1" + "}" * 5000 + "\n", "nested too deeply"),
+], ids=["open-table", "duplicate-key", "missing-value", "open-string", "deep-array",
+        "deep-table"])
 def test_cli_broken_toml(tmp_path, capsys, text, expect):
     path = tmp_path / "broken.toml"
     path.write_text(text, encoding="utf-8")
