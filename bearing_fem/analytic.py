@@ -17,9 +17,7 @@ from typing import Any as _Any
 
 from scipy.optimize import brentq as _brentq
 
-from .units import _require_finite as _a_finite
-from .units import _require_nonnegative as _a_nonneg
-from .units import _require_positive as _a_pos
+from .validation import require_finite, require_nonnegative, require_positive
 
 # Symbols (Section A): x, y [m] (x along the entrainment, inlet at x < 0); h0 [m] central
 # gap; a = 1/(2 rx), b = 1/(2 ry) [1/m] gap curvatures; eta0 = viscosity [Pa s];
@@ -45,7 +43,7 @@ def barus_from_reduced(q: _Any, piezo: _Any) -> np.ndarray:
     ndarray
         p [Pa] (``inf`` where alpha q >= 1).
     """
-    _a_nonneg("piezo", piezo, "1/Pa")
+    require_nonnegative("piezo", piezo, "1/Pa")
     q = np.asarray(q, dtype=float)
     alpha = np.asarray(piezo, dtype=float)
     z = alpha * q
@@ -69,7 +67,7 @@ def reduced_from_barus(p: _Any, piezo: _Any) -> np.ndarray:
     piezo : float or array
         alpha [1/Pa], >= 0.
     """
-    _a_nonneg("piezo", piezo, "1/Pa")
+    require_nonnegative("piezo", piezo, "1/Pa")
     p = np.asarray(p, dtype=float)
     alpha = np.asarray(piezo, dtype=float)
     safe_alpha = np.where(alpha > 0.0, alpha, 1.0)
@@ -80,12 +78,12 @@ def reduced_from_barus(p: _Any, piezo: _Any) -> np.ndarray:
 
 def _check_kapitsa(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_speed: _Any,
                    dh0dt: _Any) -> None:
-    _a_pos("h0", h0, "m")
-    _a_pos("a", a, "1/m")
-    _a_nonneg("b", b, "1/m")
-    _a_pos("viscosity", viscosity, "Pa s")
-    _a_nonneg("mean_speed", mean_speed, "m/s")
-    _a_finite("dh0dt", dh0dt, "m/s")
+    require_positive("h0", h0, "m")
+    require_positive("a", a, "1/m")
+    require_nonnegative("b", b, "1/m")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_nonnegative("mean_speed", mean_speed, "m/s")
+    require_finite("dh0dt", dh0dt, "m/s")
 
 
 def kapitsa_point_coefficients(viscosity: _Any, mean_speed: _Any, a: _Any, b: _Any,
@@ -112,11 +110,11 @@ def kapitsa_point_coefficients(viscosity: _Any, mean_speed: _Any, a: _Any, b: _A
     (A, B)
         A [Pa m] and B [Pa m^2].
     """
-    _a_pos("viscosity", viscosity, "Pa s")
-    _a_nonneg("mean_speed", mean_speed, "m/s")
-    _a_pos("a", a, "1/m")
-    _a_nonneg("b", b, "1/m")
-    _a_finite("dh0dt", dh0dt, "m/s")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_nonnegative("mean_speed", mean_speed, "m/s")
+    require_positive("a", a, "1/m")
+    require_nonnegative("b", b, "1/m")
+    require_finite("dh0dt", dh0dt, "m/s")
     big_a = -12.0 * viscosity * mean_speed * a / (3.0 * a + 2.0 * b)
     big_b = -3.0 * viscosity * dh0dt / (a + b)
     return big_a, big_b
@@ -206,7 +204,7 @@ def kapitsa_existence_ratio(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_sp
     tends to 1 the peak pressure tends to infinity. Arguments as
     :func:`kapitsa_point_max_reduced`, plus ``piezo`` alpha [1/Pa] (keyword).
     """
-    _a_nonneg("piezo", piezo, "1/Pa")
+    require_nonnegative("piezo", piezo, "1/Pa")
     return np.asarray(piezo, dtype=float) * kapitsa_point_max_reduced(
         h0, a, b, viscosity, mean_speed, dh0dt)
 
@@ -241,7 +239,7 @@ def kapitsa_line_pressure(x: _Any, h0: float, radius: float, viscosity: float,
     ndarray
         p [Pa] (``inf`` where alpha q >= 1).
     """
-    _a_pos("radius", radius, "m")
+    require_positive("radius", radius, "m")
     a = 1.0 / (2.0 * radius)
     return kapitsa_point_pressure(x, 0.0, h0, a, 0.0, viscosity, mean_speed, dh0dt, piezo)
 
@@ -250,7 +248,7 @@ def kapitsa_line_max_reduced(h0: _Any, radius: _Any, viscosity: _Any, mean_speed
                              dh0dt: _Any = 0.0) -> np.ndarray:
     """max_x of the isoviscous rigid-cylinder q [Pa] (b = 0 case of
     :func:`kapitsa_point_max_reduced`)."""
-    _a_pos("radius", radius, "m")
+    require_positive("radius", radius, "m")
     return kapitsa_point_max_reduced(h0, 1.0 / (2.0 * np.asarray(radius, dtype=float)),
                                      0.0, viscosity, mean_speed, dh0dt)
 
@@ -280,14 +278,14 @@ def martin_outlet_angle() -> float:
 
 def martin_hstar(h0: _Any) -> np.ndarray:
     """Film h* = h0 sec^2(g_c) [m] at the Reynolds outlet, where dp/dx = 0 (5.2)."""
-    _a_pos("h0", h0, "m")
+    require_positive("h0", h0, "m")
     return np.asarray(h0, dtype=float) / np.cos(martin_outlet_angle()) ** 2
 
 
 def martin_outlet_position(h0: _Any, radius: _Any) -> np.ndarray:
     """Outlet (cavitation) position x_c = sqrt(2 R h0) tan(g_c) [m] (5.2)."""
-    _a_pos("h0", h0, "m")
-    _a_pos("radius", radius, "m")
+    require_positive("h0", h0, "m")
+    require_positive("radius", radius, "m")
     return np.sqrt(2.0 * np.asarray(radius, dtype=float) * h0) * np.tan(martin_outlet_angle())
 
 
@@ -320,10 +318,10 @@ def martin_pressure(x: _Any, h0: float, radius: float, viscosity: float,
     ndarray
         p [Pa].
     """
-    _a_pos("h0", h0, "m")
-    _a_pos("radius", radius, "m")
-    _a_pos("viscosity", viscosity, "Pa s")
-    _a_nonneg("mean_speed", mean_speed, "m/s")
+    require_positive("h0", h0, "m")
+    require_positive("radius", radius, "m")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_nonnegative("mean_speed", mean_speed, "m/s")
     gc = martin_outlet_angle()
     length = np.sqrt(2.0 * radius * h0)
     p0 = viscosity * mean_speed * length / h0**2
@@ -337,19 +335,19 @@ def martin_load(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: _Any) -> np
 
     Exact (integration by parts of the isoviscous pressure; ~ 4.896 eta0 u_m R/h0).
     """
-    _a_pos("radius", radius, "m")
-    _a_pos("viscosity", viscosity, "Pa s")
-    _a_nonneg("mean_speed", mean_speed, "m/s")
+    require_positive("radius", radius, "m")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_nonnegative("mean_speed", mean_speed, "m/s")
     return 6.0 * np.asarray(viscosity * mean_speed * radius, dtype=float) / martin_hstar(h0)
 
 
 def martin_max_reduced(h0: _Any, radius: _Any, viscosity: _Any,
                        mean_speed: _Any) -> np.ndarray:
     """Peak isoviscous Martin pressure [Pa]: P0 (p/P0)(-g_c), at x = -x_c where h = h* (5.2)."""
-    _a_pos("h0", h0, "m")
-    _a_pos("radius", radius, "m")
-    _a_pos("viscosity", viscosity, "Pa s")
-    _a_nonneg("mean_speed", mean_speed, "m/s")
+    require_positive("h0", h0, "m")
+    require_positive("radius", radius, "m")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_nonnegative("mean_speed", mean_speed, "m/s")
     gc = martin_outlet_angle()
     h0 = np.asarray(h0, dtype=float)
     p0 = viscosity * mean_speed * np.sqrt(2.0 * np.asarray(radius) * h0) / h0**2
@@ -359,7 +357,7 @@ def martin_max_reduced(h0: _Any, radius: _Any, viscosity: _Any,
 def martin_existence_ratio(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: _Any, *,
                            piezo: _Any) -> np.ndarray:
     """alpha q_max for Martin's cylinder [-]: a Barus solution exists iff < 1 (5.2)."""
-    _a_nonneg("piezo", piezo, "1/Pa")
+    require_nonnegative("piezo", piezo, "1/Pa")
     return np.asarray(piezo, dtype=float) * martin_max_reduced(h0, radius, viscosity,
                                                                mean_speed)
 
@@ -370,8 +368,8 @@ def hertz_line_pressure(x: _Any, b: float, p_h: float) -> np.ndarray:
 
     Parameters: x [m], half-width b [m], p_h [Pa]. Integrates to w = pi b p_h/2.
     """
-    _a_pos("b", b, "m")
-    _a_nonneg("p_h", p_h, "Pa")
+    require_positive("b", b, "m")
+    require_nonnegative("p_h", p_h, "Pa")
     xi = np.asarray(x, dtype=float) / b
     return p_h * np.sqrt(np.maximum(1.0 - xi**2, 0.0))
 
@@ -384,8 +382,8 @@ def hertz_line_gap_outside(x: _Any, b: float, radius: float) -> np.ndarray:
 
     Parameters: x [m], b [m], R = radius [m].
     """
-    _a_pos("b", b, "m")
-    _a_pos("radius", radius, "m")
+    require_positive("b", b, "m")
+    require_positive("radius", radius, "m")
     big_x = np.maximum(np.abs(np.asarray(x, dtype=float)) / b, 1.0)
     return b**2 / (2.0 * radius) * (big_x * np.sqrt(big_x**2 - 1.0) - np.arccosh(big_x))
 
@@ -396,8 +394,8 @@ def hertz_point_pressure(x: _Any, y: _Any, a: float, p_h: float) -> np.ndarray:
     Parameters: x, y [m] (broadcast), contact radius a [m], p_h [Pa].
     Integrates to F = 2 pi a^2 p_h/3.
     """
-    _a_pos("a", a, "m")
-    _a_nonneg("p_h", p_h, "Pa")
+    require_positive("a", a, "m")
+    require_nonnegative("p_h", p_h, "Pa")
     r2 = (np.asarray(x, dtype=float) ** 2 + np.asarray(y, dtype=float) ** 2) / a**2
     return p_h * np.sqrt(np.maximum(1.0 - r2, 0.0))
 
@@ -411,9 +409,9 @@ def hertz_point_displacement(r: _Any, a: float, p_h: float, e_prime: float) -> n
 
     Parameters: r [m] (|r| is used), a [m], p_h [Pa], E' [Pa].
     """
-    _a_pos("a", a, "m")
-    _a_nonneg("p_h", p_h, "Pa")
-    _a_pos("e_prime", e_prime, "Pa")
+    require_positive("a", a, "m")
+    require_nonnegative("p_h", p_h, "Pa")
+    require_positive("e_prime", e_prime, "Pa")
     r = np.abs(np.asarray(r, dtype=float))
     inside = np.pi * p_h / (2.0 * a * e_prime) * (2.0 * a**2 - r**2)
     ro = np.maximum(r, a)
@@ -426,14 +424,6 @@ def hertz_point_displacement(r: _Any, a: float, p_h: float, e_prime: float) -> n
 # ----------------------------------------------------------------------------------------
 # Section B: Korovchinsky half-plane thermal contact (PHYSICS.md 5.4), Jaeger/Blok.
 # ----------------------------------------------------------------------------------------
-
-
-def _as_positive(name: str, value: float, unit: str) -> float:
-    """Return ``value`` as a float, or raise ValueError naming argument, value and unit."""
-    v = float(value)
-    if not np.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {value!r}")
-    return v
 
 
 def korovchinsky_root(x_over_a: np.ndarray | float, y_over_a: np.ndarray | float) -> np.ndarray:
@@ -505,8 +495,8 @@ def korovchinsky_characteristic_temperature(half_width: float, q_max: float,
     conductivity : float
         Thermal conductivity lambda [W/(m K)].
     """
-    a = _as_positive("half_width", half_width, "m")
-    lam = _as_positive("conductivity", conductivity, "W/(m K)")
+    a = require_positive("half_width", half_width, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
     return a * float(q_max) / lam
 
 
@@ -537,7 +527,7 @@ def korovchinsky_temperature(x: np.ndarray | float, y: np.ndarray | float, half_
     ndarray
         Temperature [K] relative to the datum fixed by C.
     """
-    a = _as_positive("half_width", half_width, "m")
+    a = require_positive("half_width", half_width, "m")
     Tn = korovchinsky_characteristic_temperature(a, q_max, conductivity)
     return Tn * (C + korovchinsky_shape(np.asarray(x, float) / a, np.asarray(y, float) / a))
 
@@ -599,11 +589,11 @@ def korovchinsky_strip_average(C: float = 0.0) -> float:
 
 def _moving_checks(b: float, conductivity: float, density: float, heat_capacity: float,
                    speed: float) -> tuple[float, float, float, float, float]:
-    return (_as_positive("b (half-length)", b, "m"),
-            _as_positive("conductivity", conductivity, "W/(m K)"),
-            _as_positive("density", density, "kg/m^3"),
-            _as_positive("heat_capacity", heat_capacity, "J/(kg K)"),
-            _as_positive("speed", speed, "m/s"))
+    return (require_positive("b (half-length)", b, "m"),
+            require_positive("conductivity", conductivity, "W/(m K)"),
+            require_positive("density", density, "kg/m^3"),
+            require_positive("heat_capacity", heat_capacity, "J/(kg K)"),
+            require_positive("speed", speed, "m/s"))
 
 
 def jaeger_surface_temperature(x: np.ndarray | float, flux_fn, b: float, conductivity: float,

@@ -17,8 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from .units import (_require_nonnegative, _require_positive, hamrock_ellipticity,
-                               moes_line, moes_point)
+from .units import hamrock_ellipticity, moes_line, moes_point
+from .validation import require_nonnegative, require_positive
 
 __all__ = [
     "hamrock_dowson_point",
@@ -40,7 +40,7 @@ __all__ = [
 
 
 def _pos(name: str, value: Any) -> np.ndarray:
-    _require_positive(name, value, "(dimensionless)")
+    require_positive(name, value, "(dimensionless)")
     return np.asarray(value, dtype=float)
 
 
@@ -111,7 +111,7 @@ def moes_line_asymptotes(M: Any, L: Any) -> dict[str, Any]:
     """
     M = _pos("M", M)
     L = np.asarray(L, dtype=float)
-    _require_nonnegative("L", L, "(dimensionless)")
+    require_nonnegative("L", L, "(dimensionless)")
     h_ri = 3.0 / M
     h_ei = 2.621 * M ** (-1.0 / 5.0)
     h_rp = 1.287 * L ** (2.0 / 3.0)
@@ -158,7 +158,7 @@ def nijenbanning_asymptotes(M: Any, L: Any, lam: Any = 1.0) -> dict[str, Any]:
     M = _pos("M", M)
     lam = _pos("lam", lam)
     L = np.asarray(L, dtype=float)
-    _require_nonnegative("L", L, "(dimensionless)")
+    require_nonnegative("L", L, "(dimensionless)")
     big_a = 1.0 + 0.006 * np.log(lam) + 0.63 * lam ** (4.0 / 7.0)
     h_ri = 145.0 * (1.0 + 0.796 * lam ** (14.0 / 15.0)) ** (-15.0 / 7.0) / lam / M**2
     h_ei = 3.18 * big_a ** (-14.0 / 25.0) * lam ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
@@ -247,7 +247,7 @@ def power_law_film(U: Any, G: Any, W: Any,
     if len(coeffs) != 4:
         raise ValueError(f"coeffs must be (K, a, b, c), got {coeffs!r}")
     big_k, a, b, c = (float(v) for v in coeffs)
-    _require_positive("coeffs[0] (K)", big_k, "(dimensionless)")
+    require_positive("coeffs[0] (K)", big_k, "(dimensionless)")
     U, G, W = _pos("U", U), _pos("G", G), _pos("W", W)
     return big_k * U**a * G**b * W**c
 

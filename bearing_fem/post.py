@@ -25,9 +25,10 @@ Reported (line contacts per metre of length, point contacts in N and W):
   outlet spike by exp(alpha p). The discrete direct form is reported as
   ``heat_power_poiseuille_direct``; their agreement is the energy-identity check.
 
-The integrals run over the full-film region: the whole domain for full-Sommerfeld, and
-upstream of the cavitation (outlet) boundary for Reynolds cavitation, where the film
-ruptures and carries no Couette shear.
+The Couette (sliding) integrals run over the full-film region: the whole domain for
+full-Sommerfeld, and upstream of the cavitation (outlet) boundary for Reynolds
+cavitation, where the film ruptures and carries no Couette shear. The Poiseuille
+integrals run over the whole domain (p = 0 where the film has cavitated).
 """
 from __future__ import annotations
 
@@ -77,29 +78,79 @@ def outlet_position_line(x: np.ndarray, p: np.ndarray, cavitation: str) -> float
 SUBGRID_FILM_FRACTION = 0.01
 
 
+def parabola_vertex(x: np.ndarray, f: np.ndarray, i: int) -> tuple[float, float]:
+    """Vertex (position, value) of the parabola through the nodes i-1, i, i+1 of
+    (x, f); the node itself at an end of the array, for a straight line, or where the
+    vertex would lie beyond a neighbour."""
+    if i <= 0 or i >= x.size - 1:
+        return float(x[i]), float(f[i])
+    c = np.polyfit(x[i - 1:i + 2] - x[i], f[i - 1:i + 2], 2)
+    if c[0] == 0.0:
+        return float(x[i]), float(f[i])
+    xv = -c[1] / (2 * c[0])
+    if abs(xv) > max(x[i + 1] - x[i], x[i] - x[i - 1]):
+        return float(x[i]), float(f[i])
+    return float(x[i] + xv), float(np.polyval(c, xv))
+
+
+def peak(p: np.ndarray, x: np.ndarray, y: np.ndarray | None = None) -> float:
+    """Maximum of a nodal field, refined between the nodes [same unit as p].
+
+    The largest nodal value plus the rise of the parabola through it and its two
+    neighbours along each grid direction (when the node is a local maximum along it):
+    the field's maximum to second order where it is smooth (a nodal maximum alone is
+    first order in its position and makes Richardson estimates erratic), the nodal
+    value itself at a one-node spike.
+
+    Parameters
+    ----------
+    p : ndarray
+        Nodal values, shape (nx,) or (ny, nx).
+    x, y : ndarray
+        Node coordinates [m] (``y`` for 2D fields).
+    """
+    p = np.asarray(p, dtype=float)
+    if y is None:
+        i = int(np.argmax(p))
+        return max(float(p[i]), parabola_vertex(x, p, i)[1])
+    grid = p.reshape(y.size, x.size)
+    j, i = np.unravel_index(int(np.argmax(grid)), grid.shape)
+    top = float(grid[j, i])
+    rise = max(parabola_vertex(x, grid[j], i)[1] - top, 0.0) \
+        + max(parabola_vertex(y, grid[:, i], j)[1] - top, 0.0)
+    return top + rise
+
+
+#: h_min between the nodes more than this fraction below the nodal minimum is reported:
+#: the constriction is narrower than the grid resolves.
+SUBGRID_FILM_FRACTION = 0.01
+
+
 def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
-                 p_nodes: np.ndarray, load: float) -> tuple[dict[str, float], list[str]]:
+                 p_nodes: np.ndarray, load: float, x: np.ndarray,
+                 y: np.ndarray | None = None) -> tuple[dict[str, float], list[str]]:
     """h_min, h_central, p_max and load of a solution, and a warning when the minimum film
     lies between the nodes.
 
     h_min is the minimum of the film field: over the nodes and the quadrature points (the
     film between nodes: exact geometry plus the interpolated deformation), and never above
-    h_central.
+    h_central. p_max is the nodal maximum refined between the nodes (:func:`peak`).
 
     Parameters
     ----------
     h_nodes, h_q : film at the nodes and at the quadrature points [m];
     h_central : film at the Hertz centre [m]; p_nodes : nodal pressure [Pa];
-    load : int p dA [N or N/m].
+    load : int p dA [N or N/m]; x, y : node coordinates [m] (``y`` for point contacts).
     """
     h_node_min = float(np.min(h_nodes))
     h_min = float(min(h_node_min, float(np.min(h_q)), h_central))
     notes = []
     if h_min < (1.0 - SUBGRID_FILM_FRACTION) * h_node_min:
-        notes.append(f"h_min lies between the nodes ({h_min:.4g} m, {100 * (1 - h_min / h_node_min):.3g}% "
-                     f"below the nodal minimum {h_node_min:.4g} m): the outlet constriction "
-                     "is not resolved by the grid; refine the mesh")
-    return {"h_min": h_min, "h_central": float(h_central), "p_max": float(np.max(p_nodes)),
+        notes.append(f"h_min lies between the nodes ({h_min:.4g} m, "
+                     f"{100 * (1 - h_min / h_node_min):.3g}% below the nodal minimum "
+                     f"{h_node_min:.4g} m): the outlet constriction is not resolved by the "
+                     "grid; refine the mesh")
+    return {"h_min": h_min, "h_central": float(h_central), "p_max": peak(p_nodes, x, y),
             "load": float(load)}, notes
 
 
@@ -117,6 +168,11 @@ class FilmDissipation:
         The discrete int h^3 |grad p|^2/(12 eta) dA [W or W/m]: with the reduced-pressure
         Poiseuille term, int h^3/(12 eta0) grad q_h . grad p_h dA (the viscosity
         variation across an element integrated exactly for linear p).
+    heat_power_stabilisation : float
+        The numerical dissipation of the stabilisation, int F_stab . grad p_h dA
+        [W or W/m]. For an incompressible film, direct + stabilisation = Q_P holds to the
+        Newton tolerance (the discrete weak form tested with p_h itself): the discrete
+        energy balance.
     couette_density, poiseuille_density : ndarray
         Heat generated per unit area at the quadrature points [W/m^2]: tau u_s, and
         u_m dp/dx (h - h*) (integrates to Q_P; in the exact 1D film it equals the local
@@ -132,6 +188,7 @@ class FilmDissipation:
     heat_power_couette: float
     heat_power_poiseuille: float
     heat_power_poiseuille_direct: float
+    heat_power_stabilisation: float
     couette_density: np.ndarray
     poiseuille_density: np.ndarray
     h_star: float
@@ -156,6 +213,7 @@ class FilmDissipation:
             "heat_power_couette": self.heat_power_couette,
             "heat_power_poiseuille": self.heat_power_poiseuille,
             "heat_power_poiseuille_direct": self.heat_power_poiseuille_direct,
+            "heat_power_stabilisation": self.heat_power_stabilisation,
         }
 
 
@@ -163,7 +221,8 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
                      grad_p_q: tuple[np.ndarray, ...], eta_q: np.ndarray, p_q: np.ndarray, *,
                      mean_speed: float, sliding_speed: float, indicator_q: np.ndarray,
                      shear: Mapping[str, Any],
-                     reduced: tuple[tuple[np.ndarray, ...], float] | None = None
+                     reduced: tuple[tuple[np.ndarray, ...], float] | None = None,
+                     stabilisation: tuple[np.ndarray, ...] | None = None
                      ) -> FilmDissipation:
     """Friction forces and dissipated power of a film from fields at the quadrature points.
 
@@ -173,17 +232,23 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
     h_q : film [m]; grad_p_q : pressure gradient components [Pa/m], x first;
     eta_q : viscosity [Pa s]; p_q : pressure [Pa];
     mean_speed, sliding_speed : u_m, u_s [m/s];
-    indicator_q : 1 in the full-film region, 0 in the cavitated zone;
+    indicator_q : 1 in the full-film region, 0 in the cavitated zone (where the film has
+        ruptured and carries no Couette shear; the Poiseuille integrals run over the whole
+        domain, where p = 0 in the cavitated zone);
     shear : keyword arguments of :func:`bearing_fem.physics.traction.shear_stress`
         (the traction model and its parameters);
     reduced : (grad q_h at the quadrature points [Pa/m], eta0 [Pa s]), optional
         The reduced-pressure gradient of the Poiseuille term, for the direct form.
+    stabilisation : tuple of arrays, optional
+        The flux the stabilisation adds [m^2/s]
+        (:meth:`bearing_fem.physics.reynolds.FluxModel.stabilisation_flux`): its
+        integral against grad p is the scheme's numerical dissipation.
     """
-    w = ops.weights * indicator_q
+    w = ops.weights
     px = grad_p_q[0]
     f_p = float(w @ (0.5 * h_q * px))
     if sliding_speed != 0.0:
-        tau = shear_stress(eta_q, sliding_speed / h_q, p_q, **shear)
+        tau = shear_stress(eta_q, sliding_speed / h_q, p_q, **shear) * indicator_q
     else:
         tau = np.zeros_like(h_q)
     f_c = float(w @ tau)
@@ -193,6 +258,9 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         direct = (h_q**3 / (12.0 * eta0)) * sum(a * b for a, b in zip(gq, grad_p_q))
     else:
         direct = h_q**3 * sum(g * g for g in grad_p_q) / (12.0 * eta_q)
+    numerical = 0.0
+    if stabilisation is not None:
+        numerical = float(w @ sum(a * b for a, b in zip(stabilisation, grad_p_q)))
     flux_film = h_q - h_q**3 * px / (12.0 * eta_q * mean_speed)
     sel = (p_q > 0.5 * np.max(p_q)) & (indicator_q > 0)
     h_star = float(np.median(flux_film[sel] if np.any(sel) else flux_film))
@@ -200,8 +268,9 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
         rolling_resistance=f_p, sliding_friction=f_c,
         heat_power_couette=float(f_c * sliding_speed), heat_power_poiseuille=q_p,
         heat_power_poiseuille_direct=float(w @ direct),
-        couette_density=tau * sliding_speed * indicator_q,
-        poiseuille_density=mean_speed * px * (h_q - h_star) * indicator_q, h_star=h_star,
+        heat_power_stabilisation=numerical,
+        couette_density=tau * sliding_speed,
+        poiseuille_density=mean_speed * px * (h_q - h_star), h_star=h_star,
         shear=dict(shear))
 
 
@@ -248,7 +317,8 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
                       grad_p_q: tuple[np.ndarray, ...], eta_q: np.ndarray, p_q: np.ndarray, *,
                       mean_speed: float, sliding_speed: float, indicator_q: np.ndarray,
                       load: float, gross_load: float, traction: Any = None,
-                      reduced: tuple[tuple[np.ndarray, ...], float] | None = None
+                      reduced: tuple[tuple[np.ndarray, ...], float] | None = None,
+                      stabilisation: tuple[np.ndarray, ...] | None = None
                       ) -> tuple[dict[str, Any], list[str], FilmDissipation]:
     """Summary numbers, warnings and heat densities of a film (line or point contact).
 
@@ -267,7 +337,7 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
     shear, notes = traction_choice(traction, sliding_speed)
     d = film_dissipation(ops, h_q, grad_p_q, eta_q, p_q, mean_speed=mean_speed,
                          sliding_speed=sliding_speed, indicator_q=indicator_q, shear=shear,
-                         reduced=reduced)
+                         reduced=reduced, stabilisation=stabilisation)
     q: dict[str, Any] = d.quantities()
     mu, more = friction_coefficient(d.friction_force, load, gross_load)
     notes += more
@@ -289,10 +359,13 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
 ESTIMATED_QUANTITIES = ("h_central", "h_min", "p_max", "friction_force", "heat_power")
 #: Estimated relative error above which a quantity is named in the result's warnings.
 ERROR_WARNING_THRESHOLD = 0.05
-#: Observed orders of convergence accepted for Richardson extrapolation: outside this
-#: range (or with changes of alternating sign, or not shrinking) the differences are
-#: not in the asymptotic range and the plain level difference is reported instead.
-RICHARDSON_ORDERS = (0.5, 5.0)
+#: Formal order of convergence of the discretisation (P1 elements: second order for
+#: nodal values and integrals of smooth solutions). An observed order above it is capped
+#: at it, the usual safeguard when the coarsest grid is not in the asymptotic range.
+FORMAL_ORDER = 2.0
+#: Smallest observed order for which Richardson extrapolation is used: below it (or with
+#: changes of alternating sign, or not shrinking) the plain level difference is reported.
+MIN_ORDER = 0.5
 
 
 def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None]:
@@ -300,9 +373,10 @@ def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None
     with half the spacing of the one before.
 
     With three values q1, q2, q3 and changes d1 = q2 - q1, d2 = q3 - q2 of one sign and
-    |d2| < |d1|, the observed order is p = log2(d1/d2) and, for p in
-    ``RICHARDSON_ORDERS``, the error of q3 is |d2| / (2^p - 1) (Richardson). Otherwise
-    it is the plain level difference |d2|; with one value there is no estimate.
+    |d2| < |d1|, the observed order is p = log2(d1/d2); for p >= ``MIN_ORDER`` the error
+    of q3 is |d2| / (2^p' - 1) with p' = min(p, ``FORMAL_ORDER``) (Richardson). Otherwise,
+    and with only two values, it is the plain level difference |d2|, which overestimates
+    the error of a converging sequence; with one value there is no estimate.
 
     Returns
     -------
@@ -323,8 +397,8 @@ def richardson(values: Sequence[float]) -> tuple[float | None, str, float | None
             return 0.0, "richardson", None
         if d1 * d2 > 0.0 and abs(d2) < abs(d1):
             p = math.log2(d1 / d2)
-            if RICHARDSON_ORDERS[0] <= p <= RICHARDSON_ORDERS[1]:
-                return abs(d2) / (2.0**p - 1.0), "richardson", p
+            if p >= MIN_ORDER:
+                return abs(d2) / (2.0 ** min(p, FORMAL_ORDER) - 1.0), "richardson", p
     return abs(d2), "level difference", None
 
 
@@ -344,7 +418,8 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     dict
         ``{quantity: relative error or None}`` for ``ESTIMATED_QUANTITIES``, plus
         ``method`` and ``order`` (per quantity, see :func:`richardson`), ``levels``
-        (how many solutions were used) and ``grids``.
+        (how many solutions were used), ``grids`` and ``values`` (each quantity on every
+        grid, coarse to fine).
     """
     out: dict[str, Any] = {}
     methods: dict[str, str] = {}
@@ -365,6 +440,7 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     out["order"] = orders
     out["levels"] = len(levels)
     out["grids"] = note
+    out["values"] = {k: [lv.get(k) for lv in levels] for k in ESTIMATED_QUANTITIES}
     return out
 
 

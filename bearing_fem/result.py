@@ -7,6 +7,7 @@ from typing import Any
 import numpy as np
 
 from .errors import SolveError
+from .version import VERSION
 
 #: Units of every dimensional summary key (line-contact values are per metre of length;
 #: the scene decides, see :func:`summary_units`).
@@ -124,8 +125,6 @@ class Result:
         A quantity that is undefined (e.g. a friction coefficient without a positive
         load) is ``None``, never NaN.
         """
-        from . import __version__
-
         kind = self.scene.contact.kind
         out: dict[str, Any] = {
             "status": self.status,
@@ -145,7 +144,7 @@ class Result:
         out["error_estimate"] = None if self.error_estimate is None else dict(self.error_estimate)
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
         out["dimensionless"] = dimensionless_groups(self.scene)
-        out["version"] = __version__
+        out["version"] = VERSION
         out["scene"] = self.scene.to_dict()
         return out
 

@@ -31,6 +31,9 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
+from .validation import (require_finite, require_nonnegative, require_poisson,
+                         require_positive)
+
 __all__ = [
     "HertzPoint",
     "reduced_modulus",
@@ -52,35 +55,6 @@ __all__ = [
 #: Default reference viscosity of the inverse maps (Pa s) when neither viscosity nor
 #: speed is given; a mineral oil of ISO VG 32-68 class at 40 C.
 DEFAULT_VISCOSITY = 0.01
-
-
-# ----------------------------------------------------------------------------------------
-# validation helpers (shared by formulas.py and analytic.py)
-# ----------------------------------------------------------------------------------------
-def _require_positive(name: str, value: Any, unit: str) -> None:
-    """Raise ValueError naming ``name``, ``value`` and ``unit`` unless all values > 0."""
-    arr = np.asarray(value, dtype=float)
-    if arr.size == 0 or not np.all(np.isfinite(arr)) or np.any(arr <= 0.0):
-        raise ValueError(f"{name} must be > 0 {unit} (finite), got {value!r}")
-
-
-def _require_nonnegative(name: str, value: Any, unit: str) -> None:
-    """Raise ValueError unless all values are finite and >= 0."""
-    arr = np.asarray(value, dtype=float)
-    if arr.size == 0 or not np.all(np.isfinite(arr)) or np.any(arr < 0.0):
-        raise ValueError(f"{name} must be >= 0 {unit} (finite), got {value!r}")
-
-
-def _require_finite(name: str, value: Any, unit: str) -> None:
-    """Raise ValueError unless all values are finite."""
-    arr = np.asarray(value, dtype=float)
-    if arr.size == 0 or not np.all(np.isfinite(arr)):
-        raise ValueError(f"{name} must be finite ({unit}), got {value!r}")
-
-
-def _require_poisson(name: str, value: float) -> None:
-    if not (np.isfinite(value) and -1.0 < value <= 0.5):
-        raise ValueError(f"{name} must lie in (-1, 0.5] (dimensionless), got {value!r}")
 
 
 # ----------------------------------------------------------------------------------------
@@ -106,8 +80,8 @@ def reduced_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
     for name, e in (("e1", e1), ("e2", e2)):
         if not (e > 0.0):
             raise ValueError(f"{name} must be > 0 Pa, got {e!r}")
-    _require_poisson("nu1", nu1)
-    _require_poisson("nu2", nu2)
+    require_poisson("nu1", nu1)
+    require_poisson("nu2", nu2)
     compliance = (1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2
     if not compliance > 0.0:
         raise ValueError("both bodies are rigid (e1 = e2 = inf Pa): E' is infinite")
@@ -165,9 +139,9 @@ def hertz_line(load_per_length: float, radius: float, e_prime: float) -> tuple[f
     (b, p_h) : tuple of float
         Half-width b [m] and maximum pressure p_h [Pa] (= E' b/(4R)).
     """
-    _require_positive("load_per_length", load_per_length, "N/m")
-    _require_positive("radius", radius, "m")
-    _require_positive("e_prime", e_prime, "Pa")
+    require_positive("load_per_length", load_per_length, "N/m")
+    require_positive("radius", radius, "m")
+    require_positive("e_prime", e_prime, "Pa")
     b = float(np.sqrt(8.0 * load_per_length * radius / (np.pi * e_prime)))
     p_h = float(2.0 * load_per_length / (np.pi * b))
     return b, p_h
@@ -250,10 +224,10 @@ def hertz_point(force: float, rx: float, ry: float, e_prime: float) -> HertzPoin
     HertzPoint
         Semi-axes a_x, a_y [m], p_h [Pa], approach delta [m], ellipticity k = a_y/a_x.
     """
-    _require_positive("force", force, "N")
-    _require_positive("rx", rx, "m")
-    _require_positive("ry", ry, "m")
-    _require_positive("e_prime", e_prime, "Pa")
+    require_positive("force", force, "N")
+    require_positive("rx", rx, "m")
+    require_positive("ry", ry, "m")
+    require_positive("e_prime", e_prime, "Pa")
     r_major, r_minor = (ry, rx) if ry >= rx else (rx, ry)
     ratio = r_major / r_minor
     if ratio == 1.0:
@@ -291,8 +265,8 @@ def hamrock_ellipticity(rx: float, ry: float) -> float:
     This is the k used in the Hamrock-Dowson fits; :func:`hertz_point` gives the exact one
     (they agree within 3% for 1 <= ry/rx <= 30; the fit is 8% high at ry/rx = 100).
     """
-    _require_positive("rx", rx, "m")
-    _require_positive("ry", ry, "m")
+    require_positive("rx", rx, "m")
+    require_positive("ry", ry, "m")
     return float(1.03 * (ry / rx) ** 0.64)
 
 
@@ -300,9 +274,9 @@ def hamrock_ellipticity(rx: float, ry: float) -> float:
 # Moes / Venner groups
 # ----------------------------------------------------------------------------------------
 def _check_lubricant(viscosity: float, mean_speed: float, piezo: float) -> None:
-    _require_positive("viscosity", viscosity, "Pa s")
-    _require_positive("mean_speed", mean_speed, "m/s")
-    _require_nonnegative("piezo", piezo, "1/Pa")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_positive("mean_speed", mean_speed, "m/s")
+    require_nonnegative("piezo", piezo, "1/Pa")
 
 
 def moes_line(load_per_length: float, radius: float, e_prime: float, viscosity: float,
@@ -422,9 +396,9 @@ def _speed_and_viscosity(u_sum: float, length: float, e_prime: float,
                          "(M, L) fix only their product")
     if mean_speed is None:
         eta = DEFAULT_VISCOSITY if viscosity is None else viscosity
-        _require_positive("viscosity", eta, "Pa s")
+        require_positive("viscosity", eta, "Pa s")
         return eta, u_sum * e_prime * length / (2.0 * eta)
-    _require_positive("mean_speed", mean_speed, "m/s")
+    require_positive("mean_speed", mean_speed, "m/s")
     return u_sum * e_prime * length / (2.0 * mean_speed), mean_speed
 
 
@@ -460,11 +434,11 @@ def line_scene_from_moes(M: float, L: float, *, radius: float = 0.01,
         ``load_per_length`` [N/m], ``mean_speed`` [m/s], ``viscosity`` [Pa s],
         ``piezo`` [1/Pa], ``radius`` [m], ``e_prime`` [Pa].
     """
-    _require_positive("M", M, "(dimensionless)")
-    _require_positive("L", L, "(dimensionless)")
-    _require_positive("radius", radius, "m")
-    _require_positive("e_prime", e_prime, "Pa")
-    _require_positive("piezo", piezo, "1/Pa")
+    require_positive("M", M, "(dimensionless)")
+    require_positive("L", L, "(dimensionless)")
+    require_positive("radius", radius, "m")
+    require_positive("e_prime", e_prime, "Pa")
+    require_positive("piezo", piezo, "1/Pa")
     u_sum = (L / (piezo * e_prime)) ** 4
     eta, u_m = _speed_and_viscosity(u_sum, radius, e_prime, viscosity, mean_speed)
     return {"load_per_length": float(M * np.sqrt(u_sum) * e_prime * radius),
@@ -504,12 +478,12 @@ def point_scene_parameters_from_moes(M: float, L: float, *, rx: float = 0.01,
         ``rx``, ``ry`` [m], ``e_prime`` [Pa].
     """
     ry = rx if ry is None else ry
-    _require_positive("M", M, "(dimensionless)")
-    _require_positive("L", L, "(dimensionless)")
-    _require_positive("rx", rx, "m")
-    _require_positive("ry", ry, "m")
-    _require_positive("e_prime", e_prime, "Pa")
-    _require_positive("piezo", piezo, "1/Pa")
+    require_positive("M", M, "(dimensionless)")
+    require_positive("L", L, "(dimensionless)")
+    require_positive("rx", rx, "m")
+    require_positive("ry", ry, "m")
+    require_positive("e_prime", e_prime, "Pa")
+    require_positive("piezo", piezo, "1/Pa")
     u_sum = (L / (piezo * e_prime)) ** 4
     eta, u_m = _speed_and_viscosity(u_sum, rx, e_prime, viscosity, mean_speed)
     return {"force": float(M * u_sum**0.75 * e_prime * rx**2), "mean_speed": float(u_m),

@@ -74,7 +74,8 @@ from skfem import CellBasis, ElementLineP1, MeshLine
 from ..numerics.fe import QuadratureOperators, quadrature_operators
 from .problem import fischer_burmeister
 from ..numerics.newton import NewtonOutcome, damped_newton
-from ..physics.reynolds import _coth_minus_inverse
+from ..post import parabola_vertex
+from ..physics.reynolds import upwind_factor
 
 log = logging.getLogger(__name__)
 
@@ -176,7 +177,7 @@ def _flux(k, H, kp, Hp, dz, b_alpha: float, C: float):
     if C > 0.0:
         strong = -eps * (3.0 * Hp / H - b_alpha * kp) * kp - Hp
         pe = C * dz / (2.0 * eps)
-        f = f - 0.5 * dz * _coth_minus_inverse(pe) * strong
+        f = f - 0.5 * dz * upwind_factor(pe) * strong
     return f
 
 
@@ -388,19 +389,6 @@ class KodnirResult:
 # ----------------------------------------------------------------------------------------
 # Post-processing of a discrete solution
 # ----------------------------------------------------------------------------------------
-def _parabola_extremum(z: np.ndarray, f: np.ndarray, i: int) -> tuple[float, float]:
-    """Vertex of the parabola through nodes i-1, i, i+1 (falls back to the node)."""
-    if i <= 0 or i >= z.size - 1:
-        return float(z[i]), float(f[i])
-    c = np.polyfit(z[i - 1:i + 2] - z[i], f[i - 1:i + 2], 2)
-    if c[0] == 0.0:
-        return float(z[i]), float(f[i])
-    zv = -c[1] / (2 * c[0])
-    if abs(zv) > max(z[i + 1] - z[i], z[i] - z[i - 1]):
-        return float(z[i]), float(f[i])
-    return float(z[i] + zv), float(np.polyval(c, zv))
-
-
 #: Relative level below which a nodal k counts as zero (cavitated) in post-processing.
 PRESSURISED_FLOOR = 1e-12
 
@@ -460,11 +448,11 @@ def _finish(res: KodnirResult, prob: KodnirProblem, u: np.ndarray) -> KodnirResu
     res.flux = float(prob.nodal_residual(k, h_off)[-1])
     res.z_a = -math.sqrt(max(1.0 - h_off, 0.0))
     res.z_a_free_boundary = _free_boundary(z, k)
-    res.z_k_max, res.k_max = _parabola_extremum(z, k, int(np.argmax(k)))
+    res.z_k_max, res.k_max = parabola_vertex(z, k, int(np.argmax(k)))
     inside = z >= res.z_a
     idx = np.nonzero(inside)[0]
     i_min = int(idx[np.argmin(H[idx])])
-    res.z_h_min, res.h_min = _parabola_extremum(z, H, i_min)
+    res.z_h_min, res.h_min = parabola_vertex(z, H, i_min)
     res.friction_integral, res.couette_integral = _integrals(prob, k, h_off, res.z_a)
     return res
 

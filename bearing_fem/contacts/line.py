@@ -452,7 +452,10 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
     width = x_range[1] - x_range[0]
     cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
     if nodes is None:
-        nodes = scene.mesh.nodes or int(min(max(width * density, 801), cap)) | 1
+        # n - 1 a multiple of 4: the grid and its two coarser grids (every other node)
+        # nest, for the grid sequence and the error estimate
+        auto = 4 * math.ceil(min(max(width * density, 801), cap - 1) / 4) + 1
+        nodes = scene.mesh.nodes or auto
     disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
     if model.elasticity == "rigid":
         comp = RigidCompliance()
@@ -649,7 +652,7 @@ class LineModel:
         load = float(problem.mass @ p)
         q = out.quantities
         nums, notes = film_numbers(h_nodes, h_q, float(np.interp(0.0, disc.x, h_nodes)), p,
-                                   load)
+                                   load, disc.x)
         q.update(nums)
         outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
         ind = full_film_indicator_line(ops.points[0], outlet)
@@ -666,15 +669,17 @@ class LineModel:
     def _friction_and_heat(self, problem: LineProblem, p: np.ndarray, h0: float,
                            indicator: np.ndarray, load: float):
         """:func:`bearing_fem.post.friction_and_heat` of a solution on ``problem``."""
-        pq, h_q, px, _ = problem.fields_q(p, h0)
-        reduced = ((problem.grad_reduced(p), problem.flux.viscosity0)
-                   if problem.uses_reduced else None)
+        pq, h_q, px, hx = problem.fields_q(p, h0)
+        gq = problem.grad_reduced(p) if problem.uses_reduced else None
+        ops = problem.disc.ops
         kin = self.scene.kinematics
         return friction_and_heat(
-            problem.disc.ops, h_q, (px,), problem.flux.viscosity(pq), pq,
+            ops, h_q, (px,), problem.flux.viscosity(pq), pq,
             mean_speed=kin.mean_speed, sliding_speed=kin.sliding_speed, indicator_q=indicator,
             load=load, gross_load=float(problem.mass @ np.abs(p)), traction=self.scene.traction,
-            reduced=reduced)
+            reduced=None if gq is None else (gq, problem.flux.viscosity0),
+            stabilisation=problem.flux.stabilisation_flux(pq, h_q, (px,), (hx,),
+                                                          ops.element_size, gq))
 
     def heat_flux(self, pressure: np.ndarray, h0: float) -> tuple[np.ndarray, FilmDissipation]:
         """Heat generated in the film per element [W/m^2] (element means of the Couette

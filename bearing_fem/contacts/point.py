@@ -886,12 +886,12 @@ class PointModel:
         if not post:
             return out
         q = out.quantities
-        pq, h_q, gp, _ = problem.fields_q(p, h0)
+        pq, h_q, gp, gh = problem.fields_q(p, h0)
         o = np.array([0.0])
         v = problem.displacement(p)
         load = float(problem.mass @ p)
         nums, notes = film_numbers(h_nodes, h_q, float(h0 + grid.interpolate(v, o, o)[0]), p,
-                                   load)
+                                   load, grid.x, grid.y)
         q.update(nums)
         if scene.model.cavitation == "reynolds":
             full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
@@ -900,14 +900,15 @@ class PointModel:
         else:
             ind = np.ones_like(h_q)
         eta_q = problem.flux.viscosity(pq)
-        reduced = ((problem.grad_reduced(p), problem.flux.viscosity0)
-                   if problem.uses_reduced else None)
+        gq = problem.grad_reduced(p) if problem.uses_reduced else None
         kin = scene.kinematics
         numbers, more, d = friction_and_heat(
             ops, h_q, gp, eta_q, pq, mean_speed=kin.mean_speed,
             sliding_speed=kin.sliding_speed, indicator_q=ind, load=load,
             gross_load=float(problem.mass @ np.abs(p)), traction=scene.traction,
-            reduced=reduced)
+            reduced=None if gq is None else (gq, problem.flux.viscosity0),
+            stabilisation=problem.flux.stabilisation_flux(pq, h_q, gp, gh, ops.element_size,
+                                                          gq))
         q.update(numbers)
         out.traction_model = d.shear["model"]
         out.warnings += notes + more

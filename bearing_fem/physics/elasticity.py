@@ -50,6 +50,8 @@ import scipy.fft
 import scipy.linalg
 import scipy.sparse
 
+from ..validation import require_positive
+
 __all__ = [
     "Compliance",
     "RigidCompliance",
@@ -77,16 +79,6 @@ LINE_DENSE_AUTO_CAP = 4096
 # ----------------------------------------------------------------------------------------
 # Validation helpers
 # ----------------------------------------------------------------------------------------
-
-def _check_positive(name: str, value: float, unit: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a positive number in {unit}, got {value!r}") from None
-    if not (math.isfinite(v) and v > 0.0):
-        raise ValueError(f"{name} must be finite and > 0 {unit}, got {value!r}")
-    return v
-
 
 def _check_grid(name: str, values: np.ndarray) -> tuple[np.ndarray, float]:
     """Return (float array, spacing in m) of a uniform, strictly increasing 1D node array."""
@@ -177,7 +169,7 @@ def line_kernel(d: np.ndarray | float, spacing: float) -> np.ndarray:
     numpy.ndarray
         K(d), m (the logarithm is of lengths in metres).
     """
-    D = _check_positive("spacing", spacing, "m")
+    D = require_positive("spacing", spacing, "m")
     d = np.abs(np.asarray(d, dtype=float))  # K is even in d
     out = np.empty_like(d)
     far = d > D
@@ -224,8 +216,8 @@ def point_kernel(X: np.ndarray | float, Y: np.ndarray | float,
     numpy.ndarray
         K(X, Y), m.
     """
-    hx = 0.5 * _check_positive("dx", dx, "m")
-    hy = 0.5 * _check_positive("dy", dy, "m")
+    hx = 0.5 * require_positive("dx", dx, "m")
+    hy = 0.5 * require_positive("dy", dy, "m")
     X = np.asarray(X, dtype=float)
     Y = np.asarray(Y, dtype=float)
     return (_corner_g(X + hx, Y + hy) - _corner_g(X - hx, Y + hy)
@@ -265,9 +257,9 @@ def kodnir_local_coefficient(load_per_length: float, radius: float,
     float
         A'/E, m/Pa: ``v = (A'/E) p``.
     """
-    w = _check_positive("load_per_length", load_per_length, "N/m")
-    r = _check_positive("radius", radius, "m")
-    e = _check_positive("youngs_modulus", youngs_modulus, "Pa")
+    w = require_positive("load_per_length", load_per_length, "N/m")
+    r = require_positive("radius", radius, "m")
+    e = require_positive("youngs_modulus", youngs_modulus, "Pa")
     b_h = 1.52 * math.sqrt(w * r / e)
     return 2.54 * b_h / e
 
@@ -451,7 +443,7 @@ class HalfSpaceLine(Compliance):
     def __init__(self, x: np.ndarray, e_prime: float,
                  method: Literal["auto", "dense", "fft"] = "auto") -> None:
         self.x, self.spacing = _check_grid("x", x)
-        self.e_prime = _check_positive("e_prime", e_prime, "Pa")
+        self.e_prime = require_positive("e_prime", e_prime, "Pa")
         if method not in ("auto", "dense", "fft"):
             raise ValueError(f"method must be one of 'auto', 'dense', 'fft', got {method!r}")
         n = self.x.size
@@ -557,7 +549,7 @@ class HalfSpacePoint(Compliance):
     def __init__(self, x: np.ndarray, y: np.ndarray, e_prime: float) -> None:
         self.x, self.dx = _check_grid("x", x)
         self.y, self.dy = _check_grid("y", y)
-        self.e_prime = _check_positive("e_prime", e_prime, "Pa")
+        self.e_prime = require_positive("e_prime", e_prime, "Pa")
         nx, ny = self.x.size, self.y.size
         self.shape = (ny, nx)
         scale = 2.0 / (math.pi * self.e_prime)

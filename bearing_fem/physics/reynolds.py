@@ -104,8 +104,25 @@ class FluxModel:
             for a, b in zip(gp, gh):
                 strong = strong - eps * ((dlnrho - dlneta) * a + 3.0 * b / h) * a
             pe = self.mean_speed * rho * self.compliance * dx / (2.0 * eps)
-            out[0] = out[0] + 0.5 * dx * _coth_minus_inverse(pe) * strong
+            out[0] = out[0] + 0.5 * dx * upwind_factor(pe) * strong
         return tuple(out)
+
+    def galerkin_flux(self, p, h, gp, gq=None):
+        """The flux without stabilisation, rho h^3/(12 eta) grad p - u_m rho h e_x, at the
+        quadrature points [m^2/s] (``gq`` is not used here; see
+        :meth:`UpwindFluxModel.galerkin_flux`)."""
+        rho = self.density(p)
+        out = [rho * h**3 / (12.0 * self.viscosity(p)) * g for g in gp]
+        out[0] = out[0] - self.mean_speed * rho * h
+        return tuple(out)
+
+    def stabilisation_flux(self, p, h, gp, gh, dx, gq=None):
+        """What the stabilisation adds to the flux [m^2/s]: :meth:`flux` minus
+        :meth:`galerkin_flux`. Its integral against grad p is the numerical dissipation of
+        the scheme (``bearing_fem.post``)."""
+        full = self.flux(p, h, gp, gh, dx) if gq is None else self.flux(p, h, gp, gh, dx,
+                                                                        gq=gq)
+        return tuple(f - g for f, g in zip(full, self.galerkin_flux(p, h, gp, gq)))
 
     def _log_slopes(self, p):
         """d ln(rho)/dp and d ln(eta)/dp [1/Pa] by a central difference on the laws.
@@ -226,7 +243,7 @@ class UpwindFluxModel(FluxModel):
         xi, pe = 1.0, None
         if self.upwind_compliance > 0.0:  # fade out where Poiseuille flow dominates
             pe = self.mean_speed * rho * self.upwind_compliance * dx / (2.0 * eps)
-            xi = _coth_minus_inverse(pe)
+            xi = upwind_factor(pe)
         return rho, eps, drho, 0.5 * self.upwind * xi * dx * self.mean_speed, pe
 
     def _flux_dh(self, rho, eps, drho, c, pe, h, gp, gh, gq, dx):
@@ -246,6 +263,17 @@ class UpwindFluxModel(FluxModel):
         if pe is not None:
             dc = 0.5 * self.upwind * dx * self.mean_speed * _xi_derivative(pe) * (-3.0 * pe / h)
             out[0] = out[0] + dc * (rho * gh[0] + h * drho * gp[0])
+        return tuple(out)
+
+    def galerkin_flux(self, p, h, gp, gq=None):
+        """The flux without the upwind term [m^2/s]: the Poiseuille term (with ``gq``,
+        rho h^3/(12 eta0) grad q) minus the wedge term u_m rho h e_x."""
+        if gq is None:
+            return super().galerkin_flux(p, h, gp)
+        rho = self.density(p)
+        k = rho * h**3 / (12.0 * self.viscosity0)
+        out = [k * g for g in gq]
+        out[0] = out[0] - self.mean_speed * rho * h
         return tuple(out)
 
     def flux(self, p, h, gp, gh, dx, gq=None):
@@ -305,7 +333,7 @@ def _diagonal(dim: int, first: np.ndarray, others: np.ndarray) -> list[tuple]:
             for k in range(dim)]
 
 
-def _coth_minus_inverse(pe):
+def upwind_factor(pe):
     """xi(Pe) = coth(Pe) - 1/Pe, stable for small and huge Pe (real or complex-step input).
 
     Complex input is a complex step Pe = x + i s (s tiny): the result is

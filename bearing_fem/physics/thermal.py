@@ -39,7 +39,8 @@ from typing import Any, Callable, Literal, Sequence
 
 import numpy as np
 
-from bearing_fem import analytic
+from .. import analytic
+from ..validation import require_int, require_positive
 
 logger = logging.getLogger(__name__)
 
@@ -57,24 +58,6 @@ __all__ = [
 # validation helpers
 # ----------------------------------------------------------------------------------------
 
-def _positive(name: str, value: Any, unit: str) -> float:
-    """Float > 0, else ValueError naming the argument, the value and the unit."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {value!r}") from None
-    if not np.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {value!r}")
-    return v
-
-
-def _int_at_least(name: str, value: Any, lo: int) -> int:
-    if isinstance(value, bool) or int(value) != value or int(value) < lo:
-        raise ValueError(f"{name} must be an integer >= {lo} (count, dimensionless), "
-                         f"got {value!r}")
-    return int(value)
-
-
 def _flux_function(flux: FluxSpec, half_width: float, q_max: float | None,
                    arg: str = "flux") -> tuple[Callable[[np.ndarray], np.ndarray], str, float]:
     """Return (q(x) [W/m^2] vectorised, zero outside |x| <= a; kind; q_max [W/m^2])."""
@@ -82,7 +65,7 @@ def _flux_function(flux: FluxSpec, half_width: float, q_max: float | None,
     if isinstance(flux, str):
         if q_max is None:
             raise ValueError(f"q_max must be given (W/m^2) for flux={flux!r}, got None")
-        qm = _positive("q_max", q_max, "W/m^2")
+        qm = require_positive("q_max", q_max, "W/m^2")
         if flux == "semi-elliptic":
             def q(x: np.ndarray) -> np.ndarray:
                 return qm * np.sqrt(np.clip(1.0 - (np.asarray(x) / a) ** 2, 0.0, None))
@@ -124,7 +107,7 @@ def _flux_function(flux: FluxSpec, half_width: float, q_max: float | None,
         if qm <= 0.0:
             raise ValueError(f"{arg} is zero everywhere on |x| <= a = {a} m: nothing to solve")
     else:
-        qm = _positive("q_max", q_max, "W/m^2")
+        qm = require_positive("q_max", q_max, "W/m^2")
     return q, kind, qm
 
 
@@ -163,11 +146,11 @@ def strip_mesh(half_width: float, radius: float, n_across: int = 48):
     """
     from skfem import MeshTri
 
-    a = _positive("half_width", half_width, "m")
-    R = _positive("radius", radius, "m")
+    a = require_positive("half_width", half_width, "m")
+    R = require_positive("radius", radius, "m")
     if R <= 1.5 * a:
         raise ValueError(f"radius must be > 1.5 * half_width = {1.5 * a} m, got {radius!r}")
-    n_nu = _int_at_least("n_across", n_across, 4)
+    n_nu = require_int("n_across", n_across, 4)
     n_nu += n_nu % 2
     M = float(np.arccosh(R / a))
     d = np.pi / n_nu
@@ -205,6 +188,47 @@ def strip_mesh(half_width: float, radius: float, n_across: int = 48):
     strip = bf[(ring[f[0, bf]] == 0) & (ring[f[1, bf]] == 0)]
     outer = bf[(ring[f[0, bf]] == n_mu) & (ring[f[1, bf]] == n_mu)]
     return mesh, strip, outer
+
+
+def patch_from_mesh(mesh, half_width: float):
+    """A dimensionless patch mesh scaled to metres, with its strip and far-field facets.
+
+    Parameters
+    ----------
+    mesh : skfem.MeshTri
+        Triangles of the half-disc y >= 0 in units of the strip half-width: the heated
+        strip is the boundary on y = 0 with |x| <= 1, the far field the boundary at the
+        largest radius.
+    half_width : float
+        a [m].
+
+    Returns
+    -------
+    mesh : skfem.MeshTri (in m); strip_facets, outer_facets : ndarray of int
+    """
+    from skfem import MeshTri
+
+    a = require_positive("half_width", half_width, "m")
+    if not isinstance(mesh, MeshTri):  # skfem's MeshTri (MeshTri1)
+        raise ValueError(f"a thermal patch mesh must be triangles (skfem MeshTri), got "
+                         f"{type(mesh).__name__}")
+    pts = np.asarray(mesh.p, dtype=float)
+    if np.min(pts[1]) < -1e-9 or np.min(np.abs(pts[0])) > 1.0:
+        raise ValueError("a thermal patch mesh lies in y >= 0 around the strip |x| <= 1 "
+                         "(units of the half-width)")
+    scaled = MeshTri(pts * a, mesh.t)
+    f = scaled.facets
+    bf = scaled.boundary_facets()
+    xm = 0.5 * (pts[0, f[0, bf]] + pts[0, f[1, bf]])
+    on_axis = (np.abs(pts[1, f[0, bf]]) < 1e-12) & (np.abs(pts[1, f[1, bf]]) < 1e-12)
+    strip = bf[on_axis & (np.abs(xm) <= 1.0 + 1e-12)]
+    r = np.hypot(pts[0], pts[1])
+    r_max = float(np.max(r))
+    outer = bf[(r[f[0, bf]] > 0.999 * r_max) & (r[f[1, bf]] > 0.999 * r_max)]
+    if strip.size == 0 or outer.size == 0:
+        raise ValueError("the thermal patch mesh has no strip facets (y = 0, |x| <= 1) or "
+                         "no far-field arc")
+    return scaled, strip, outer
 
 
 @dataclass(frozen=True)
@@ -311,7 +335,7 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
                  flux: FluxSpec = "semi-elliptic",
                  far_field: Literal["robin", "dirichlet"] = "dirichlet",
                  n_across: int = 48, order: int = 2,
-                 multipole_order: int = 2) -> StripSourceResult:
+                 multipole_order: int = 2, mesh=None) -> StripSourceResult:
     """Solve steady conduction in the half-plane patch under a strip heat source.
 
     Body y >= 0 (x across the track, y into the body, metres), ``-lambda dT/dy = q(x)``
@@ -354,6 +378,11 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
         Lagrange element order.
     multipole_order : {0, 1, 2}
         Terms of the Dirichlet far-field datum beyond ln r (ignored for "robin").
+    mesh : skfem.MeshTri, optional
+        A patch mesh in units of a (the half-disc r <= R/a of y >= 0, the strip
+        |x| <= 1 on y = 0), e.g. ``meshes/korovchinsky_patch.vtu`` read by
+        :func:`bearing_fem.mesh.read_mesh`; it replaces :func:`strip_mesh` (``radius``
+        and ``n_across`` are then taken from it).
 
     Returns
     -------
@@ -363,9 +392,9 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
                        LinearForm, asm, condense, solve)
     from skfem.helpers import dot, grad
 
-    a = _positive("half_width", half_width, "m")
-    lam = _positive("conductivity", conductivity, "W/(m K)")
-    R = 50.0 * a if radius is None else _positive("radius", radius, "m")
+    a = require_positive("half_width", half_width, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
+    R = 50.0 * a if radius is None else require_positive("radius", radius, "m")
     if far_field not in ("robin", "dirichlet"):
         raise ValueError(f"far_field must be 'robin' or 'dirichlet' (boundary condition at "
                          f"r = R m), got {far_field!r}")
@@ -377,7 +406,11 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
                          f"got {multipole_order!r}")
     q, kind, qm = _flux_function(flux, a, q_max)
     t0 = time.perf_counter()
-    mesh, strip, outer = strip_mesh(a, R, n_across)
+    if mesh is None:
+        mesh, strip, outer = strip_mesh(a, R, n_across)
+    else:
+        mesh, strip, outer = patch_from_mesh(mesh, a)
+        R = float(np.max(np.hypot(*mesh.p)))
     elem = ElementTriP2() if order == 2 else ElementTriP1()
     basis = Basis(mesh, elem, intorder=2 * order)
     sb = FacetBasis(mesh, elem, facets=strip, intorder=10)
@@ -495,8 +528,8 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
         Bad arguments, two points on one isotherm of f (|f_1 - f_2| too small), or a
         non-positive T_n (the temperatures fall towards the source: not a heat source).
     """
-    a = _positive("half_width", half_width, "m")
-    lam = _positive("conductivity", conductivity, "W/(m K)")
+    a = require_positive("half_width", half_width, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
     pts = []
     for name, p in (("p1", p1), ("p2", p2)):
         arr = np.asarray(p, dtype=float)
@@ -638,20 +671,20 @@ def moving_source(half_length: float, q_max: float, conductivity: float, density
                        asm, condense, solve)
     from skfem.helpers import dot, grad
 
-    b = _positive("half_length", half_length, "m")
-    lam = _positive("conductivity", conductivity, "W/(m K)")
-    rho = _positive("density", density, "kg/m^3")
-    c = _positive("heat_capacity", heat_capacity, "J/(kg K)")
-    V = _positive("speed", speed, "m/s")
-    n_src = _int_at_least("n_source", n_source, 4)
+    b = require_positive("half_length", half_length, "m")
+    lam = require_positive("conductivity", conductivity, "W/(m K)")
+    rho = require_positive("density", density, "kg/m^3")
+    c = require_positive("heat_capacity", heat_capacity, "J/(kg K)")
+    V = require_positive("speed", speed, "m/s")
+    n_src = require_int("n_source", n_source, 4)
     q, kind, qm = _flux_function(flux, b, q_max)
     Pe = V * b * rho * c / (2.0 * lam)
     Lu = 1.0 + max(2.0, 12.0 / (2 * Pe)) if upstream is None else \
-        _positive("upstream", upstream, "(units of b)")
+        require_positive("upstream", upstream, "(units of b)")
     Ld = 1.0 + max(3.0, 12.0 / (2 * Pe)) if downstream is None else \
-        _positive("downstream", downstream, "(units of b)")
+        require_positive("downstream", downstream, "(units of b)")
     Dp = max(1.5, 4.0 / Pe + 4.0 * np.sqrt(Ld / (2 * Pe))) if depth is None else \
-        _positive("depth", depth, "(units of b)")
+        require_positive("depth", depth, "(units of b)")
     if Lu <= 1.0 or Ld <= 1.0:
         raise ValueError(f"upstream and downstream must exceed 1 (units of b), "
                          f"got {Lu!r}, {Ld!r}")

@@ -27,6 +27,8 @@ from typing import Any, Literal
 
 import numpy as np
 
+from ..validation import require_nonnegative, require_positive
+
 TractionModel = Literal["newtonian", "eyring", "limiting", "eyring-limiting"]
 #: The traction models, as named in a scene's ``[traction] model``.
 TRACTION_MODELS = ("newtonian", "eyring", "limiting", "eyring-limiting")
@@ -43,20 +45,6 @@ __all__ = ["newtonian_stress", "eyring_stress", "limiting_stress", "shear_stress
            "shear_parameters", "TRACTION_MODELS", "GENERIC_MINERAL_OIL"]
 
 
-def _check_positive(name: str, value: float, unit: str) -> float:
-    v = float(value)
-    if not np.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be > 0 {unit}, got {value!r}")
-    return v
-
-
-def _check_nonneg(name: str, value: float, unit: str) -> float:
-    v = float(value)
-    if not np.isfinite(v) or v < 0.0:
-        raise ValueError(f"{name} must be >= 0 {unit}, got {value!r}")
-    return v
-
-
 def newtonian_stress(eta: np.ndarray, shear_rate: np.ndarray) -> np.ndarray:
     """Newtonian shear stress tau = eta gamma_dot [Pa] (eta in Pa s, gamma_dot in 1/s)."""
     return np.asarray(eta, dtype=float) * np.asarray(shear_rate, dtype=float)
@@ -69,7 +57,7 @@ def eyring_stress(eta: np.ndarray, shear_rate: np.ndarray, tau0: float) -> np.nd
     ----------
     eta : viscosity [Pa s]; shear_rate : gamma_dot [1/s]; tau0 : Eyring stress [Pa].
     """
-    tau0 = _check_positive("eyring_stress (tau0)", tau0, "Pa")
+    tau0 = require_positive("eyring_stress (tau0)", tau0, "Pa")
     return tau0 * np.arcsinh(newtonian_stress(eta, shear_rate) / tau0)
 
 
@@ -88,8 +76,8 @@ def limiting_stress(eta: np.ndarray, shear_rate: np.ndarray, pressure: np.ndarra
     smooth : use the smooth minimum tau_N tau_L/(tau_N^k + tau_L^k)^(1/k) (always below
         both; relative deficit 2^(-1/k) where they cross); sharpness : k [-].
     """
-    tau_l0 = _check_nonneg("limiting_shear_stress (tau_L0)", tau_l0, "Pa")
-    slope = _check_nonneg("limiting_slope (Lambda)", slope, "(dimensionless)")
+    tau_l0 = require_nonnegative("limiting_shear_stress (tau_L0)", tau_l0, "Pa")
+    slope = require_nonnegative("limiting_slope (Lambda)", slope, "(dimensionless)")
     if tau_l0 == 0.0 and slope == 0.0:
         raise ValueError("the limiting shear stress tau_L0 + Lambda p vanishes: tau_L0 = 0 Pa "
                          "and Lambda = 0")
@@ -103,7 +91,7 @@ def _capped(mag: np.ndarray, tau_l0: float, slope: float, pressure: np.ndarray,
     tau_l = tau_l0 + slope * np.maximum(np.asarray(pressure, dtype=float), 0.0)
     if not smooth:
         return np.minimum(mag, tau_l)
-    k = _check_positive("sharpness", sharpness, "(dimensionless)")
+    k = require_positive("sharpness", sharpness, "(dimensionless)")
     with np.errstate(divide="ignore", invalid="ignore"):
         r = mag / tau_l
         out = tau_l * r / (1.0 + r**k) ** (1.0 / k)
@@ -130,8 +118,8 @@ def shear_stress(eta: np.ndarray, shear_rate: np.ndarray, pressure: np.ndarray |
             return limiting_stress(eta, shear_rate, pressure, limiting_shear_stress,
                                    limiting_slope, smooth=smooth)
         tau_e = _eyring(eta, shear_rate, eyring_stress)
-        tau_l0 = _check_nonneg("limiting_shear_stress (tau_L0)", limiting_shear_stress, "Pa")
-        slope = _check_nonneg("limiting_slope (Lambda)", limiting_slope, "(dimensionless)")
+        tau_l0 = require_nonnegative("limiting_shear_stress (tau_L0)", limiting_shear_stress, "Pa")
+        slope = require_nonnegative("limiting_slope (Lambda)", limiting_slope, "(dimensionless)")
         return np.sign(tau_e) * _capped(np.abs(tau_e), tau_l0, slope, pressure, smooth)
     raise ValueError(f"traction model must be one of {', '.join(map(repr, TRACTION_MODELS))}, "
                      f"got {model!r}")

@@ -1,0 +1,152 @@
+"""Meshes on disk: read and written through meshio (the files in ``meshes/``).
+
+The package builds its own grids from a scene's parameters; a file lets a user (or a
+study) fix one exactly and inspect it in ParaView. Files hold dimensionless coordinates
+in the units the scene's ``[mesh]`` ranges use (Hertz semi-axes for elastic contacts,
+hydrodynamic lengths sqrt(2 r h0) for rigid ones, the strip half-width for the
+Korovchinsky patch), so one file serves every load. ``meshes/make_meshes.py`` writes
+the shipped ones from their parameters.
+
+* :func:`read_mesh` / :func:`write_mesh` - any meshio format (``.vtu``, ``.msh``,
+  ``.xdmf``, ...) to and from scikit-fem meshes (line, triangle, quad cells);
+* :func:`tensor_axes` - the node coordinates x, y of a quad mesh on a tensor grid
+  (the grids of point contacts); :func:`line_nodes` - the nodes of a 1D mesh.
+
+meshio is imported inside the functions that use it.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import secrets
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["read_mesh", "write_mesh", "tensor_axes", "line_nodes", "tensor_mesh"]
+
+#: meshio cell types and the scikit-fem meshes they become.
+_CELLS = {"line": "MeshLine", "triangle": "MeshTri", "quad": "MeshQuad"}
+
+
+def read_mesh(path: str | os.PathLike) -> Any:
+    """Read a mesh file into a scikit-fem mesh (``MeshLine``, ``MeshTri`` or ``MeshQuad``).
+
+    Parameters
+    ----------
+    path : str or Path
+        Any format meshio reads. It must hold one kind of cell (line, triangle or quad)
+        in 1 or 2 dimensions (a zero z coordinate is dropped).
+
+    Returns
+    -------
+    skfem.Mesh
+
+    Raises
+    ------
+    ValueError
+        Unreadable file, no supported cells, or several kinds of cells (the message names
+        the file).
+    """
+    import meshio
+    import skfem
+
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"mesh file {str(path)!r} does not exist")
+    try:  # meshio's readers may print, and even call sys.exit, on a bad file
+        with contextlib.redirect_stdout(io.StringIO()), \
+                contextlib.redirect_stderr(io.StringIO()):
+            m = meshio.read(path)
+    except (Exception, SystemExit) as exc:
+        raise ValueError(f"mesh file {str(path)!r} cannot be read by meshio: "
+                         f"{type(exc).__name__} {exc}") from None
+    kinds = [c for c in m.cells if c.type in _CELLS and len(c.data)]
+    if len({c.type for c in kinds}) != 1:
+        found = sorted({c.type for c in m.cells})
+        raise ValueError(f"mesh file {str(path)!r} must hold one kind of cell among "
+                         f"{', '.join(_CELLS)}; found {found}")
+    ctype = kinds[0].type
+    cells = np.vstack([c.data for c in kinds]).T
+    pts = np.asarray(m.points, dtype=float)
+    dim = 1 if ctype == "line" else 2
+    if pts.shape[1] > dim and np.any(pts[:, dim:] != 0.0):
+        raise ValueError(f"mesh file {str(path)!r}: {ctype} cells need a {dim}D mesh, the "
+                         "points have non-zero further coordinates")
+    if ctype == "line":
+        order = np.argsort(pts[:, 0])
+        return skfem.MeshLine(pts[order, 0])
+    mesh_class = getattr(skfem, _CELLS[ctype])
+    return mesh_class(np.ascontiguousarray(pts[:, :2].T), np.ascontiguousarray(cells))
+
+
+def write_mesh(mesh: Any, path: str | os.PathLike) -> Path:
+    """Write a scikit-fem mesh (line, triangle or quad) with meshio, atomically.
+
+    The file is written under a temporary name in the target folder and moved into
+    place, so an interrupted write never leaves a half-written mesh.
+    """
+    import meshio
+
+    path = Path(path)
+    kind = _kind(mesh)
+    if kind is None:
+        raise ValueError(f"write_mesh writes MeshLine, MeshTri or MeshQuad, got "
+                         f"{type(mesh).__name__}")
+    p = np.asarray(mesh.p, dtype=float)
+    pts = np.zeros((p.shape[1], 3))
+    pts[:, :p.shape[0]] = p.T
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp{path.suffix}")
+    try:
+        meshio.write(str(tmp), meshio.Mesh(pts, [(kind, np.asarray(mesh.t).T)]))
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+    return path
+
+
+def _kind(mesh: Any) -> str | None:
+    """The meshio cell type of a scikit-fem mesh (None if unsupported)."""
+    import skfem
+
+    for ctype, name in _CELLS.items():
+        if isinstance(mesh, getattr(skfem, name)):
+            return ctype
+    return None
+
+
+def tensor_mesh(x: np.ndarray, y: np.ndarray) -> Any:
+    """A ``MeshQuad`` on the tensor grid of node coordinates x (nx,), y (ny,)."""
+    import skfem
+
+    return skfem.MeshQuad.init_tensor(np.asarray(x, float), np.asarray(y, float))
+
+
+def tensor_axes(mesh: Any) -> tuple[np.ndarray, np.ndarray]:
+    """Node coordinates x (nx,), y (ny,) of a quad mesh that is a tensor-product grid.
+
+    Raises
+    ------
+    ValueError
+        If the mesh is not quads on a tensor grid (every (x_i, y_j) a node, nothing else).
+    """
+    if _kind(mesh) != "quad":
+        raise ValueError(f"a contact grid is a quad mesh on a tensor grid, got "
+                         f"{type(mesh).__name__}")
+    x = np.unique(mesh.p[0])
+    y = np.unique(mesh.p[1])
+    if x.size * y.size != mesh.p.shape[1] or x.size < 3 or y.size < 3:
+        raise ValueError(f"the quad mesh is not a tensor grid: {mesh.p.shape[1]} nodes on "
+                         f"{x.size} x values and {y.size} y values")
+    return x, y
+
+
+def line_nodes(mesh: Any) -> np.ndarray:
+    """Sorted node coordinates of a 1D mesh (``MeshLine``)."""
+    if _kind(mesh) != "line":
+        raise ValueError(f"a line-contact grid is a 1D mesh, got {type(mesh).__name__}")
+    return np.sort(np.asarray(mesh.p[0], dtype=float))

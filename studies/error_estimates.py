@@ -1,0 +1,338 @@
+"""Can a user trust the error bar on every number? Error estimates against true errors,
+and the energy balance of the heat power.
+
+Question
+--------
+Every successful solve reports ``error_estimate``: the estimated relative discretisation
+error of h_central, h_min, p_max, friction_force and heat_power, by Richardson
+extrapolation with the observed order over the solution and the same scene on two
+coarser grids (each with twice the spacing), or the plain level difference where the
+order is not observable. Does it predict the true error?
+
+1. **Oracles** (exact solutions, computed from the closed forms of
+   :mod:`bearing_fem.analytic`): Martin's rigid isoviscous cylinder with a Reynolds
+   outlet and Kapitsa's rigid piezo-viscous ball (full-Sommerfeld), both with the exact
+   pressure as Dirichlet data, each at three resolutions. Quantities: p_max (closed
+   form), rolling friction F_P = int (h/2) dp/dx dA and the Poiseuille heat
+   2 u_m F_P (Gauss quadrature of the closed-form pressure). Target: the estimate within
+   a factor 3 of the true error.
+2. **EHL maps**: the line map (Moes M 5-1000, L 0-20, alpha p_h <= 100) and the circular
+   map (M 20-500, L 5-20, alpha p_h <= 40) on the solver's default grids. The truth is
+   the change to a solve on a twice-finer grid. Target: within a factor 3 in at least
+   90% of the cases, per quantity. Pairs where both the estimate and the change are
+   below ``FLOOR`` (the Newton tolerance's reach) count as agreeing.
+3. **Energy balance** of the same map solves: the heat power uses the conservative
+   Poiseuille form Q_P = u_m int h dp/dx dA; the discrete physical dissipation
+   int h^3 |grad p|^2/(12 eta) dA plus the numerical dissipation of the stabilisation
+   must add up to it (the discrete weak form tested with the pressure itself), and Q_P
+   must be grid-converged (its change to the twice-finer grid).
+
+Run ``python studies/error_estimates.py OUT [--quick]``; writes ``oracles.csv``,
+``maps.csv``, ``summary.json`` and ``estimates.png`` into OUT.
+"""
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import bearing_fem as bf  # noqa: E402
+from bearing_fem import analytic, units  # noqa: E402
+from bearing_fem.contacts.line import line_setup  # noqa: E402
+from bearing_fem.contacts.point import solve_point  # noqa: E402
+from bearing_fem.post import ESTIMATED_QUANTITIES  # noqa: E402
+from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, MeshSpec, Model,  # noqa: E402
+                               Scene)
+
+#: Acceptance: estimate/true within [1/FACTOR, FACTOR].
+FACTOR = 3.0
+#: Share of map cases that must meet it, per quantity.
+SHARE = 0.90
+#: Relative changes below this are at the Newton tolerance's reach: an estimate and a
+#: change both below it agree.
+FLOOR = 1e-5
+#: Line map and circular map limits (as the map studies).
+LINE_M = (5, 10, 20, 50, 100, 200, 500, 1000)
+LINE_L = (0, 2, 5, 10, 15, 20)
+LINE_MAX_ALPHA_PH = 100.0
+POINT_M = (20, 50, 100, 200, 500)
+POINT_L = (5, 10, 20)
+POINT_MAX_ALPHA_PH = 40.0
+POINT_NODES = 129
+QUANTITIES = ESTIMATED_QUANTITIES
+
+
+def agree(estimate: float | None, truth: float) -> bool:
+    """The estimate within a factor FACTOR of the true relative error (or both below
+    FLOOR)."""
+    if estimate is None or not math.isfinite(truth):
+        return False
+    if estimate < FLOOR and truth < FLOOR:
+        return True
+    if estimate <= 0.0 or truth <= 0.0:
+        return False
+    return 1.0 / FACTOR <= estimate / truth <= FACTOR
+
+
+# ---------------------------------------------------------------------------------------
+# oracles
+# ---------------------------------------------------------------------------------------
+def _gauss(a: float, b: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+    t, w = np.polynomial.legendre.leggauss(n)
+    return 0.5 * (b - a) * t + 0.5 * (b + a), 0.5 * (b - a) * w
+
+
+def martin_case(nodes: int) -> dict:
+    """Martin's cylinder (rigid, isoviscous, Reynolds outlet, gap h0) on ``nodes``."""
+    eta, u, R, h0 = 0.1, 1.0, 0.01, 1e-6
+    L = math.sqrt(2 * R * h0)
+    x_range = (-20.0, 3.0)
+    scene = Scene(title="Martin", contact=Contact(kind="line", rx=R),
+                  lubricant=Lubricant(viscosity=eta, viscosity_law="constant"),
+                  kinematics=Kinematics(u1=u, u2=u), load=Load(gap=h0),
+                  model=Model(elasticity="rigid", cavitation="reynolds"),
+                  mesh=MeshSpec(nodes=nodes, x_range=x_range))
+    x0 = x_range[0] * L
+    bp = (float(analytic.martin_pressure(np.array([x0]), h0, R, eta, u)[0]), 0.0)
+    res = bf.solve(scene, boundary_pressure=bp)
+    xc = float(analytic.martin_outlet_position(h0, R))
+    # exact numbers: p_max on a fine sampling refined by a parabola, F_P by Gauss
+    xs = np.linspace(x0, xc, 200001)
+    ps = analytic.martin_pressure(xs, h0, R, eta, u)
+    p_max = float(ps.max())
+    xg, wg = _gauss(x0, xc, 400)
+    dp = np.gradient(analytic.martin_pressure(xs, h0, R, eta, u), xs)
+    f_p = float(wg @ (0.5 * (h0 + xg**2 / (2 * R)) * np.interp(xg, xs, dp)))
+    exact = {"p_max": p_max, "friction_force": f_p, "heat_power": 2 * u * f_p}
+    return _oracle_row("martin", nodes, res, exact)
+
+
+def kapitsa_case(nodes: int) -> dict:
+    """Kapitsa's rigid ball, Barus (alpha q_max = 0.5), full-Sommerfeld, on nodes^2."""
+    eta, u, r, h0 = 0.05, 2.0, 0.01, 1e-6
+    a = b = 1.0 / (2 * r)
+    q_max = float(analytic.kapitsa_point_max_reduced(h0, a, b, eta, u))
+    alpha = 0.5 / q_max
+    scene = Scene(title="Kapitsa", contact=Contact(kind="point", rx=r, ry=r),
+                  lubricant=Lubricant(viscosity=eta, piezo=alpha),
+                  kinematics=Kinematics(u1=u, u2=u), load=Load(gap=h0),
+                  model=Model(elasticity="rigid", cavitation="none"),
+                  mesh=MeshSpec(nodes=(nodes, nodes), x_range=(-3.0, 3.0),
+                                y_range=(-3.0, 3.0)))
+
+    def exact_p(x, y):
+        return analytic.kapitsa_point_pressure(x, y, h0, a, b, eta, u, piezo=alpha)
+
+    res = solve_point(scene, boundary_pressure=exact_p)
+    L = math.sqrt(2 * r * h0)
+    xg, wx = _gauss(-3 * L, 3 * L, 300)
+    X, Y = np.meshgrid(xg, xg, indexing="ij")
+    W = np.outer(wx, wx)
+    d = 1e-3 * L
+    px = (exact_p(X + d, Y) - exact_p(X - d, Y)) / (2 * d)
+    f_p = float(np.sum(W * 0.5 * (h0 + a * X**2 + b * Y**2) * px))
+    p_max = float(analytic.barus_from_reduced(q_max, alpha))
+    exact = {"p_max": p_max, "friction_force": f_p, "heat_power": 2 * u * f_p}
+    return _oracle_row("kapitsa", nodes, res, exact)
+
+
+def _oracle_row(case: str, nodes: int, res, exact: dict) -> dict:
+    row = {"case": case, "nodes": nodes, "status": res.status}
+    est = res.error_estimate or {}
+    for k, v in exact.items():
+        num = res.quantities.get(k, math.nan)
+        truth = abs(num / v - 1.0)
+        row[f"{k}_true"] = truth
+        row[f"{k}_estimate"] = est.get(k)
+        row[f"{k}_method"] = (est.get("method") or {}).get(k)
+        row[f"{k}_agree"] = agree(est.get(k), truth)
+    return row
+
+
+# ---------------------------------------------------------------------------------------
+# EHL maps
+# ---------------------------------------------------------------------------------------
+def line_scene(M: float, L: float, nodes: int | None = None) -> Scene:
+    from line_ehl_map import scene_for
+
+    return scene_for(M, L, nodes)
+
+
+def point_scene(M: float, L: float, nodes: int) -> Scene:
+    from point_ehl_map import moes_scene
+
+    return moes_scene(M, L, nodes)
+
+
+def _alpha_ph(scene: Scene) -> float:
+    s, lub = scene, scene.lubricant
+    args = (s.e_prime, lub.viscosity, s.kinematics.mean_speed, lub.piezo)
+    if s.contact.kind == "line":
+        return units.moes_line(s.load.force, s.contact.rx, *args)["alpha_ph"]
+    return units.moes_point(s.load.force, s.contact.rx, s.contact.ry, *args)["alpha_ph"]
+
+
+def line_cases(quick: bool) -> list[tuple[float, float]]:
+    if quick:
+        return [(20, 5), (100, 10)]
+    return [(M, L) for M in LINE_M for L in LINE_L
+            if _alpha_ph(line_scene(M, L)) <= LINE_MAX_ALPHA_PH]
+
+
+def point_cases(quick: bool) -> list[tuple[float, float]]:
+    if quick:
+        return [(100, 10)]
+    return [(M, L) for M in POINT_M for L in POINT_L
+            if _alpha_ph(point_scene(M, L, 33)) <= POINT_MAX_ALPHA_PH]
+
+
+def map_row(kind: str, M: float, L: float, coarse, fine) -> dict:
+    """Estimate of the default-grid solve against its change to the twice-finer solve."""
+    row = {"kind": kind, "M": M, "L": L, "status": coarse.status,
+           "fine_status": fine.status, "nodes": coarse.dofs, "fine_nodes": fine.dofs,
+           "seconds": coarse.wall_time_s, "fine_seconds": fine.wall_time_s}
+    est = coarse.error_estimate or {}
+    for k in QUANTITIES:
+        c, f = coarse.quantities.get(k, math.nan), fine.quantities.get(k, math.nan)
+        truth = abs(c / f - 1.0) if f else math.nan
+        row[f"{k}_change"] = truth
+        row[f"{k}_estimate"] = est.get(k)
+        row[f"{k}_method"] = (est.get("method") or {}).get(k)
+        row[f"{k}_agree"] = agree(est.get(k), truth)
+        # the grid sequence behind the estimate, then the twice-finer solve
+        row[f"{k}_values"] = json.dumps((est.get("values") or {}).get(k, []) + [f])
+    q = coarse.quantities
+    qp = q["heat_power_poiseuille"]
+    row["heat_poiseuille"] = qp
+    row["heat_poiseuille_direct"] = q["heat_power_poiseuille_direct"]
+    row["heat_stabilisation"] = q["heat_power_stabilisation"]
+    row["energy_balance_residual"] = abs(q["heat_power_poiseuille_direct"]
+                                         + q["heat_power_stabilisation"] - qp) / abs(qp)
+    row["direct_vs_conservative"] = q["heat_power_poiseuille_direct"] / qp - 1.0
+    row["poiseuille_heat_change"] = abs(qp / fine.quantities["heat_power_poiseuille"] - 1.0)
+    return row
+
+
+def run_maps(quick: bool) -> list[dict]:
+    rows = []
+    for M, L in line_cases(quick):
+        base = line_scene(M, L)
+        n = base.mesh.nodes or line_setup(base).disc.x.size
+        if quick:
+            n = 601
+        coarse = bf.solve(line_scene(M, L, n))
+        fine = bf.solve(line_scene(M, L, 2 * n - 1))
+        rows.append(map_row("line", M, L, coarse, fine))
+        print(_brief(rows[-1]), flush=True)
+    for M, L in point_cases(quick):
+        n = POINT_NODES
+        coarse = solve_point(point_scene(M, L, n))
+        fine = solve_point(point_scene(M, L, 2 * n - 1))
+        rows.append(map_row("point", M, L, coarse, fine))
+        print(_brief(rows[-1]), flush=True)
+    return rows
+
+
+def _brief(row: dict) -> str:
+    parts = [f"{row['kind']} M={row['M']:g} L={row['L']:g} {row['status']}"]
+    for k in QUANTITIES:
+        e = row[f"{k}_estimate"]
+        parts.append(f"{k} {row[f'{k}_change']:.1e}/{e if e is None else f'{e:.1e}'}")
+    return "  ".join(parts)
+
+
+# ---------------------------------------------------------------------------------------
+def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dict:
+    """Run the oracle and map checks; write the tables and figure; return the numbers."""
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    t0 = time.perf_counter()
+    resolutions = {"martin": (401, 801, 1601), "kapitsa": (129, 257, 513)}
+    oracles = [martin_case(n) for n in resolutions["martin"]]
+    oracles += [kapitsa_case(n) for n in (resolutions["kapitsa"][:2] if quick
+                                          else resolutions["kapitsa"])]
+    maps = run_maps(quick)
+    _write_csv(outdir / "oracles.csv", oracles)
+    _write_csv(outdir / "maps.csv", maps)
+    summary: dict = {"oracle_agreement": {}, "map_agreement": {}, "energy": {}}
+    for k in ("p_max", "friction_force", "heat_power"):
+        summary["oracle_agreement"][k] = [r[f"{k}_agree"] for r in oracles]
+    for kind in ("line", "point"):
+        sel = [r for r in maps if r["kind"] == kind and r["status"] == "converged"
+               and r["fine_status"] == "converged"]
+        summary["map_agreement"][kind] = {
+            k: (sum(r[f"{k}_agree"] for r in sel) / len(sel) if sel else math.nan)
+            for k in QUANTITIES}
+        summary["map_agreement"][kind]["cases"] = len(sel)
+        summary["energy"][kind] = {
+            "max_balance_residual": max((r["energy_balance_residual"] for r in sel),
+                                        default=math.nan),
+            "max_poiseuille_heat_change": max((r["poiseuille_heat_change"] for r in sel),
+                                              default=math.nan),
+            "max_direct_vs_conservative": max((abs(r["direct_vs_conservative"]) for r in sel),
+                                              default=math.nan)}
+    summary["seconds"] = time.perf_counter() - t0
+    (outdir / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
+    _figure(outdir / "estimates.png", maps, oracles)
+    return {"oracles": oracles, "maps": maps, "summary": summary}
+
+
+def _write_csv(path: Path, rows: list[dict]) -> None:
+    if not rows:
+        return
+    keys = list(rows[0])
+    with path.open("w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(rows)
+
+
+def _figure(path: Path, maps: list[dict], oracles: list[dict]) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6, 5.5))
+    markers = dict(zip(QUANTITIES, "osD^v"))
+    for k in QUANTITIES:
+        pts = [(r[f"{k}_change"], r[f"{k}_estimate"]) for r in maps
+               if r[f"{k}_estimate"] and r[f"{k}_change"] > 0]
+        if pts:
+            x, y = zip(*pts)
+            ax.loglog(x, y, markers[k], mfc="none", label=f"maps: {k}")
+    for k in ("p_max", "friction_force", "heat_power"):
+        pts = [(r[f"{k}_true"], r[f"{k}_estimate"]) for r in oracles
+               if r[f"{k}_estimate"] and r[f"{k}_true"] > 0]
+        if pts:
+            x, y = zip(*pts)
+            ax.loglog(x, y, "k" + markers[k], ms=4, label=f"oracles: {k}")
+    lim = np.array([1e-7, 1.0])
+    ax.loglog(lim, lim, "k-", lw=0.8)
+    ax.loglog(lim, FACTOR * lim, "k:", lw=0.8)
+    ax.loglog(lim, lim / FACTOR, "k:", lw=0.8)
+    ax.set_xlabel("true relative error (oracles) or change to a 2x finer grid (maps)")
+    ax.set_ylabel("reported error_estimate")
+    ax.legend(fontsize=7)
+    ax.set_title("Error estimate against the true error (dotted: factor 3)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("outdir", nargs="?", default="out/error_estimates")
+    ap.add_argument("--quick", action="store_true")
+    a = ap.parse_args()
+    res = main(a.outdir, quick=a.quick)
+    print(json.dumps(res["summary"], indent=1, default=str))

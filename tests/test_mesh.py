@@ -1,0 +1,72 @@
+"""meshes/: the shipped mesh files, read and written through meshio (bearing_fem.mesh)."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from bearing_fem import mesh as bm
+from bearing_fem.physics import thermal
+
+MESHES = Path(__file__).resolve().parents[1] / "meshes"
+sys.path.insert(0, str(MESHES))
+import make_meshes  # noqa: E402
+
+
+def test_shipped_meshes_are_what_their_parameters_give(tmp_path):
+    """The files in meshes/ equal a fresh run of make_meshes.py (none is stale)."""
+    fresh = make_meshes.main(tmp_path)
+    for name, path in fresh.items():
+        shipped = bm.read_mesh(MESHES / path.name)
+        new = bm.read_mesh(path)
+        assert type(shipped) is type(new), name
+        np.testing.assert_allclose(shipped.p, new.p, rtol=0, atol=1e-12,
+                                   err_msg=f"{name}: node coordinates")
+        np.testing.assert_array_equal(shipped.t, new.t, err_msg=f"{name}: cells")
+
+
+def test_round_trip_and_atomic_write(tmp_path):
+    m = bm.tensor_mesh(np.linspace(0, 1, 5), np.linspace(-1, 1, 4))
+    path = bm.write_mesh(m, tmp_path / "grid.vtu")
+    back = bm.read_mesh(path)
+    x, y = bm.tensor_axes(back)
+    np.testing.assert_allclose(x, np.linspace(0, 1, 5), err_msg="x axis survives the file")
+    np.testing.assert_allclose(y, np.linspace(-1, 1, 4), err_msg="y axis survives the file")
+    assert [p.name for p in tmp_path.iterdir()] == ["grid.vtu"], "no temporary file left"
+
+
+def test_point_grid_file_is_the_solver_default():
+    from bearing_fem.contacts.point import ELASTIC_NODES, ELASTIC_RANGE
+
+    x, y = bm.tensor_axes(bm.read_mesh(MESHES / "point_elastic_129.vtu"))
+    assert x.size == y.size == ELASTIC_NODES
+    np.testing.assert_allclose([x[0], x[-1]], ELASTIC_RANGE[0], err_msg="x range [a]")
+    np.testing.assert_allclose([y[0], y[-1]], ELASTIC_RANGE[1], err_msg="y range [b]")
+
+
+def test_korovchinsky_patch_from_file_equals_built_in():
+    patch = bm.read_mesh(MESHES / "korovchinsky_patch.vtu")
+    a, q, lam = 1e-4, 1e8, 46.0
+    from_file = thermal.strip_source(a, q, lam, mesh=patch)
+    built = thermal.strip_source(a, q, lam)
+    for x, y in ((0.0, 0.0), (0.5 * a, 0.0), (2 * a, 0.0), (0.0, 3 * a)):
+        np.testing.assert_allclose(from_file.temperature(x, y), built.temperature(x, y),
+                                   rtol=1e-10, err_msg="same mesh, same field (read back "
+                                                       "from the .vtu to rounding)")
+
+
+@pytest.mark.parametrize("bad, match", [("missing.vtu", "does not exist"),
+                                        ("garbage.vtu", "cannot be read")])
+def test_bad_files_name_the_file(tmp_path, bad, match):
+    (tmp_path / "garbage.vtu").write_text("not a mesh")
+    with pytest.raises(ValueError, match=match):
+        bm.read_mesh(tmp_path / bad)
+
+
+def test_wrong_mesh_kind_is_refused():
+    with pytest.raises(ValueError, match="tensor grid"):
+        bm.tensor_axes(bm.read_mesh(MESHES / "korovchinsky_patch.vtu"))
+    with pytest.raises(ValueError, match="triangles"):
+        thermal.patch_from_mesh(bm.read_mesh(MESHES / "point_elastic_129.vtu"), 1e-4)
