@@ -20,6 +20,8 @@ import numpy as np
 from .errors import SceneError
 from .physics.rheology import viscosity_function
 from .physics.traction import GENERIC_MINERAL_OIL, TRACTION_MODELS
+from .validation import (require_finite, require_int, require_nonnegative, require_positive,
+                         shown)
 
 try:  # Python >= 3.11
     import tomllib
@@ -30,69 +32,64 @@ except ModuleNotFoundError:  # pragma: no cover
 # ---------------------------------------------------------------------------------------
 # validation helpers
 # ---------------------------------------------------------------------------------------
-#: Longest echo of a bad value in an error message [characters]: a 1 MB string gives a
-#: short line.
-ECHO_LIMIT = 60
-
-
-def show_value(value: Any, limit: int = ECHO_LIMIT) -> str:
-    """``repr`` of a value for an error message, cut to about ``limit`` characters.
+def show_value(value: Any) -> str:
+    """A bad value for an error message, cut short (:func:`bearing_fem.validation.shown`),
+    also for integers beyond Python's int -> str digit limit and deeply nested lists.
 
     Parameters
     ----------
     value : Any
         The offending value (any type: a scene file can hold anything).
-    limit : int
-        Longest text returned [characters], plus a note of the full length.
 
     Returns
     -------
     str
     """
     try:
-        text = repr(value)
+        return shown(value)
     except ValueError:  # an integer beyond Python's int -> str digit limit
         digits = int(value.bit_length() * math.log10(2)) + 1
         return f"<an integer of about {digits} digits>"
     except RecursionError:
         return f"<a deeply nested {type(value).__name__}>"
-    if len(text) > limit:
-        text = f"{text[:max(limit - 25, 10)]}... ({len(text)} characters)"
-    return text
 
 
 def _section_of(obj: Any) -> str:
     return getattr(obj, "_section", type(obj).__name__.lower())
 
 
-def _number(obj: Any, name: str, unit: str) -> float:
+def _scalar(obj: Any, name: str, unit: str) -> tuple[str, Any]:
+    """The field's full name and value, or SceneError unless the value is one real number
+    (not a bool, a string, a list, ...)."""
     value = getattr(obj, name)
-    section = _section_of(obj)
+    full = f"{_section_of(obj)}.{name}"
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"{section}.{name} must be a number in {unit}, got {show_value(value)} "
+        raise SceneError(f"{full} must be a number in {unit}, got {show_value(value)} "
                          f"({type(value).__name__})")
-    try:
-        value = float(value)
-    except OverflowError:  # an integer beyond the double range
-        raise SceneError(f"{section}.{name} must be finite ({unit}), got "
-                         f"{show_value(value)} (beyond the floating-point range)") from None
-    if not math.isfinite(value):
-        raise SceneError(f"{section}.{name} must be finite ({unit}), got {value!r}")
+    if isinstance(value, int) and value.bit_length() > 1024:  # beyond the double range
+        raise SceneError(f"{full} must be finite ({unit}), got {show_value(value)} (beyond "
+                         "the floating-point range)")
+    return full, value
+
+
+def _number(obj: Any, name: str, unit: str) -> float:
+    full, value = _scalar(obj, name, unit)
+    value = require_finite(full, value, unit, error=SceneError)
     object.__setattr__(obj, name, value)
     return value
 
 
 def _positive(obj: Any, name: str, unit: str) -> float:
-    value = _number(obj, name, unit)
-    if value <= 0.0:
-        raise SceneError(f"{_section_of(obj)}.{name} must be > 0 {unit}, got {value!r}")
+    full, value = _scalar(obj, name, unit)
+    value = require_positive(full, value, unit, error=SceneError)
+    object.__setattr__(obj, name, value)
     return value
 
 
 def _nonneg(obj: Any, name: str, unit: str) -> float:
-    value = _number(obj, name, unit)
-    if value < 0.0:
-        raise SceneError(f"{_section_of(obj)}.{name} must be >= 0 {unit}, got {value!r}")
+    full, value = _scalar(obj, name, unit)
+    value = require_nonnegative(full, value, unit, error=SceneError)
+    object.__setattr__(obj, name, value)
     return value
 
 
@@ -113,10 +110,9 @@ def _bounded(obj: Any, name: str, unit: str, lo: float, hi: float, *,
 
 
 def _integer(obj: Any, name: str, lo: int, hi: int, what: str) -> int:
-    value = getattr(obj, name)
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise SceneError(f"{_section_of(obj)}.{name} must be an integer in [{lo}, {hi}] "
-                         f"({what}), got {show_value(value)}")
+    value = require_int(f"{_section_of(obj)}.{name}", getattr(obj, name), lo, hi, what=what,
+                        error=SceneError)
+    object.__setattr__(obj, name, value)
     return value
 
 
@@ -150,7 +146,7 @@ def _names(keys: list[Any], prefix: str = "", most: int = 5) -> str:
     """Unknown key names for a message: each cut short, at most ``most`` of them."""
     shown = []
     for k in keys[:most]:
-        text = f"{prefix}{k}" if isinstance(k, str) else f"{prefix}{show_value(k, 40)}"
+        text = f"{prefix}{k}" if isinstance(k, str) else f"{prefix}{show_value(k)}"
         shown.append(text if len(text) <= 40 else f"{text[:30]}... ({len(text)} characters)")
     more = f" and {len(keys) - most} more" if len(keys) > most else ""
     return ", ".join(shown) + more

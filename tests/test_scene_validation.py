@@ -304,7 +304,7 @@ EXTREMES = [
           "kinematics", "mean speed", "m/s"),
     _case("load.force-huge", {"load.force": 1e308}, "load.force", "N"),
     _case("load.force-401-digits", {"load.force": 10**400, "load.gap": DELETE}, "load.force",
-          "401 characters",
+          "401 chars",
           "floating-point range"),
     _case("load.force-hertz-width", {"load.force": 1e9}, "load.force", "a_x",
           "contact.rx", "Hertz", base="point"),
@@ -318,7 +318,7 @@ EXTREMES = [
     _case("title-long", {"title": "t" * 1_000_000}, "title", "1000000"),
     _case("mesh.x_range-huge", {"mesh.x_range": [-1e308, 1.5]}, "mesh.x_range"),
     _case("mesh.x_range-401-digits", {"mesh.x_range": [-(10**400), 1.5]}, "mesh.x_range",
-          "characters"),
+          "chars"),
     _case("solver.time_limit-huge", {"solver.time_limit": 1e308}, "solver.time_limit", "s"),
     _case("thermal.oil_temperature-huge", {"thermal.oil_temperature": 1e308},
           "thermal.oil_temperature", "deg C", base="thermal"),
@@ -328,7 +328,7 @@ EXTREMES = [
           "thermal.conductivity", "W/(m K)", base="thermal"),
     _case("thermal.piezo_values-401-digits",
           {"thermal.piezo_temperatures": [40.0], "thermal.piezo_values": [10**400]},
-          "thermal.piezo_values", "characters", base="thermal"),
+          "thermal.piezo_values", "chars", base="thermal"),
     _case("thermal-section-without-patch", {"model.thermal": "none"}, "[thermal]",
           "model.thermal", base="thermal"),
     _case("thermal-patch-on-point",
@@ -481,10 +481,10 @@ def test_messages_name_value_and_unit():
 def test_long_values_are_echoed_short(tmp_path, capsys):
     """A 1 MB string, a 5000-digit integer and a 1 MB key give one short line each."""
     long_string = "x" * 1_000_000
-    for changes, expect in (({"lubricant.viscosity": long_string}, "1000002 characters"),
+    for changes, expect in (({"lubricant.viscosity": long_string}, "1000002 chars"),
                             ({"lubricant.viscosity": 10**5000}, "digits"),
                             ({"lubricant." + long_string: 1.0}, "characters"),
-                            ({"contact.kind": long_string}, "characters")):
+                            ({"contact.kind": long_string}, "chars")):
         data = _apply(_base("line"), changes)
         with pytest.raises(SceneError) as info:
             Scene.from_dict(data)
