@@ -361,7 +361,9 @@ def _matplotlib_map(d: PlotData, out: Path) -> None:
 
     X, Y = np.meshgrid(d.x, d.y)
     (x0, x1), (y0, y1), sub = _map_window(d)
-    fig, ax = plt.subplots(figsize=(8, 6), layout="constrained")
+    # the figure follows the window's shape (equal aspect), plus room for the colour bar
+    width = min(max(5.5 * (x1 - x0) / (y1 - y0) + 2.5, 5.0), 12.0)
+    fig, ax = plt.subplots(figsize=(width, 6), layout="constrained")
     mesh = ax.pcolormesh(X[sub] * 1e3, Y[sub] * 1e3, d.pressure[sub] / 1e6, shading="auto",
                          cmap="viridis")
     fig.colorbar(mesh, ax=ax, label=field_label(d), shrink=0.9)
