@@ -20,6 +20,7 @@ they are logged at info level (shown with ``-v``).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import logging
 import math
 import re
@@ -346,16 +347,26 @@ class _StderrHandler(logging.StreamHandler):
         pass
 
 
-def _configure_logging(verbosity: int) -> None:
+@contextlib.contextmanager
+def _logging_to_stderr(verbosity: int):
+    """Log the package's records to stderr at the level of ``verbosity`` for the duration
+    of one command; the logger's previous handlers, level and propagation come back
+    afterwards (``main`` may be called in-process, e.g. by tests or the fuzz study)."""
     level = {-1: logging.ERROR, 0: logging.WARNING, 1: logging.INFO}.get(
         max(min(verbosity, 2), -1), logging.DEBUG)
     logger = logging.getLogger("bearing_fem")
-    if not any(isinstance(h, _StderrHandler) for h in logger.handlers):
-        handler = _StderrHandler()
-        handler.setFormatter(logging.Formatter("%(levelname)s %(name)s: %(message)s"))
-        logger.addHandler(handler)
+    saved = (logger.level, logger.propagate)
+    handler = _StderrHandler()
+    handler.setFormatter(logging.Formatter("%(levelname)s %(name)s: %(message)s"))
+    logger.addHandler(handler)
     logger.setLevel(level)
     logger.propagate = False
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(saved[0])
+        logger.propagate = saved[1]
 
 
 def _log_warning(message, category, filename, lineno, file=None, line=None) -> None:
@@ -391,8 +402,12 @@ def _main(argv: Sequence[str]) -> int:
         return int(exc.code or 0)
     verbosity += args.verbose - args.quiet  # (split_verbosity took them all; kept for API)
     args.quiet = verbosity < 0
-    _configure_logging(verbosity)
+    with _logging_to_stderr(verbosity):
+        return _run(args)
 
+
+def _run(args: argparse.Namespace) -> int:
+    """Run a parsed command; turn input errors into one line and exit code 2."""
     from .errors import SceneError
 
     try:

@@ -136,10 +136,23 @@ def test_solve_exit_0(tmp_path, capsys):
     (lambda scene, out: ["solve", scene, "-q", "--out", out], logging.ERROR, True),
     (lambda scene, out: ["--quiet", "solve", scene, "--out", out], logging.ERROR, True),
 ], ids=["v-before", "v-after", "vv-at-end", "v-twice", "q-after", "quiet-before"])
-def test_verbosity_anywhere(tmp_path, capsys, argv_of, level, quiet):
+def test_verbosity_anywhere(tmp_path, capsys, monkeypatch, argv_of, level, quiet):
+    import bearing_fem.contacts.dispatch as dispatch
+
     out = tmp_path / "out"
+    logger = logging.getLogger("bearing_fem")
+    before = (logger.level, logger.propagate, list(logger.handlers))
+    real_solve, seen = dispatch.solve, []
+
+    def solve_and_look(scene):  # the level in force during the command
+        seen.append(logger.level)
+        return real_solve(scene)
+
+    monkeypatch.setattr(dispatch, "solve", solve_and_look)
     assert cli.main(argv_of(_write(tmp_path, RIGID_OK), str(out))) == 0
-    assert logging.getLogger("bearing_fem").level == level
+    assert seen == [level]
+    assert (logger.level, logger.propagate, list(logger.handlers)) == before, \
+        "main() restores the package logger"
     captured = capsys.readouterr()
     assert ("h_central" in captured.out) != quiet, "-q prints no summary"
     if level <= logging.INFO:
