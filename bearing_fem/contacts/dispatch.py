@@ -16,7 +16,8 @@ Paths (a scene pays only for what it needs):
 
 Floating-point warnings of intermediate iterates never reach the user: they are
 silenced during the solve and logged at debug level; a failure is a status and a
-message, never a warning.
+message, never a warning. Inputs outside the range the package knows to be plausible
+(:func:`bearing_fem.checks.input_warnings`) head the result's ``warnings``.
 """
 from __future__ import annotations
 
@@ -26,6 +27,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ..checks import input_warnings
 from ..errors import SceneError
 from ..result import Result
 from ..scene import Scene
@@ -70,6 +72,9 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
         result = _route(scene, boundary_pressure, progress)
     for w in caught:
         log.debug("suppressed during the solve: %s: %s", w.category.__name__, w.message)
+    notes = input_warnings(scene)
+    if notes:
+        result.warnings = notes + [w for w in result.warnings if w not in notes]
     return result
 
 
