@@ -162,11 +162,42 @@ def _solve_and_write(scene: Any, outdir: Path, png: Path | None, quiet: bool) ->
     return _report_status(result)
 
 
+def _solve_series_and_write(scene: Any, outdir: Path, quiet: bool) -> int:
+    """A [transient] scene: the squeeze series, its files and a short summary."""
+    from .contacts.dispatch import solve_series
+    from .io import export_series
+
+    series = solve_series(scene)
+    try:
+        files = export_series(series, outdir)
+    except OSError as exc:
+        raise _InputError(f"cannot write results to {str(outdir)!r}: "
+                          f"{exc.strerror or exc}") from None
+    if not quiet:
+        s = series.summary()
+        print(getattr(scene, "title", "") or "squeeze series")
+        print(f"  {'status':<21} {s['status']} ({'success' if s['success'] else 'no success'})")
+        pm = [v for v in s["p_max"] if v is not None]
+        if pm:
+            print(f"  {'p_max over time':<21} {_fmt(min(pm), 'Pa')} .. {_fmt(max(pm), 'Pa')}")
+        print(f"  {'instants':<21} {s['instants']} ({s['scheme']})")
+        print(f"  {'wall time':<21} {_fmt(s['wall_time_s'], 's')}")
+        print(f"  {'message':<21} {s['message']}")
+        print(f"  {'wrote':<21} " + ", ".join(str(p) for p in files.values()))
+    if series.success:
+        return EXIT_OK
+    print(f"bearing-fem: no converged series (status {series.status}): {series.message}",
+          file=sys.stderr)
+    return EXIT_NO_SOLUTION
+
+
 def _cmd_solve(args: argparse.Namespace) -> int:
     from .scene import Scene
 
     out = _out_dir(args.out)
     scene = Scene.from_toml(args.scene)
+    if scene.transient is not None:
+        return _solve_series_and_write(scene, out, args.quiet)
     return _solve_and_write(scene, out, None, args.quiet)
 
 
@@ -282,14 +313,14 @@ def split_verbosity(argv: Sequence[str]) -> tuple[list[str], int]:
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``bearing-fem`` (subcommands solve, demo, plot)."""
-    from . import __version__
+    from .version import VERSION as package_version
 
     parser = argparse.ArgumentParser(
         prog="bearing-fem",
         description="Finite-element EHL solver for rolling-bearing contacts: film, "
                     "pressure, friction and heat of line and point contacts.",
         epilog=_EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {package_version}")
     parser.add_argument("-v", "--verbose", action="count", default=0,
                         help="log progress to stderr (-v info, -vv debug); anywhere on "
                              "the line")

@@ -326,7 +326,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
     """
     import h5py
 
-    from . import __version__
+    from .version import VERSION as package_version
 
     path = Path(path)
     summary = _json_safe(result.summary())
@@ -335,7 +335,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
         f.attrs["status"] = str(result.status)
         f.attrs["success"] = bool(result.success)
         f.attrs["message"] = str(result.message)
-        f.attrs["version"] = __version__
+        f.attrs["version"] = package_version
         f.attrs["title"] = str(getattr(result.scene, "title", "") or "")
         f.attrs["h0"] = float(result.h0)
         f.attrs["scene"] = scene_to_toml(result.scene)
@@ -456,28 +456,32 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     Returns
     -------
     dict[str, Path]
-        ``{"pvd": ..., "xdmf": ..., "h5": ...}``.
-
-    Raises
-    ------
-    ValueError
-        If the series has no solved step.
+        ``{"pvd": ..., "xdmf": ..., "h5": ..., "summary": .../summary.json}`` (the series'
+        :meth:`summary`); a series with no solved instant writes its summary (with the
+        status) alone: ``{"summary": ...}``.
     """
     import h5py
     import meshio
 
-    if not series.results:
-        raise ValueError(f"nothing to export: the series has no solved step (status "
-                         f"{getattr(series, 'status', '?')!r}: {getattr(series, 'message', '')})")
-    if name is None:
-        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     clean_stale_temporaries(outdir)
+    summary_text = json.dumps(_json_safe(series.summary()), indent=2, allow_nan=False) + "\n"
+    if not series.results:  # nothing solved: the summary (with the status) alone
+        stage = _Staging(outdir)
+        try:
+            stage.temp(FILES["summary"]).write_text(summary_text, encoding="utf-8")
+            stage.commit()
+        except BaseException:
+            stage.discard()
+            raise
+        return {"summary": outdir / FILES["summary"]}
+    if name is None:
+        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
     points, quads = _series_mesh(series.results[0])
     stage = _Staging(outdir)
     final = {"pvd": outdir / f"{name}.pvd", "xdmf": outdir / f"{name}.xdmf",
-             "h5": outdir / f"{name}.h5"}
+             "h5": outdir / f"{name}.h5", "summary": outdir / FILES["summary"]}
     try:
         entries, grids = [], []
         h5name = final["h5"].name
@@ -506,6 +510,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
                     '<Geometry GeometryType="XYZ">'
                     + _xdmf_item(h5name, "/points", points.shape, "float") + "</Geometry>"
                     + "".join(attrs) + "</Grid>")
+        stage.temp(final["summary"].name).write_text(summary_text, encoding="utf-8")
         stage.temp(final["pvd"].name).write_text(
             '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
             "  <Collection>\n" + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n",

@@ -685,6 +685,52 @@ class Traction:
                              "both 0: the limiting stress would vanish")
 
 
+@dataclass(frozen=True, kw_only=True)
+class Transient:
+    """A squeeze series of a point contact with a prescribed gap: the rigid offset
+    oscillates as h0(t) = h0 (1 + amplitude cos(omega t)), ``load.gap`` = h0 (the mean).
+
+    ``bearing_fem.solve_series`` (and ``bearing-fem solve``) solve it: rigid scenes
+    instant by instant (no memory), elastic ones with the time derivative of the film
+    (``docs/point.md``, "Squeeze").
+
+    Parameters
+    ----------
+    kind : {"squeeze"}
+    amplitude : float
+        eps [-], 0 <= eps < 1. No default.
+    angular_frequency : float or None
+        omega [rad/s]; None: u_m / sqrt(2 rx h0) (one hydrodynamic length per radian).
+    steps : int
+        Time steps per period (2..10000; default 32).
+    periods : int
+        Periods (1..100; default 1).
+    scheme : {"bdf2", "euler", "quasi-steady"}
+        Time discretisation of elastic scenes (default BDF2, second order); rigid scenes
+        have no memory and are solved instant by instant whatever the scheme.
+    """
+
+    _section = "transient"
+    kind: Literal["squeeze"] = "squeeze"
+    amplitude: float
+    angular_frequency: float | None = None
+    steps: int = 32
+    periods: int = 1
+    scheme: Literal["bdf2", "euler", "quasi-steady"] = "bdf2"
+
+    def __post_init__(self) -> None:
+        _choice(self, "kind", ("squeeze",))
+        amp = _number(self, "amplitude", "(dimensionless)")
+        if not 0.0 <= amp < 1.0:
+            raise SceneError(f"transient.amplitude must lie in [0, 1) (dimensionless: the gap "
+                             f"would close), got {amp!r}")
+        if self.angular_frequency is not None:
+            _bounded(self, "angular_frequency", "rad/s", 0.0, 1e9, open_low=True)
+        _integer(self, "steps", 2, 10000, "time steps per period")
+        _integer(self, "periods", 1, 100, "periods")
+        _choice(self, "scheme", ("bdf2", "euler", "quasi-steady"))
+
+
 _SECTIONS: dict[str, type] = {
     "contact": Contact,
     "materials": Materials,
@@ -696,6 +742,7 @@ _SECTIONS: dict[str, type] = {
     "solver": SolverSpec,
     "thermal": Thermal,
     "traction": Traction,
+    "transient": Transient,
 }
 _REQUIRED = ("contact", "lubricant", "kinematics", "load")
 
@@ -723,12 +770,13 @@ class Scene:
     solver: SolverSpec = field(default_factory=SolverSpec)
     thermal: Thermal | None = None
     traction: Traction | None = None
+    transient: Transient | None = None
 
     def __post_init__(self) -> None:
         _check_title(self.title)
         for name, klass in _SECTIONS.items():
             value = getattr(self, name)
-            optional = name in ("materials", "thermal", "traction")
+            optional = name in ("materials", "thermal", "traction", "transient")
             if not isinstance(value, klass) and not (optional and value is None):
                 raise SceneError(f"scene.{name} must be a {klass.__name__} (the [{name}] "
                                  f"section), got {show_value(value)}")
@@ -749,9 +797,29 @@ class Scene:
                 raise SceneError(f"mesh.nodes must be {'[nx, ny]' if want_two else 'one integer'} "
                                  f"for a {self.contact.kind} contact, got {list(nodes) if isinstance(nodes, tuple) else nodes!r}")
         self._check_thermal()
+        self._check_transient()
         if self.mesh.y_range is not None and self.contact.kind == "line":
             raise SceneError("mesh.y_range applies to point contacts only")
         self._check_hertz()
+
+    def _check_transient(self) -> None:
+        """A squeeze series: point contacts with a prescribed gap, isothermal."""
+        if self.transient is None:
+            return
+        if self.contact.kind != "point" or self.load.gap is None:
+            raise SceneError("a [transient] squeeze series needs contact.kind = 'point' and "
+                             "load.gap (m, the mean rigid offset h0 of h0(t)); got "
+                             f"contact.kind = {self.contact.kind!r}, load.gap = "
+                             f"{self.load.gap!r}")
+        if self.model.thermal != "none":
+            raise SceneError("a [transient] squeeze series is isothermal: model.thermal must "
+                             f"be 'none', got {self.model.thermal!r}")
+        if self.model.elasticity == "rigid":
+            lub = self.lubricant
+            if lub.density != "incompressible" or lub.viscosity_law == "roelands":
+                raise SceneError("a rigid squeeze series is solved instant by instant on the "
+                                 "linear path: it needs an incompressible lubricant with a "
+                                 "constant or Barus viscosity law")
 
     def _check_thermal(self) -> None:
         """The thermal patch: its section, line contacts only, both surfaces moving."""

@@ -49,6 +49,16 @@ POINT = {
 }
 THERMAL = {"oil_temperature": 40.0, "exponent": 2.5}
 TRACTION = {"model": "eyring"}
+#: A valid squeeze series: a rigid ball with a vibrating gap.
+SQUEEZE = {
+    "contact": {"kind": "point", "rx": 0.00635, "ry": 0.00635},
+    "lubricant": {"viscosity": 0.0106, "piezo": 2e-8},
+    "kinematics": {"u1": 2.0, "u2": 2.0},
+    "load": {"gap": 2e-7},
+    "model": {"elasticity": "rigid", "cavitation": "none"},
+    "transient": {"kind": "squeeze", "amplitude": 0.3, "angular_frequency": 2e4, "steps": 8,
+                  "periods": 1, "scheme": "bdf2"},
+}
 
 
 def _line_elastic() -> dict:
@@ -340,6 +350,26 @@ EXTREMES = [
           "traction.eyring_stress", "Pa", base="traction"),
     _case("traction.limiting_slope-above-1", {"traction.limiting_slope": 2.0},
           "traction.limiting_slope", "friction coefficient", base="traction"),
+    # --- transient (squeeze series) ----------------------------------------------------
+    _case("transient.kind-value", {"transient.kind": "impact"}, "transient.kind", "squeeze",
+          base="squeeze"),
+    _case("transient.amplitude-one", {"transient.amplitude": 1.0}, "transient.amplitude",
+          "[0, 1)", base="squeeze"),
+    _case("transient.amplitude-missing", {"transient.amplitude": DELETE},
+          "transient.amplitude", base="squeeze"),
+    _case("transient.angular_frequency-sign", {"transient.angular_frequency": -5.0},
+          "transient.angular_frequency", "rad/s", base="squeeze"),
+    _case("transient.steps-one", {"transient.steps": 1}, "transient.steps", base="squeeze"),
+    _case("transient.periods-float", {"transient.periods": 1.5}, "transient.periods",
+          base="squeeze"),
+    _case("transient.scheme-value", {"transient.scheme": "rk4"}, "transient.scheme",
+          base="squeeze"),
+    _case("unknown-key-transient", {"transient.colour": 1}, "transient.colour", "known keys",
+          base="squeeze"),
+    _case("transient-under-load", {"load": {"force": 30.0}}, "[transient]", "load.gap",
+          base="squeeze"),
+    _case("transient-rigid-roelands", {"lubricant.viscosity_law": "roelands"}, "rigid",
+          "Barus", base="squeeze"),
 ]
 CASES += EXTREMES
 
@@ -351,6 +381,8 @@ def _base(name: str) -> dict:
         return copy.deepcopy(POINT)
     if name == "line-elastic":
         return _line_elastic()
+    if name == "squeeze":
+        return copy.deepcopy(SQUEEZE)
     if name in ("thermal", "traction"):
         if name not in scene_module._SECTIONS:
             pytest.skip(f"[{name}] is not a section of the installed bearing_fem.scene")
@@ -379,7 +411,8 @@ def _apply(data: dict, changes: dict) -> dict:
     return data
 
 
-@pytest.mark.parametrize("base", ["line", "point", "line-elastic", "thermal", "traction"])
+@pytest.mark.parametrize("base", ["line", "point", "line-elastic", "thermal", "traction",
+                                  "squeeze"])
 def test_bases_are_valid(base):
     """Positive control: without a change, every base scene validates."""
     Scene.from_dict(_base(base))
