@@ -273,6 +273,14 @@ def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dic
             k: (sum(r[f"{k}_agree"] for r in sel) / len(sel) if sel else math.nan)
             for k in QUANTITIES}
         summary["map_agreement"][kind]["cases"] = len(sel)
+        # the misses: estimates more than FACTOR above (conservative) or below the change
+        summary["map_misses"] = summary.get("map_misses", {})
+        summary["map_misses"][kind] = {
+            k: {"over": sum(1 for r in sel if not r[f"{k}_agree"]
+                            and (r[f"{k}_estimate"] or 0.0) > r[f"{k}_change"]),
+                "under": sum(1 for r in sel if not r[f"{k}_agree"]
+                             and (r[f"{k}_estimate"] or 0.0) <= r[f"{k}_change"])}
+            for k in QUANTITIES}
         summary["energy"][kind] = {
             "max_balance_residual": max((r["energy_balance_residual"] for r in sel),
                                         default=math.nan),
