@@ -21,6 +21,7 @@ _LAZY = {
     "Scene": ("bearing_fem.scene", "Scene"),
     "SceneError": ("bearing_fem.errors", "SceneError"),
     "solve": ("bearing_fem.contacts.dispatch", "solve"),
+    "solve_series": ("bearing_fem.contacts.dispatch", "solve_series"),
     "Result": ("bearing_fem.result", "Result"),
     "export": ("bearing_fem.io", "export"),
     "Bearing": ("bearing_fem.bearing", "Bearing"),

@@ -1,25 +1,38 @@
 """Command line: ``bearing-fem solve | demo | plot`` (see ``docs/cli.md``).
 
-The only module of the package that prints or exits. Exit codes (INTERFACE.md 2):
+The only module of the package that prints or exits. Exit codes:
 
-* 0 -- solved (status ``converged`` or ``linear``), or a plot written;
+* 0 -- solved (status ``converged`` or ``linear``), or a plot of a solved result written;
 * 2 -- invalid input: a scene error (the message names the field, value and unit),
   an unreadable or malformed TOML file, a bad command line, an unwritable output
-  directory or an unreadable result file. One line on stderr, no traceback;
-* 3 -- no converged solution (``max_iterations``, ``stalled``, ``diverged``) or no
-  solution exists (``no_solution``); the files are still written, with the status.
+  directory, an unreadable result file or a plot option that does not apply. One line
+  on stderr, no traceback, nothing written;
+* 3 -- no converged solution (``max_iterations``, ``stalled``, ``diverged``,
+  ``budget_exhausted``, ``time_limit``) or no solution exists (``no_solution``); the
+  files are still written, with the status (``plot`` of such a result writes the figure
+  stamped with the status and also exits 3);
+* 130 -- interrupted (Ctrl-C): one line on stderr; an export in progress leaves no file
+  behind.
+
+Python warnings (e.g. numpy floating-point warnings) never reach the terminal as such:
+they are logged at info level (shown with ``-v``).
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
 import logging
+import math
+import re
 import sys
+import warnings
 from pathlib import Path
 from typing import Any, Sequence
 
 EXIT_OK = 0
 EXIT_INVALID = 2
 EXIT_NO_SOLUTION = 3
+EXIT_INTERRUPTED = 130
 
 #: Default output directory of ``bearing-fem demo``.
 DEMO_DIR = "bearing_fem_demo"
@@ -67,99 +80,63 @@ def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
     for name, value in rows:
         print(f"  {name:<21} {value}")
     print(f"  {'message':<21} {s['message']}")
+    for text in s.get("warnings") or []:
+        print(f"  {'warning':<21} {text}")
     if files:
         print(f"  {'wrote':<21} " + ", ".join(str(p) for p in files.values()))
+
+
+def failure_numbers(result: Any) -> str:
+    """The numbers of an unsuccessful result whose meaning is known, with their units.
+
+    Newton iterations, the last scaled Newton residual (dimensionless, with the
+    tolerance) where Newton ran, the thermal fixed-point residual [K] of a thermal
+    solve, and the wall time [s]. Nothing else is printed: the result's own message
+    carries the rest.
+    """
+    parts = []
+    its = int(getattr(result, "newton_iterations", 0) or 0)
+    if its:
+        parts.append(f"{its} Newton iteration{'' if its == 1 else 's'}")
+    history = list(getattr(result, "history", []) or [])
+    if history and result.status != "no_solution":
+        last = float(history[-1])
+        tol = result.scene.solver.tolerance
+        thermal = result.scene.model.thermal == "patch"
+        what = ("last scaled Newton residual of the isothermal solve" if thermal
+                else "last scaled Newton residual")
+        shown = f"{last:.3g}" if math.isfinite(last) else "not finite"
+        parts.append(f"{what} {shown} (dimensionless; tolerance {tol:.1g})")
+    thermal_residual = (getattr(result, "quantities", {}) or {}).get("thermal_residual")
+    if thermal_residual is not None and math.isfinite(float(thermal_residual)):
+        parts.append(f"thermal residual |G(T) - T| = {float(thermal_residual):.3g} K")
+    wall = float(getattr(result, "wall_time_s", 0.0) or 0.0)
+    parts.append(f"{wall:.3g} s")
+    return "; ".join(parts)
 
 
 def _report_status(result: Any) -> int:
     """Exit code of a result, with a one-line explanation on stderr when unsuccessful."""
     if result.success:
         return EXIT_OK
-    history = list(getattr(result, "history", []) or [])
-    residual = f", last scaled residual {history[-1]:.3e}" if history else ""
     what = "no solution exists" if result.status == "no_solution" else "no converged solution"
-    print(f"bearing-fem: {what} (status {result.status}{residual}): {result.message}",
-          file=sys.stderr)
+    print(f"bearing-fem: {what} (status {result.status}; {failure_numbers(result)}): "
+          f"{result.message}", file=sys.stderr)
     return EXIT_NO_SOLUTION
-
-
-# ---------------------------------------------------------------------------------------
-# plotting (plot.py when available, else a minimal matplotlib line plot)
-# ---------------------------------------------------------------------------------------
-def _fallback_plot(source: Any, out_png: Path) -> Path:
-    """Pressure and film along x (the centre line y ~ 0 of a point contact), matplotlib Agg."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-
-    if isinstance(source, (str, Path)):
-        from .io import read_result
-
-        data = read_result(source)
-        x, y, p, h = data["x"], data["y"], data["pressure_Pa"], data["film_m"]
-        title = data["scene"].get("title", "") + f" ({data['status']})"
-    else:
-        x, y, p, h = source.x, source.y, source.pressure, source.film
-        title = f"{getattr(source.scene, 'title', '')} ({source.status})"
-    x, p, h = np.asarray(x, float), np.asarray(p, float), np.asarray(h, float)
-    if y is not None:  # point contact: take the row of nodes nearest to y = 0
-        y = np.asarray(y, float)
-        if x.ndim == 1 and y.ndim == 1 and x.size * y.size == p.size and x.size != p.size:
-            row = int(np.argmin(np.abs(y)))
-            p, h = p.reshape(y.size, x.size)[row], h.reshape(y.size, x.size)[row]
-        else:
-            x, y, p, h = x.ravel(), y.ravel(), p.ravel(), h.ravel()
-            sel = np.isclose(y, y[np.argmin(np.abs(y))])
-            order = np.argsort(x[sel])
-            x, p, h = x[sel][order], p[sel][order], h[sel][order]
-    fig, ax1 = plt.subplots(figsize=(7, 4))
-    ax1.plot(x * 1e3, p / 1e6, color="C0")
-    ax1.set_xlabel("x [mm]")
-    ax1.set_ylabel("pressure [MPa]", color="C0")
-    ax2 = ax1.twinx()
-    ax2.plot(x * 1e3, h * 1e6, color="C1")
-    ax2.set_ylabel("film [um]", color="C1")
-    hc = float(np.interp(0.0, x, h)) if x.size > 1 else float(h[0])
-    ax2.set_ylim(0.0, max(4.0 * hc, 1e-12) * 1e6)
-    ax1.set_title(title.strip())
-    fig.tight_layout()
-    out_png.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out_png, dpi=120)
-    plt.close(fig)
-    return out_png
-
-
-def _plot(source: Any, out_png: Path, kind: str | None) -> Path:
-    """Plot with :func:`bearing_fem.plot.plot_result`; fall back to a matplotlib line plot."""
-    if kind is None:
-        is_line = (getattr(source, "y", None) is None) if not isinstance(source, (str, Path)) \
-            else _h5_kind(source) == "line"
-        kind = "line" if is_line else "map"
-    try:
-        from .plot import plot_result
-
-        plot_result(source, out_png, kind=kind)
-        if not Path(out_png).is_file():
-            raise RuntimeError(f"plot_result did not write {out_png}")
-        return Path(out_png)
-    except Exception as exc:  # plot.py missing or failing (e.g. no rendering libraries)
-        log.warning("bearing_fem.plot unavailable or failed (%s: %s); writing a "
-                    "matplotlib line plot instead", type(exc).__name__, exc)
-        return _fallback_plot(source, Path(out_png))
-
-
-def _h5_kind(path: str | Path) -> str:
-    import h5py
-
-    with h5py.File(path, "r") as f:
-        return str(f.attrs["kind"])
 
 
 # ---------------------------------------------------------------------------------------
 # subcommands
 # ---------------------------------------------------------------------------------------
+def _out_dir(value: str, option: str = "--out") -> Path:
+    """An output path from the command line: an empty string is refused (it would
+    silently mean the current folder)."""
+    if not value or not value.strip():
+        raise _InputError(f"{option} must name a directory or file, got an empty string "
+                          "(use '.' for the current folder)")
+    return Path(value)
+
+
 def _export(result: Any, outdir: Path) -> dict[str, Path]:
     from .io import export
 
@@ -170,23 +147,58 @@ def _export(result: Any, outdir: Path) -> dict[str, Path]:
                           f"{exc.strerror or exc}") from None
 
 
-def _solve_and_write(scene: Any, outdir: Path, png: Path | None = None) -> int:
+def _solve_and_write(scene: Any, outdir: Path, png: Path | None, quiet: bool) -> int:
     from .contacts.dispatch import solve
 
     log.info("solving %r", getattr(scene, "title", ""))
     result = solve(scene)
     files = _export(result, outdir)
     if png is not None:
-        files["png"] = _plot(result, png, None)
-    _print_summary(result, files)
+        from .plot import plot_result
+
+        files["png"] = plot_result(result, png)
+    if not quiet:
+        _print_summary(result, files)
     return _report_status(result)
+
+
+def _solve_series_and_write(scene: Any, outdir: Path, quiet: bool) -> int:
+    """A [transient] scene: the squeeze series, its files and a short summary."""
+    from .contacts.dispatch import solve_series
+    from .io import export_series
+
+    series = solve_series(scene)
+    try:
+        files = export_series(series, outdir)
+    except OSError as exc:
+        raise _InputError(f"cannot write results to {str(outdir)!r}: "
+                          f"{exc.strerror or exc}") from None
+    if not quiet:
+        s = series.summary()
+        print(getattr(scene, "title", "") or "squeeze series")
+        print(f"  {'status':<21} {s['status']} ({'success' if s['success'] else 'no success'})")
+        pm = [v for v in s["p_max"] if v is not None]
+        if pm:
+            print(f"  {'p_max over time':<21} {_fmt(min(pm), 'Pa')} .. {_fmt(max(pm), 'Pa')}")
+        print(f"  {'instants':<21} {s['instants']} ({s['scheme']})")
+        print(f"  {'wall time':<21} {_fmt(s['wall_time_s'], 's')}")
+        print(f"  {'message':<21} {s['message']}")
+        print(f"  {'wrote':<21} " + ", ".join(str(p) for p in files.values()))
+    if series.success:
+        return EXIT_OK
+    print(f"bearing-fem: no converged series (status {series.status}): {series.message}",
+          file=sys.stderr)
+    return EXIT_NO_SOLUTION
 
 
 def _cmd_solve(args: argparse.Namespace) -> int:
     from .scene import Scene
 
+    out = _out_dir(args.out)
     scene = Scene.from_toml(args.scene)
-    return _solve_and_write(scene, Path(args.out))
+    if scene.transient is not None:
+        return _solve_series_and_write(scene, out, args.quiet)
+    return _solve_and_write(scene, out, None, args.quiet)
 
 
 def _cmd_demo(args: argparse.Namespace) -> int:
@@ -194,11 +206,20 @@ def _cmd_demo(args: argparse.Namespace) -> int:
 
     from .scene import load_embedded
 
+    out = _out_dir(args.out)
     scene = load_embedded("roller")
     if args.nodes is not None:
         scene = replace(scene, mesh=replace(scene.mesh, nodes=args.nodes))
-    out = Path(args.out)
-    return _solve_and_write(scene, out, png=out / DEMO_PNG)
+    return _solve_and_write(scene, out, out / DEMO_PNG, args.quiet)
+
+
+def _h5_attrs(path: str | Path) -> dict[str, Any]:
+    import h5py
+
+    with h5py.File(path, "r") as f:
+        return {"kind": str(f.attrs["kind"]), "status": str(f.attrs.get("status", "")),
+                "success": bool(f.attrs.get("success", True)),
+                "message": str(f.attrs.get("message", ""))}
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
@@ -209,12 +230,26 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         raise _InputError(f"no result file {str(path)!r} (give a result.h5 written by "
                           "'bearing-fem solve')")
     try:
-        _h5_kind(path)
+        attrs = _h5_attrs(path)
     except (OSError, KeyError) as exc:
         raise _InputError(f"{str(path)!r} is not a bearing_fem result.h5: {exc}") from None
-    out = Path(args.out) if args.out else path.with_suffix(".png")
-    written = _plot(path, out, args.kind)
-    print(f"wrote {written}")
+    if attrs["kind"] == "line" and args.kind in ("map", "surface"):
+        raise _InputError(f"--kind {args.kind} applies to point contacts only; {str(path)!r} "
+                          "holds a line-contact result (use --kind line, or leave --kind out)")
+    out = _out_dir(args.out) if args.out is not None else path.with_suffix(".png")
+    from .plot import plot_result
+
+    written = plot_result(path, out, kind=args.kind)
+    if not args.quiet:
+        print(f"wrote {written}")
+    if not attrs["success"]:
+        what = ("no solution exists" if attrs["status"] == "no_solution"
+                else "no converged solution")
+        print(f"bearing-fem: {what} (status {attrs['status']}): the figure {str(written)!r} "
+              "is stamped with the status and shows "
+              + ("the reduced pressure q, not a pressure" if attrs["status"] == "no_solution"
+                 else "the last iterate, not a solution"), file=sys.stderr)
+        return EXIT_NO_SOLUTION
     return EXIT_OK
 
 
@@ -266,25 +301,86 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
 
 
 # ---------------------------------------------------------------------------------------
+_EPILOG = """\
+Run 'bearing-fem COMMAND --help' for the options of one command.
+options -v, -vv and -q may stand anywhere on the line (before or after COMMAND).
+
+exit codes:
+  0    solved (status converged or linear), or a figure of a solved result written
+  2    invalid input: the one-line message names the field, its value and its unit;
+       nothing is written
+  3    no converged solution, or no solution exists: the files (or the figure) are
+       still written and carry the status; the message gives the status, the
+       iterations, the last residual and the time
+  130  interrupted (Ctrl-C); no half-written file is left behind
+
+Scene files are TOML in SI units (m, Pa, Pa s, m/s, N; line contacts per metre of
+length). The scene format and every key are described in the package documentation
+(docs/scenes.md and docs/cli.md in the source repository).
+"""
+
+#: Verbosity flags accepted anywhere on the command line (see :func:`split_verbosity`).
+_VERBOSITY = re.compile(r"^-(v+|q+)$")
+
+
+def split_verbosity(argv: Sequence[str]) -> tuple[list[str], int]:
+    """Take the verbosity flags out of a command line, wherever they stand.
+
+    ``-v``/``--verbose`` adds one, ``-vv`` two, ``-q``/``--quiet`` subtracts one; a
+    ``--`` ends the options (later tokens are kept as they are).
+
+    Parameters
+    ----------
+    argv : sequence of str
+        Arguments without the program name.
+
+    Returns
+    -------
+    (list of str, int)
+        The remaining arguments and the verbosity (0 by default).
+    """
+    rest: list[str] = []
+    level = 0
+    tokens = list(argv)
+    for i, token in enumerate(tokens):
+        if token == "--":
+            rest.extend(tokens[i:])
+            break
+        match = _VERBOSITY.match(token)
+        if token == "--verbose":
+            level += 1
+        elif token == "--quiet":
+            level -= 1
+        elif match:
+            level += len(token) - 1 if token[1] == "v" else -(len(token) - 1)
+        else:
+            rest.append(token)
+    return rest, level
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``bearing-fem`` (subcommands solve, demo, plot)."""
-    from . import __version__
+    from .version import VERSION as package_version
 
     parser = argparse.ArgumentParser(
         prog="bearing-fem",
         description="Finite-element EHL solver for rolling-bearing contacts: film, "
                     "pressure, friction and heat of line and point contacts.",
-        epilog="Exit codes: 0 solved; 2 invalid input; 3 no converged solution or no "
-               "solution exists (files are still written). Docs: docs/cli.md.")
-    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+        epilog=_EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"%(prog)s {package_version}")
     parser.add_argument("-v", "--verbose", action="count", default=0,
-                        help="log progress to stderr (-v info, -vv debug)")
+                        help="log progress to stderr (-v info, -vv debug); anywhere on "
+                             "the line")
+    parser.add_argument("-q", "--quiet", action="count", default=0,
+                        help="print errors only (no summary); anywhere on the line")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
     p = sub.add_parser("solve", help="solve a TOML scene and write summary.json, "
                                      "result.h5 and fields.vtu",
-                       description="Solve a scene file (docs/scenes.md) and write "
-                                   "DIR/summary.json, DIR/result.h5 and DIR/fields.vtu.")
+                       description="Solve a scene file (TOML, SI units) and write "
+                                   "DIR/summary.json, DIR/result.h5 and DIR/fields.vtu. "
+                                   "Exit code 0 solved, 2 invalid input, 3 no converged "
+                                   "solution or no solution (files still written).")
     p.add_argument("scene", metavar="SCENE.toml", help="scene file")
     p.add_argument("--out", "-o", metavar="DIR", required=True, help="output directory")
     p.set_defaults(func=_cmd_solve)
@@ -302,13 +398,14 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("plot", help="plot a result.h5",
                        description="Plot a result.h5 written by 'bearing-fem solve' or "
-                                   "'bearing-fem demo'.")
+                                   "'bearing-fem demo'. A result without success is still "
+                                   "drawn, stamped with its status, and the exit code is 3.")
     p.add_argument("result", metavar="RESULT_H5", help="result.h5 (or its directory)")
     p.add_argument("--out", "-o", metavar="PNG", default=None,
                    help="figure file (default: RESULT_H5 with the suffix .png)")
     p.add_argument("--kind", choices=("map", "surface", "line"), default=None,
                    help="figure kind (default: line for line contacts, map for point "
-                        "contacts)")
+                        "contacts; map and surface apply to point contacts only)")
     p.set_defaults(func=_cmd_plot)
 
     p = sub.add_parser("bearing", help="solve a bearing file: EHL at every rolling element",
@@ -323,6 +420,49 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+class _StderrHandler(logging.StreamHandler):
+    """Log handler writing to whatever ``sys.stderr`` is at the time of each record."""
+
+    def __init__(self) -> None:
+        super().__init__(sys.stderr)
+
+    @property
+    def stream(self):  # type: ignore[override]
+        return sys.stderr
+
+    @stream.setter
+    def stream(self, value) -> None:
+        pass
+
+
+@contextlib.contextmanager
+def _logging_to_stderr(verbosity: int):
+    """Log the package's records to stderr at the level of ``verbosity`` for the duration
+    of one command; the logger's previous handlers, level and propagation come back
+    afterwards (``main`` may be called in-process, e.g. by tests or the fuzz study)."""
+    level = {-1: logging.ERROR, 0: logging.WARNING, 1: logging.INFO}.get(
+        max(min(verbosity, 2), -1), logging.DEBUG)
+    logger = logging.getLogger("bearing_fem")
+    saved = (logger.level, logger.propagate)
+    handler = _StderrHandler()
+    handler.setFormatter(logging.Formatter("%(levelname)s %(name)s: %(message)s"))
+    logger.addHandler(handler)
+    logger.setLevel(level)
+    logger.propagate = False
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(saved[0])
+        logger.propagate = saved[1]
+
+
+def _log_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """``warnings.showwarning`` of the command line: to the log (info), never raw."""
+    log.info("%s: %s", category.__name__, message)
+    log.debug("  (raised at %s:%s)", filename, lineno)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of ``bearing-fem``; returns the exit code (see module docstring).
 
@@ -331,16 +471,31 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv : sequence of str, optional
         Arguments without the program name (default: ``sys.argv[1:]``).
     """
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("default")
+            warnings.showwarning = _log_warning
+            return _main(sys.argv[1:] if argv is None else argv)
+    except KeyboardInterrupt:
+        print("bearing-fem: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _main(argv: Sequence[str]) -> int:
+    rest, verbosity = split_verbosity(argv)
     parser = build_parser()
     try:
-        args = parser.parse_args(argv)
+        args = parser.parse_args(rest)
     except SystemExit as exc:  # --help, --version (0) or a usage error (2)
         return int(exc.code or 0)
-    level = {0: logging.WARNING, 1: logging.INFO}.get(args.verbose, logging.DEBUG)
-    logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s",
-                        stream=sys.stderr)
-    logging.getLogger("bearing_fem").setLevel(level)
+    verbosity += args.verbose - args.quiet  # (split_verbosity took them all; kept for API)
+    args.quiet = verbosity < 0
+    with _logging_to_stderr(verbosity):
+        return _run(args)
 
+
+def _run(args: argparse.Namespace) -> int:
+    """Run a parsed command; turn input errors into one line and exit code 2."""
     from .errors import SceneError
 
     try:

@@ -3,7 +3,10 @@
 I/O only, no physics. Every file is written under a temporary name in the output
 directory and moved into place with :func:`os.replace` once all files of an export are
 complete, so a crash or a full disk never leaves a half-written ``summary.json`` next to
-an older ``result.h5``. h5py and meshio are imported inside the functions that use them.
+an older ``result.h5``. A process killed in between (SIGKILL, power cut) can leave hidden
+temporary files; the next export into the same directory removes those of processes that
+no longer run (:func:`clean_stale_temporaries`). h5py and meshio are imported inside the
+functions that use them.
 
 Files written by :func:`export`
 -------------------------------
@@ -27,6 +30,7 @@ Files written by :func:`export`
 from __future__ import annotations
 
 import json
+import logging
 import math
 import os
 import re
@@ -37,7 +41,9 @@ from typing import Any, Mapping
 import numpy as np
 
 __all__ = ["export", "export_series", "read_result", "scene_to_toml", "write_summary", "write_h5",
-           "write_vtu", "FILES"]
+           "write_vtu", "clean_stale_temporaries", "FILES"]
+
+log = logging.getLogger(__name__)
 
 #: File names written by :func:`export`, keyed as in its returned dict.
 FILES = {"summary": "summary.json", "h5": "result.h5", "vtu": "fields.vtu"}
@@ -55,7 +61,7 @@ def field_unit(name: str) -> str:
     Parameters
     ----------
     name : str
-        Field name; by convention it ends with its unit (STYLE.md).
+        Field name; by convention it ends with its unit (e.g. ``film_m``, ``viscosity_Pa_s``).
 
     Returns
     -------
@@ -199,6 +205,79 @@ def _grid(result: Any) -> tuple[np.ndarray, np.ndarray | None]:
     return pts, index
 
 
+#: Name of a temporary file of :class:`_Staging`: ``.<final name>.<pid>.<12 hex>.tmp<suffix>``.
+_TEMP_NAME = re.compile(r"^\.(?P<final>.+)\.(?P<pid>\d+)\.[0-9a-f]{12}\.tmp(?P<suffix>\.[^.]*)?$")
+#: Age after which a temporary file of a still-running process id counts as stale [s]
+#: (the process id may have been reused by an unrelated process).
+STALE_TEMP_AGE = 24 * 3600.0
+
+
+def _process_alive(pid: int) -> bool:
+    if pid <= 0:
+        return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OSError):
+        return True  # exists (another user's process), or cannot tell: keep its files
+    return True
+
+
+def clean_stale_temporaries(outdir: str | Path, max_age: float = STALE_TEMP_AGE) -> list[Path]:
+    """Remove temporary files that an interrupted export left in ``outdir``.
+
+    An export killed between writing its temporary files and moving them into place
+    (e.g. by SIGKILL or a power cut) leaves hidden files named
+    ``.<final name>.<pid>.<random>.tmp<suffix>``. A file of that exact form is removed
+    when its process no longer runs, or when it is older than ``max_age`` (the process
+    id may have been reused). Files of a running export (this or another process) and
+    every other file are left alone. Called by :func:`export` and :func:`export_series`.
+
+    Parameters
+    ----------
+    outdir : str or Path
+        Output directory (nothing happens if it does not exist).
+    max_age : float
+        Age [s] beyond which a temporary file counts as stale even if its process id runs.
+
+    Returns
+    -------
+    list of Path
+        The removed files.
+    """
+    import time
+
+    outdir = Path(outdir)
+    removed: list[Path] = []
+    try:
+        entries = list(outdir.iterdir())
+    except OSError:
+        return removed
+    now = time.time()
+    for path in entries:
+        m = _TEMP_NAME.match(path.name)
+        if m is None or (m.group("suffix") or "") != Path(m.group("final")).suffix:
+            continue
+        try:
+            st = path.lstat()
+        except OSError:
+            continue
+        if not path.is_file() or path.is_symlink():
+            continue
+        if _process_alive(int(m.group("pid"))) and now - st.st_mtime < max_age:
+            continue
+        try:
+            path.unlink()
+            removed.append(path)
+        except OSError:
+            continue
+    if removed:
+        log.info("removed %d temporary file(s) of an interrupted export in %s: %s",
+                 len(removed), outdir, ", ".join(p.name for p in removed))
+    return removed
+
+
 class _Staging:
     """Temporary files in ``outdir`` moved into place together by :meth:`commit`."""
 
@@ -247,7 +326,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
     """
     import h5py
 
-    from . import __version__
+    from .version import VERSION as package_version
 
     path = Path(path)
     summary = _json_safe(result.summary())
@@ -256,7 +335,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
         f.attrs["status"] = str(result.status)
         f.attrs["success"] = bool(result.success)
         f.attrs["message"] = str(result.message)
-        f.attrs["version"] = __version__
+        f.attrs["version"] = package_version
         f.attrs["title"] = str(getattr(result.scene, "title", "") or "")
         f.attrs["h0"] = float(result.h0)
         f.attrs["scene"] = scene_to_toml(result.scene)
@@ -323,6 +402,7 @@ def export(result: Any, outdir: str | Path) -> dict[str, Path]:
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
+    clean_stale_temporaries(outdir)
     stage = _Staging(outdir)
     try:
         write_summary(result, stage.temp(FILES["summary"]))
@@ -376,27 +456,32 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     Returns
     -------
     dict[str, Path]
-        ``{"pvd": ..., "xdmf": ..., "h5": ...}``.
-
-    Raises
-    ------
-    ValueError
-        If the series has no solved step.
+        ``{"pvd": ..., "xdmf": ..., "h5": ..., "summary": .../summary.json}`` (the series'
+        :meth:`summary`); a series with no solved instant writes its summary (with the
+        status) alone: ``{"summary": ...}``.
     """
     import h5py
     import meshio
 
-    if not series.results:
-        raise ValueError(f"nothing to export: the series has no solved step (status "
-                         f"{getattr(series, 'status', '?')!r}: {getattr(series, 'message', '')})")
-    if name is None:
-        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
+    clean_stale_temporaries(outdir)
+    summary_text = json.dumps(_json_safe(series.summary()), indent=2, allow_nan=False) + "\n"
+    if not series.results:  # nothing solved: the summary (with the status) alone
+        stage = _Staging(outdir)
+        try:
+            stage.temp(FILES["summary"]).write_text(summary_text, encoding="utf-8")
+            stage.commit()
+        except BaseException:
+            stage.discard()
+            raise
+        return {"summary": outdir / FILES["summary"]}
+    if name is None:
+        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
     points, quads = _series_mesh(series.results[0])
     stage = _Staging(outdir)
     final = {"pvd": outdir / f"{name}.pvd", "xdmf": outdir / f"{name}.xdmf",
-             "h5": outdir / f"{name}.h5"}
+             "h5": outdir / f"{name}.h5", "summary": outdir / FILES["summary"]}
     try:
         entries, grids = [], []
         h5name = final["h5"].name
@@ -425,6 +510,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
                     '<Geometry GeometryType="XYZ">'
                     + _xdmf_item(h5name, "/points", points.shape, "float") + "</Geometry>"
                     + "".join(attrs) + "</Grid>")
+        stage.temp(final["summary"].name).write_text(summary_text, encoding="utf-8")
         stage.temp(final["pvd"].name).write_text(
             '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
             "  <Collection>\n" + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n",

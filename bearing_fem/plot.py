@@ -1,17 +1,27 @@
-"""Figures of results, off-screen: pyvista for point-contact maps, matplotlib otherwise.
+"""Figures of results, off-screen: matplotlib maps and line plots, pyvista surfaces.
 
-``plot_result(result_or_path, out_png, kind=...)``:
+``plot_result(result_or_path, out_png, kind=None)``:
 
-* point contacts, ``kind="map"``: 2D colour map of the pressure [Pa] with film-thickness
-  [m] contour lines; ``kind="surface"``: the pressure as a 3D warped surface;
-  ``kind="line"``: pressure and film along the centre line y = 0 (matplotlib);
-* line contacts: pressure and film versus x/b (matplotlib, any ``kind``).
+* point contacts, ``kind="map"`` (default): 2D colour map of the pressure [MPa] zoomed on
+  the contact, with labelled film-thickness contours [um] whose levels come from the
+  film inside the Hertz contact (from its minimum up to the central film, so the
+  horseshoe shows), the Hertz ellipse dashed, equal aspect and a colour bar beside the
+  axes; ``kind="surface"``: the pressure as a 3D warped surface; ``kind="line"``:
+  pressure and film along the centre line y = 0;
+* line contacts: pressure and film versus x/b, zoomed on the contact (``kind="line"``;
+  ``map`` and ``surface`` are refused with a ValueError).
 
-Headless rendering: pyvista (VTK) needs an off-screen OpenGL context. Before importing
-pyvista we probe the system libraries with ctypes: libEGL -> set
+A result without success is still drawn, but never dressed up as a solution: its title
+starts with "NOT A SOLUTION (status ...)" and a red stamp crosses the axes; the field of
+a ``no_solution`` result is the isoviscous reduced pressure q (the solver's message says
+so), labelled "reduced pressure q", never "pressure".
+
+Maps are drawn by matplotlib (labelled contour lines and a colour bar laid out beside
+the axes are its strength). The 3D surface uses pyvista (VTK) off-screen where it works:
+before importing pyvista the system libraries are probed with ctypes: libEGL -> set
 ``VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow``; else libOSMesa ->
 ``vtkOSOpenGLRenderWindow``; else (or if pyvista/VTK is missing or rendering fails) the
-figure is drawn by matplotlib (Agg), so a figure is always produced. The environment
+surface is drawn by matplotlib (Agg), so a figure is always produced. The environment
 variable ``BEARING_FEM_PLOT_BACKEND=matplotlib`` forces the fallback. pyvista, h5py and
 matplotlib are imported inside the functions only.
 """
@@ -39,10 +49,25 @@ class PlotData:
     kind: str                 # "point" | "line"
     x: np.ndarray             # m
     y: np.ndarray | None      # m
-    pressure: np.ndarray      # Pa
+    pressure: np.ndarray      # Pa (the reduced pressure q for status no_solution)
     film: np.ndarray          # m
     title: str = ""
     x_unit: float | None = None   # Hertz half-width b [m] for line plots, if known
+    status: str = "converged"
+    success: bool = True
+    semi_axes: tuple[float, float] | None = None   # Hertz a_x, a_y [m] (point), if known
+
+
+def _hertz_of(scene: Any) -> tuple[float | None, tuple[float, float] | None]:
+    """(b, (a_x, a_y)) of a scene: the Hertz half-width of a line contact or the semi-axes
+    of a point contact, None where Hertz theory does not apply (rigid, prescribed gap)."""
+    hertz = None if scene is None else scene.hertz_scales()
+    if hertz is None:
+        return None, None
+    widths = [w for _, w, _, _ in hertz["widths"]]
+    if len(widths) == 1:
+        return widths[0], None
+    return None, (widths[0], widths[1])
 
 
 def _decode(v: Any) -> str:
@@ -76,8 +101,12 @@ def _from_h5(path: Path) -> PlotData:
         h = find("film_m", "film")
         kind = _decode(f.attrs.get("kind", "point" if y is not None and y.size > 1 else "line"))
         title = _decode(f.attrs.get("title", ""))
+        status = _decode(f.attrs.get("status", "converged"))
+        success = bool(f.attrs.get("success", True))
+        scene_toml = _decode(f.attrs["scene"]) if "scene" in f.attrs else None
     if x is None or p is None or h is None:
         raise ValueError(f"{str(path)!r} lacks the datasets x, pressure_Pa and film_m")
+    b, axes = _hertz_of(_scene_or_none(scene_toml))
     kind = "point" if "point" in kind else "line"
     if kind == "point":
         if y is None:
@@ -86,7 +115,23 @@ def _from_h5(path: Path) -> PlotData:
         if p.shape != shape:
             p = p.reshape(shape) if p.size == x.size * y.size else p.reshape(shape[::-1]).T
             h = h.reshape(p.shape)
-    return PlotData(kind, x.ravel(), None if y is None else y.ravel(), p, h, title)
+    return PlotData(kind, x.ravel(), None if y is None else y.ravel(), p, h, title,
+                    x_unit=b, status=status, success=success, semi_axes=axes)
+
+
+def _scene_or_none(text: str | None) -> Any:
+    """The scene stored in a result file, or None if absent or unreadable (the figure
+    then goes without Hertz marks)."""
+    if not text:
+        return None
+    from .errors import SceneError
+    from .scene import Scene
+
+    try:
+        return Scene.from_toml_string(text, source="the scene of the result file")
+    except (SceneError, ValueError) as exc:
+        log.info("figure without Hertz marks: %s", exc)
+        return None
 
 
 def _from_result(res) -> PlotData:
@@ -94,18 +139,15 @@ def _from_result(res) -> PlotData:
     kind = scene.contact.kind if scene is not None else ("point" if res.y is not None
                                                          else "line")
     title = getattr(scene, "title", "") or ""
-    x_unit = None
-    if kind == "line" and scene is not None and scene.load.force is not None \
-            and scene.e_prime is not None:
-        from .units import hertz_line
-
-        x_unit = hertz_line(scene.load.force, scene.contact.rx, scene.e_prime)[0]
+    b, axes = _hertz_of(scene)
     p, h = np.asarray(res.pressure, float), np.asarray(res.film, float)
     if kind == "point":
         shape = (np.size(res.y), np.size(res.x))
         p, h = p.reshape(shape), h.reshape(shape)
     return PlotData(kind, np.asarray(res.x, float),
-                    None if res.y is None else np.asarray(res.y, float), p, h, title, x_unit)
+                    None if res.y is None else np.asarray(res.y, float), p, h, title, b,
+                    status=str(getattr(res, "status", "converged")),
+                    success=bool(getattr(res, "success", True)), semi_axes=axes)
 
 
 def load_plot_data(result_or_path) -> PlotData:
@@ -146,7 +188,7 @@ def offscreen_backend() -> str | None:
     return None
 
 
-def plot_result(result_or_path, out_png: str | os.PathLike, kind: str = "map", *,
+def plot_result(result_or_path, out_png: str | os.PathLike, kind: str | None = None, *,
                 window_size: tuple[int, int] = (1000, 750)) -> Path:
     """Draw a result to a PNG file, off-screen.
 
@@ -154,111 +196,239 @@ def plot_result(result_or_path, out_png: str | os.PathLike, kind: str = "map", *
     ----------
     result_or_path : Result or path
         A solve result, or a ``result.h5`` written by :mod:`bearing_fem.io` (datasets
-        ``x``, ``y`` [m], ``pressure_Pa``, ``film_m``, attribute ``kind``), or its directory.
+        ``x``, ``y`` [m], ``pressure_Pa``, ``film_m``, attributes ``kind``, ``status``,
+        ``success``, ``scene``), or its directory.
     out_png : path
         Output file [PNG].
-    kind : {"map", "surface", "line"}
-        Point contacts: colour map with film contours, 3D warped pressure surface, or the
-        centre line y = 0. Line contacts always give the line plot.
+    kind : {"map", "surface", "line"} or None
+        Point contacts: colour map with film contours (default), 3D warped pressure
+        surface, or the centre line y = 0. Line contacts: ``"line"`` (default) only.
     window_size : (int, int)
-        Pixels.
+        Pixels of the pyvista surface.
 
     Returns
     -------
     Path
         The written PNG.
+
+    Raises
+    ------
+    ValueError
+        An unknown ``kind``, or ``"map"``/``"surface"`` for a line contact.
     """
-    if kind not in KINDS:
+    if kind is not None and kind not in KINDS:
         raise ValueError(f"kind must be one of {', '.join(map(repr, KINDS))}, got {kind!r}")
     data = load_plot_data(result_or_path)
+    if kind is None:
+        kind = "line" if data.kind == "line" else "map"
+    if data.kind == "line" and kind != "line":
+        raise ValueError(f"kind {kind!r} applies to point contacts only; a line-contact "
+                         "result has the line plot (kind='line')")
     out = Path(out_png)
     out.parent.mkdir(parents=True, exist_ok=True)
-    if data.kind == "line" or kind == "line":
+    if kind == "line":
         _matplotlib_line(data, out)
-        return out
-    backend = offscreen_backend()
-    if backend is not None:
-        try:
-            _pyvista_point(data, out, kind, window_size)
-            if out.is_file() and out.stat().st_size > 0:
-                return out
-        except Exception as exc:  # no GL context, missing pyvista, ...: fall back
-            log.warning("pyvista rendering failed (%s); using matplotlib", exc)
-    _matplotlib_point(data, out, kind)
+    elif kind == "map":
+        _matplotlib_map(data, out)
+    else:
+        if offscreen_backend() is not None:
+            try:
+                _pyvista_surface(data, out, window_size)
+                if out.is_file() and out.stat().st_size > 0:
+                    return out
+            except Exception as exc:  # no GL context, missing pyvista, ...: fall back
+                log.warning("pyvista rendering failed (%s); using matplotlib", exc)
+        _matplotlib_surface(data, out)
     return out
 
 
-def _pyvista_point(d: PlotData, out: Path, kind: str, window_size) -> None:
-    import pyvista as pv
+# ---------------------------------------------------------------------------------------
+# what a figure says: status stamp, field label, zoom window, contour levels
+# ---------------------------------------------------------------------------------------
+#: Zoom of a point map around the Hertz contact [semi-axes]: x in [-2.5, 1.6] a_x (the
+#: inlet meniscus and the outlet constriction), y in +-1.6 a_y.
+MAP_WINDOW = ((-2.5, 1.6), (-1.6, 1.6))
+#: Zoom of a line plot around the Hertz contact [half-widths b]: the inlet build-up, the
+#: pressure spike and the outlet.
+LINE_WINDOW = (-3.0, 1.8)
+#: Film contour levels of a point map, as fractions of [h_min, h_central] taken inside
+#: the Hertz contact: the horseshoe-shaped constriction and its sides.
+MAP_LEVELS = (0.1, 0.25, 0.4, 0.55, 0.7, 0.85, 0.95)
+#: Without Hertz scales (rigid scenes, a prescribed gap) a figure is zoomed on the nodes
+#: where |pressure| exceeds this fraction of its maximum, with a margin of 25%.
+PRESSURE_FRACTION = 0.05
 
-    x_mm, y_mm = d.x * 1e3, d.y * 1e3
-    X, Y = np.meshgrid(x_mm, y_mm)
-    p_mpa = d.pressure / 1e6
-    span = max(float(np.ptp(x_mm)), float(np.ptp(y_mm)))
-    zscale = 0.0
-    if kind == "surface":
-        zscale = 0.4 * span / max(float(np.max(np.abs(p_mpa))), 1e-300)
-    grid = pv.StructuredGrid(X, Y, p_mpa * zscale)
-    grid["pressure_MPa"] = p_mpa.ravel(order="F")
-    grid["film_um"] = (d.film * 1e6).ravel(order="F")
-    plotter = pv.Plotter(off_screen=True, window_size=list(window_size))
-    plotter.set_background("white")
-    plotter.add_mesh(grid, scalars="pressure_MPa", cmap="viridis",
-                     scalar_bar_args={"title": "pressure [MPa]", "color": "black"})
-    if kind == "map":
-        h = d.film * 1e6
-        lo, hi = float(np.min(h)), float(np.percentile(h, 60))
-        if hi > lo:
-            levels = np.linspace(lo, hi, 8)[1:]
-            cont = grid.contour(isosurfaces=list(levels), scalars="film_um")
-            if cont.n_points:
-                cont.points[:, 2] += 1e-3 * span
-                plotter.add_mesh(cont, color="white", line_width=2)
-        plotter.view_xy()
-        plotter.add_text("pressure, film contours [um]" + (f" - {d.title}" if d.title else ""),
-                         font_size=10, color="black")
+
+def field_label(d: PlotData) -> str:
+    """Label of the drawn pressure field: the reduced pressure q for ``no_solution``."""
+    if d.status == "no_solution":
+        return "reduced pressure q [MPa] (no solution: not a pressure)"
+    return "pressure [MPa]" if d.success else "pressure of the last iterate [MPa]"
+
+
+def figure_title(d: PlotData, what: str) -> str:
+    """Title of a figure: ``what``, the scene title, and a status stamp unless solved."""
+    text = what + (f" - {d.title}" if d.title else "")
+    if not d.success:
+        text = f"NOT A SOLUTION (status {d.status})\n" + text
+    return text
+
+
+def _stamp(fig: Any, d: PlotData) -> None:
+    """A red stamp across an unsuccessful result's figure."""
+    if d.success:
+        return
+    fig.text(0.5, 0.5, f"NOT A SOLUTION\nstatus: {d.status}", color="red", alpha=0.35,
+             fontsize=28, fontweight="bold", ha="center", va="center", rotation=20)
+
+
+def _window(coord: np.ndarray, field: np.ndarray, scale: float | None,
+            limits: tuple[float, float]) -> tuple[float, float]:
+    """Zoom interval [m] of one axis: ``limits`` x ``scale`` around 0, or where the field
+    exceeds :data:`PRESSURE_FRACTION` of its maximum; clipped to the nodes."""
+    lo, hi = float(np.min(coord)), float(np.max(coord))
+    if scale is not None and scale > 0.0:
+        a, b = limits[0] * scale, limits[1] * scale
     else:
-        plotter.view_isometric()
-        plotter.add_text("pressure surface" + (f" - {d.title}" if d.title else ""),
-                         font_size=10, color="black")
-    plotter.show_bounds(xtitle="x [mm]", ytitle="y [mm]",
-                        ztitle="p (scaled)" if kind == "surface" else " ", color="black")
-    plotter.screenshot(str(out))
-    plotter.close()
+        field = np.abs(field)  # full-Sommerfeld fields go negative
+        peak = float(np.nanmax(field)) if np.any(np.isfinite(field)) else 0.0
+        sel = coord[np.isfinite(field) & (field > PRESSURE_FRACTION * peak)] if peak > 0 \
+            else coord[:0]
+        if sel.size < 2:
+            return lo, hi
+        pad = 0.25 * float(np.ptp(sel))
+        a, b = float(np.min(sel)) - pad, float(np.max(sel)) + pad
+    a, b = max(a, lo), min(b, hi)
+    return (a, b) if b > a else (lo, hi)
 
 
-def _matplotlib_point(d: PlotData, out: Path, kind: str) -> None:
+def _save(fig: Any, ax: Any, d: PlotData, what: str, out: Path) -> None:
+    """Title (with the status stamp of an unsuccessful result), save as PNG, close."""
+    import matplotlib.pyplot as plt
+
+    ax.set_title(figure_title(d, what), fontsize=10)
+    _stamp(fig, d)
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
+
+
+def _map_window(d: PlotData) -> tuple[tuple[float, float], tuple[float, float], Any]:
+    """Zoom of a point result: x and y intervals [m] and the index of the nodes inside."""
+    ax_, ay_ = d.semi_axes if d.semi_axes is not None else (None, None)
+    row = d.pressure[int(np.argmin(np.abs(d.y)))]
+    col = d.pressure[:, int(np.argmin(np.abs(d.x)))]
+    x0, x1 = _window(d.x, row, ax_, MAP_WINDOW[0])
+    y0, y1 = _window(d.y, col, ay_, MAP_WINDOW[1])
+    ix = np.nonzero((d.x >= x0) & (d.x <= x1))[0]
+    iy = np.nonzero((d.y >= y0) & (d.y <= y1))[0]
+    return (x0, x1), (y0, y1), np.ix_(iy, ix)
+
+
+def film_levels(d: PlotData, X: np.ndarray, Y: np.ndarray) -> np.ndarray:
+    """Film contour levels [m] of a point map from the film inside the contact.
+
+    Inside the Hertz ellipse (or, without Hertz scales, where the pressure exceeds
+    :data:`PRESSURE_FRACTION` of its maximum): the fractions :data:`MAP_LEVELS` of the
+    range from the minimum film to the central film (the film at the node nearest the
+    origin). Empty when the film is flat there or not finite.
+    """
+    h = d.film
+    if d.semi_axes is not None:
+        ax, ay = d.semi_axes
+        inside = (X / ax) ** 2 + (Y / ay) ** 2 <= 1.0
+    else:
+        peak = float(np.nanmax(d.pressure)) if np.any(np.isfinite(d.pressure)) else 0.0
+        inside = d.pressure > PRESSURE_FRACTION * peak if peak > 0 else np.ones_like(h, bool)
+    inside &= np.isfinite(h)
+    if not np.any(inside):
+        return np.zeros(0)
+    h_min = float(np.min(h[inside]))
+    h_c = float(h[int(np.argmin(np.abs(d.y))), int(np.argmin(np.abs(d.x)))])
+    if d.semi_axes is None:  # rigid: the film grows from its minimum; show up to twice it
+        h_c = 2.0 * h_min if h_min > 0 else h_c
+    if not (np.isfinite(h_c) and h_c > h_min):
+        return np.zeros(0)
+    return h_min + np.asarray(MAP_LEVELS) * (h_c - h_min)
+
+
+def _matplotlib_map(d: PlotData, out: Path) -> None:
+    """Pressure map with labelled film contours and the Hertz ellipse (matplotlib)."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Ellipse
+
+    X, Y = np.meshgrid(d.x, d.y)
+    (x0, x1), (y0, y1), sub = _map_window(d)
+    # the figure follows the window's shape (equal aspect), plus room for the colour bar
+    width = min(max(5.5 * (x1 - x0) / (y1 - y0) + 2.5, 5.0), 12.0)
+    fig, ax = plt.subplots(figsize=(width, 6), layout="constrained")
+    mesh = ax.pcolormesh(X[sub] * 1e3, Y[sub] * 1e3, d.pressure[sub] / 1e6, shading="auto",
+                         cmap="viridis")
+    fig.colorbar(mesh, ax=ax, label=field_label(d), shrink=0.9)
+    levels = film_levels(d, X, Y)
+    if levels.size:
+        cs = ax.contour(X[sub] * 1e3, Y[sub] * 1e3, d.film[sub] * 1e6, levels=levels * 1e6,
+                        colors="white", linewidths=1.0)
+        ax.clabel(cs, fmt="%.3g", fontsize=7)
+    if d.semi_axes is not None:
+        ax.add_patch(Ellipse((0.0, 0.0), 2e3 * d.semi_axes[0], 2e3 * d.semi_axes[1], fill=False, color="orange",
+                             linestyle="--", linewidth=1.2, label="Hertz contact"))
+        ax.legend(loc="upper left", fontsize=8, framealpha=0.6)
+    ax.set_aspect("equal")
+    ax.set_xlim(x0 * 1e3, x1 * 1e3)
+    ax.set_ylim(y0 * 1e3, y1 * 1e3)
+    ax.set_xlabel("x [mm] (rolling direction)")
+    ax.set_ylabel("y [mm]")
+    _save(fig, ax, d, "pressure, film contours [um]", out)
+
+
+def _matplotlib_surface(d: PlotData, out: Path) -> None:
     import matplotlib
 
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
+    _, _, sub = _map_window(d)
     X, Y = np.meshgrid(d.x * 1e3, d.y * 1e3)
     fig = plt.figure(figsize=(8, 6))
-    if kind == "surface":
-        ax = fig.add_subplot(projection="3d")
-        ax.plot_surface(X, Y, d.pressure / 1e6, cmap="viridis")
-        ax.set_zlabel("pressure [MPa]")
-    else:
-        ax = fig.add_subplot()
-        cf = ax.pcolormesh(X, Y, d.pressure / 1e6, shading="auto", cmap="viridis")
-        fig.colorbar(cf, ax=ax, label="pressure [MPa]")
-        h = d.film * 1e6
-        lo, hi = float(np.min(h)), float(np.percentile(h, 60))
-        if hi > lo:
-            cs = ax.contour(X, Y, h, levels=np.linspace(lo, hi, 8)[1:], colors="white",
-                            linewidths=1)
-            ax.clabel(cs, fmt="%.3g", fontsize=7)
-        ax.set_aspect("equal")
+    ax = fig.add_subplot(projection="3d")
+    ax.plot_surface(X[sub], Y[sub], d.pressure[sub] / 1e6, cmap="viridis")
+    ax.set_zlabel(field_label(d))
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
-    ax.set_title(("pressure, film contours [um]" if kind != "surface" else "pressure")
-                 + (f" - {d.title}" if d.title else ""))
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
+    _save(fig, ax, d, "pressure surface", out)
+
+
+def _pyvista_surface(d: PlotData, out: Path, window_size) -> None:
+    import pyvista as pv
+
+    _, _, sub = _map_window(d)
+    X, Y = np.meshgrid(d.x * 1e3, d.y * 1e3)
+    X, Y, p_mpa = X[sub], Y[sub], d.pressure[sub] / 1e6
+    span = max(float(np.ptp(X)), float(np.ptp(Y)))
+    zscale = 0.4 * span / max(float(np.max(np.abs(p_mpa))), 1e-300)
+    grid = pv.StructuredGrid(X, Y, p_mpa * zscale)
+    label = field_label(d)
+    grid[label] = p_mpa.ravel(order="F")
+    plotter = pv.Plotter(off_screen=True, window_size=list(window_size))
+    plotter.set_background("white")
+    plotter.add_mesh(grid, scalars=label, cmap="viridis",
+                     scalar_bar_args={"title": label, "color": "black", "vertical": True,
+                                      "position_x": 0.86, "position_y": 0.15,
+                                      "height": 0.7, "width": 0.05})
+    plotter.view_isometric()
+    plotter.add_text(figure_title(d, "pressure surface"), font_size=10,
+                     color="black" if d.success else "red")
+    plotter.show_bounds(xtitle="x [mm]", ytitle="y [mm]", ztitle="p (scaled)", color="black")
+    plotter.screenshot(str(out))
+    plotter.close()
 
 
 def _matplotlib_line(d: PlotData, out: Path) -> None:
+    """Pressure and film along x (the centre line y = 0 of a point contact), zoomed on the
+    contact: :data:`LINE_WINDOW` Hertz half-widths, or the pressurised region."""
     import matplotlib
 
     matplotlib.use("Agg", force=False)
@@ -267,23 +437,29 @@ def _matplotlib_line(d: PlotData, out: Path) -> None:
     if d.kind == "point":  # centre line y = 0
         j = int(np.argmin(np.abs(d.y)))
         p, h = d.pressure[j], d.film[j]
+        scale = None if d.semi_axes is None else d.semi_axes[0]
     else:
         p, h = d.pressure, d.film
-    if d.x_unit:
-        xs, xlabel = d.x / d.x_unit, "x/b [-]"
+        scale = d.x_unit
+    x0, x1 = _window(d.x, p, scale, LINE_WINDOW)
+    if scale:
+        xs, xlabel = d.x / scale, ("x/b [-]" if d.kind == "line" else "x/a_x [-]")
+        lim = (x0 / scale, x1 / scale)
     else:
-        xs, xlabel = d.x * 1e3, "x [mm]"
-    fig, ax = plt.subplots(figsize=(8, 5))
+        xs, xlabel, lim = d.x * 1e3, "x [mm]", (x0 * 1e3, x1 * 1e3)
+    fig, ax = plt.subplots(figsize=(8, 5), layout="constrained")
     ax.plot(xs, p / 1e6, color="tab:blue", label="pressure")
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("pressure [MPa]", color="tab:blue")
+    ax.set_ylabel(field_label(d), color="tab:blue")
+    ax.set_xlim(*lim)
     ax2 = ax.twinx()
     ax2.plot(xs, h * 1e6, color="tab:red", label="film")
     ax2.set_ylabel("film [um]", color="tab:red")
-    hmin = float(np.min(h)) * 1e6
-    ax2.set_ylim(0.0, max(5 * hmin, hmin + 1e-9))
-    ax.set_title(("centre line y = 0" if d.kind == "point" else "line contact")
-                 + (f" - {d.title}" if d.title else ""))
-    fig.tight_layout()
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
+    shown = h[(d.x >= x0) & (d.x <= x1) & np.isfinite(h)] * 1e6
+    if shown.size:
+        lo, top = float(np.min(shown)), float(np.max(shown))
+        centre = float(h[int(np.argmin(np.abs(d.x)))]) * 1e6
+        ref = max(lo, centre) if np.isfinite(centre) else lo
+        top = min(top, 4.0 * ref) if ref > 0 else top
+        ax2.set_ylim(min(0.0, lo), max(top * 1.05, 1e-9))
+    _save(fig, ax, d, "centre line y = 0" if d.kind == "point" else "line contact", out)

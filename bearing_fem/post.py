@@ -280,11 +280,15 @@ def film_dissipation(ops: QuadratureOperators, h_q: np.ndarray,
 NET_LOAD_FRACTION = 1e-6
 #: Friction coefficient above which a Newtonian traction result is flagged as unphysical.
 NEWTONIAN_FRICTION_LIMIT = 0.2
+#: Friction coefficients beyond this (dry-friction values; lubricated contacts stay below
+#: ~0.15) are not reported: friction_force and heat_power stay, with a warning.
+MAX_FRICTION_COEFFICIENT = 1.0
 
 
 def friction_coefficient(friction: float, load: float, gross: float) -> tuple[float | None,
                                                                                 list[str]]:
-    """friction / load, or None with a warning when the load is not a positive net load.
+    """friction / load, or None with a warning when the load is not a positive net load
+    or the ratio exceeds :data:`MAX_FRICTION_COEFFICIENT`.
 
     Parameters
     ----------
@@ -293,10 +297,15 @@ def friction_coefficient(friction: float, load: float, gross: float) -> tuple[fl
     gross : float
         int |p| dA [N or N/m].
     """
-    if load > 0.0 and load >= NET_LOAD_FRACTION * gross:
-        return friction / load, []
-    return None, [f"friction coefficient undefined: the film carries no positive net load "
-                  f"(int p dA = {load:.4g}, int |p| dA = {gross:.4g}, in N or N/m)"]
+    if not (load > 0.0 and load >= NET_LOAD_FRACTION * gross):
+        return None, [f"friction coefficient undefined: the film carries no positive net "
+                      f"load (int p dA = {load:.4g}, int |p| dA = {gross:.4g}, in N or N/m)"]
+    mu = friction / load
+    if abs(mu) > MAX_FRICTION_COEFFICIENT:
+        return None, [f"friction coefficient not reported: friction / load = {mu:.3g} is "
+                      f"beyond {MAX_FRICTION_COEFFICIENT:g}, no lubricated contact's "
+                      "(the traction model is outside its range)"]
+    return mu, []
 
 
 def traction_choice(traction: Any, sliding_speed: float) -> tuple[dict[str, Any], list[str]]:
@@ -343,11 +352,12 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
     notes += more
     if mu is not None:
         q["friction_coefficient"] = mu
-    if (shear["model"] == "newtonian" and sliding_speed != 0.0 and mu is not None
-            and abs(mu) > NEWTONIAN_FRICTION_LIMIT):
-        notes.append(f"Newtonian traction gives an unphysical friction coefficient {mu:.3g} "
-                     f"(> {NEWTONIAN_FRICTION_LIMIT}): the pressure-viscosity law makes "
-                     "eta u_s/h huge at contact pressures; use traction.model = "
+    ratio = d.friction_force / load if load > 0.0 else 0.0
+    if (shear["model"] == "newtonian" and sliding_speed != 0.0
+            and abs(ratio) > NEWTONIAN_FRICTION_LIMIT):
+        notes.append(f"Newtonian traction gives an unphysical friction coefficient "
+                     f"{ratio:.3g} (> {NEWTONIAN_FRICTION_LIMIT}): the pressure-viscosity law "
+                     "makes eta u_s/h huge at contact pressures; use traction.model = "
                      "'eyring-limiting'")
     return q, notes, d
 

@@ -131,7 +131,7 @@ class Result:
             "success": bool(self.success),
             "message": self.message,
         }
-        out.update({k: _number_or_none(v) for k, v in self.quantities.items()})
+        out.update({k: number_or_none(v) for k, v in self.quantities.items()})
         if "friction_force" in self.quantities:
             out.setdefault("friction_coefficient", None)
         out["traction_model"] = self.traction_model
@@ -149,7 +149,7 @@ class Result:
         return out
 
 
-def _number_or_none(value: Any) -> Any:
+def number_or_none(value: Any) -> Any:
     """A float, a string label as it is, or None for a missing or non-finite number."""
     if value is None or isinstance(value, str):
         return value

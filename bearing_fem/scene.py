@@ -10,12 +10,18 @@ naming the field, the value and the unit. The keys are documented in ``docs/scen
 from __future__ import annotations
 
 import math
+import unicodedata
 from dataclasses import MISSING, dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any, Literal, Mapping
 
+import numpy as np
+
 from .errors import SceneError
+from .physics.rheology import viscosity_function
 from .physics.traction import GENERIC_MINERAL_OIL, TRACTION_MODELS
+from .validation import (require_finite, require_int, require_nonnegative, require_positive,
+                         shown)
 
 try:  # Python >= 3.11
     import tomllib
@@ -26,42 +32,178 @@ except ModuleNotFoundError:  # pragma: no cover
 # ---------------------------------------------------------------------------------------
 # validation helpers
 # ---------------------------------------------------------------------------------------
-def _number(obj: Any, name: str, unit: str) -> float:
+def show_value(value: Any) -> str:
+    """A bad value for an error message, cut short (:func:`bearing_fem.validation.shown`),
+    also for integers beyond Python's int -> str digit limit and deeply nested lists.
+
+    Parameters
+    ----------
+    value : Any
+        The offending value (any type: a scene file can hold anything).
+
+    Returns
+    -------
+    str
+    """
+    try:
+        return shown(value)
+    except ValueError:  # an integer beyond Python's int -> str digit limit
+        digits = int(value.bit_length() * math.log10(2)) + 1
+        return f"<an integer of about {digits} digits>"
+    except RecursionError:
+        return f"<a deeply nested {type(value).__name__}>"
+
+
+def _section_of(obj: Any) -> str:
+    return getattr(obj, "_section", type(obj).__name__.lower())
+
+
+def _scalar(obj: Any, name: str, unit: str) -> tuple[str, Any]:
+    """The field's full name and value, or SceneError unless the value is one real number
+    (not a bool, a string, a list, ...)."""
     value = getattr(obj, name)
-    section = getattr(obj, "_section", type(obj).__name__.lower())
+    full = f"{_section_of(obj)}.{name}"
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"{section}.{name} must be a number in {unit}, got {value!r} "
+        raise SceneError(f"{full} must be a number in {unit}, got {show_value(value)} "
                          f"({type(value).__name__})")
-    value = float(value)
-    if not math.isfinite(value):
-        raise SceneError(f"{section}.{name} must be finite ({unit}), got {value!r}")
+    if isinstance(value, int) and value.bit_length() > 1024:  # beyond the double range
+        raise SceneError(f"{full} must be finite ({unit}), got {show_value(value)} (beyond "
+                         "the floating-point range)")
+    return full, value
+
+
+def _number(obj: Any, name: str, unit: str) -> float:
+    full, value = _scalar(obj, name, unit)
+    value = require_finite(full, value, unit, error=SceneError)
     object.__setattr__(obj, name, value)
     return value
 
 
 def _positive(obj: Any, name: str, unit: str) -> float:
-    value = _number(obj, name, unit)
-    if value <= 0.0:
-        section = getattr(obj, "_section")
-        raise SceneError(f"{section}.{name} must be > 0 {unit}, got {value!r}")
+    full, value = _scalar(obj, name, unit)
+    value = require_positive(full, value, unit, error=SceneError)
+    object.__setattr__(obj, name, value)
     return value
 
 
 def _nonneg(obj: Any, name: str, unit: str) -> float:
+    full, value = _scalar(obj, name, unit)
+    value = require_nonnegative(full, value, unit, error=SceneError)
+    object.__setattr__(obj, name, value)
+    return value
+
+
+def _bounded(obj: Any, name: str, unit: str, lo: float, hi: float, *,
+             open_low: bool = False, why: str = "") -> float:
+    """A finite number in [lo, hi] (or (lo, hi] with ``open_low``), else SceneError.
+
+    The bounds are those documented in ``docs/scenes.md`` ("Ranges"); ``why`` is a short
+    reason appended to the message.
+    """
     value = _number(obj, name, unit)
-    if value < 0.0:
-        section = getattr(obj, "_section")
-        raise SceneError(f"{section}.{name} must be >= 0 {unit}, got {value!r}")
+    low_ok = value > lo if open_low else value >= lo
+    if not (low_ok and value <= hi):
+        bracket = "(" if open_low else "["
+        raise SceneError(f"{_section_of(obj)}.{name} must lie in {bracket}{lo:g}, {hi:g}] "
+                         f"{unit}, got {value!r}" + (f" ({why})" if why else ""))
+    return value
+
+
+def _integer(obj: Any, name: str, lo: int, hi: int, what: str) -> int:
+    value = require_int(f"{_section_of(obj)}.{name}", getattr(obj, name), lo, hi, what=what,
+                        error=SceneError)
+    object.__setattr__(obj, name, value)
     return value
 
 
 def _choice(obj: Any, name: str, allowed: tuple[str, ...]) -> str:
     value = getattr(obj, name)
-    section = getattr(obj, "_section")
     if not isinstance(value, str) or value not in allowed:
-        raise SceneError(f"{section}.{name} must be one of {', '.join(map(repr, allowed))}, "
-                         f"got {value!r}")
+        raise SceneError(f"{_section_of(obj)}.{name} must be one of "
+                         f"{', '.join(map(repr, allowed))}, got {show_value(value)}")
     return value
+
+
+def _float_list(values: Any) -> tuple[float, ...] | None:
+    """A list of finite numbers as floats, or None if it is not one."""
+    if not isinstance(values, (list, tuple)):
+        return None
+    out = []
+    for v in values:
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            return None
+        try:
+            v = float(v)
+        except OverflowError:
+            return None
+        if not math.isfinite(v):
+            return None
+        out.append(v)
+    return tuple(out)
+
+
+def _names(keys: list[Any], prefix: str = "", most: int = 5) -> str:
+    """Unknown key names for a message: each cut short, at most ``most`` of them."""
+    shown = []
+    for k in keys[:most]:
+        text = f"{prefix}{k}" if isinstance(k, str) else f"{prefix}{show_value(k)}"
+        shown.append(text if len(text) <= 40 else f"{text[:30]}... ({len(text)} characters)")
+    more = f" and {len(keys) - most} more" if len(keys) > most else ""
+    return ", ".join(shown) + more
+
+
+def _check_title(title: Any) -> None:
+    """A title is one line of printable text (it is stored in HDF5 attributes and shown
+    in figures): no control characters, at most :data:`MAX_TITLE` characters."""
+    if not isinstance(title, str):
+        raise SceneError(f"title must be a string, got {show_value(title)}")
+    if len(title) > MAX_TITLE:
+        raise SceneError(f"title must have at most {MAX_TITLE} characters, got "
+                         f"{len(title)}: {show_value(title)}")
+    bad = [ch for ch in title if unicodedata.category(ch) in ("Cc", "Cs")]
+    if bad:
+        raise SceneError(f"title must be one line of printable text, got the control "
+                         f"character {bad[0]!r} (U+{ord(bad[0]):04X}) in {show_value(title)}")
+
+
+# ---------------------------------------------------------------------------------------
+# ranges (docs/scenes.md, "Ranges": each bound with its reason)
+# ---------------------------------------------------------------------------------------
+#: Radii and lengths [m]: from a micro-contact (1 um) to the largest slewing bearings.
+LENGTH_RANGE = (1e-6, 10.0)
+#: Largest ratio of the reduced radii ry/rx or rx/ry of a point contact [-] (a toroidal
+#: roller is about 100; beyond 1e4 treat the contact as a line contact).
+MAX_RADIUS_RATIO = 1e4
+#: Young's moduli and E' [Pa]: from soft elastomers (1 MPa) up; E = 208 Pa (GPa meant) is
+#: rejected. The upper end lies far beyond diamond (1.2e12 Pa) so that a nearly rigid
+#: elastic body can approach the rigid limit; it keeps every Hertz and Moes scale finite.
+MODULUS_RANGE = (1e6, 1e30)
+#: Viscosity at ambient pressure [Pa s]: from gases (air 1.8e-5) to bitumen.
+VISCOSITY_RANGE = (1e-6, 1e6)
+#: Viscosity range of the Roelands law [Pa s]: ln eta0 + 9.67 >= 0.5 keeps its pressure
+#: index Z = alpha p0 / (ln eta0 + 9.67) finite.
+ROELANDS_VISCOSITY = (math.exp(0.5 - 9.67), 1e4)
+#: Largest surface speed |u| [m/s] (the fastest bearings run at about 100 m/s).
+MAX_SPEED = 1e3
+#: Smallest mean (entrainment) speed [m/s]: below it, entrainment does not build a film.
+MIN_MEAN_SPEED = 1e-6
+#: Load [N for a point contact, N/m for a line contact].
+FORCE_RANGE = (1e-6, 1e12)
+#: Prescribed rigid offset [m]: from below atomic size to a millimetre film.
+GAP_RANGE = (1e-10, 1e-3)
+#: Largest Hertz semi-axis over its reduced radius (b/rx, a_x/rx, a_y/ry) [-]: Hertz
+#: theory and the half-space model need a contact small against the radii.
+MAX_HERTZ_RATIO = 0.5
+#: Largest viscosity ratio eta(p_h)/eta0 at the Hertz pressure [-]: exp(700); beyond
+#: exp(709) the viscosity overflows double precision (Barus: alpha p_h <= 700).
+MAX_VISCOSITY_RATIO = math.exp(700.0)
+#: Largest |start|, |end| of mesh.x_range and mesh.y_range [Hertz half-widths or
+#: sqrt(2 r h0)].
+MAX_RANGE = 1e3
+#: Temperatures [deg C] of the Prokofiev law (t > 0) up to where any oil decomposes.
+TEMPERATURE_RANGE = (0.0, 500.0)
+#: Longest title [characters].
+MAX_TITLE = 200
 
 
 # ---------------------------------------------------------------------------------------
@@ -76,10 +218,12 @@ class Contact:
     kind : {"line", "point"}
         Line contact (roller, per metre of length) or point/elliptical contact (ball).
     rx : float
-        Reduced radius in the rolling direction x [m] (1/rx = 1/r1x + 1/r2x).
+        Reduced radius in the rolling direction x [m] (1/rx = 1/r1x + 1/r2x), in
+        :data:`LENGTH_RANGE`.
     ry : float or None
-        Reduced radius across the rolling direction [m]; point contacts only
-        (``inf`` is allowed and means a line-like ellipse).
+        Reduced radius across the rolling direction [m]; point contacts only, in
+        :data:`LENGTH_RANGE`, with ry/rx within 1/:data:`MAX_RADIUS_RATIO` ..
+        :data:`MAX_RADIUS_RATIO` (a more slender contact is a line contact).
     length : float or None
         Effective contact length [m]; line contacts only, used for totals.
     """
@@ -92,20 +236,27 @@ class Contact:
 
     def __post_init__(self) -> None:
         _choice(self, "kind", ("line", "point"))
-        _positive(self, "rx", "m")
+        _bounded(self, "rx", "m", *LENGTH_RANGE)
         if self.kind == "point":
             if self.ry is None:
                 raise SceneError("contact.ry is required for a point contact (m)")
-            _positive(self, "ry", "m")
+            _bounded(self, "ry", "m", *LENGTH_RANGE)
+            ratio = max(self.ry / self.rx, self.rx / self.ry)
+            if ratio > MAX_RADIUS_RATIO:
+                raise SceneError(f"contact.ry / contact.rx = {self.ry / self.rx:.4g} is too "
+                                 f"slender for a point contact (the ratio of the radii must "
+                                 f"lie within 1/{MAX_RADIUS_RATIO:g} .. {MAX_RADIUS_RATIO:g}; "
+                                 f"rx = {self.rx!r} m, ry = {self.ry!r} m): treat it as a "
+                                 "line contact")
             if self.length is not None:
                 raise SceneError(f"contact.length applies to line contacts only, got "
-                                 f"{self.length!r} m for a point contact")
+                                 f"{show_value(self.length)} m for a point contact")
         else:
             if self.ry is not None:
-                raise SceneError(f"contact.ry applies to point contacts only, got {self.ry!r} m "
-                                 "for a line contact")
+                raise SceneError(f"contact.ry applies to point contacts only, got "
+                                 f"{show_value(self.ry)} m for a line contact")
             if self.length is not None:
-                _positive(self, "length", "m")
+                _bounded(self, "length", "m", *LENGTH_RANGE)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -115,7 +266,7 @@ class Materials:
     Parameters
     ----------
     e1, e2 : float
-        Young's moduli [Pa].
+        Young's moduli [Pa], in :data:`MODULUS_RANGE` (so is E').
     nu1, nu2 : float
         Poisson ratios [-], in (-1, 0.5].
     reduced_modulus : float or None
@@ -135,22 +286,27 @@ class Materials:
             if any(v is not None for v in pair):
                 raise SceneError("materials: give either reduced_modulus (Pa) or e1, nu1, e2, "
                                  "nu2, not both")
-            _positive(self, "reduced_modulus", "Pa")
+            _bounded(self, "reduced_modulus", "Pa", *MODULUS_RANGE)
             return
         for name in ("e1", "nu1", "e2", "nu2"):
             if getattr(self, name) is None:
                 raise SceneError(f"materials.{name} is required (or give materials."
                                  "reduced_modulus in Pa)")
         for name in ("e1", "e2"):
-            _positive(self, name, "Pa")
+            _bounded(self, name, "Pa", *MODULUS_RANGE)
         for name in ("nu1", "nu2"):
             v = _number(self, name, "(dimensionless)")
             if not -1.0 < v <= 0.5:
                 raise SceneError(f"materials.{name} must lie in (-1, 0.5] (dimensionless), got {v!r}")
+        e_prime = self.e_prime
+        if not MODULUS_RANGE[0] <= e_prime <= MODULUS_RANGE[1]:
+            raise SceneError(f"materials: the reduced modulus E' = {e_prime:.4g} Pa of e1, nu1, "
+                             f"e2, nu2 must lie in [{MODULUS_RANGE[0]:g}, {MODULUS_RANGE[1]:g}] "
+                             "Pa (a Poisson ratio near -1 makes it grow without bound)")
 
     @property
     def e_prime(self) -> float:
-        """Reduced modulus E' [Pa] (Hamrock convention, PHYSICS.md section 1)."""
+        """Reduced modulus E' [Pa] (Hamrock convention, docs/theory.md)."""
         if self.reduced_modulus is not None:
             return float(self.reduced_modulus)
         return 2.0 / ((1 - self.nu1**2) / self.e1 + (1 - self.nu2**2) / self.e2)
@@ -163,7 +319,8 @@ class Lubricant:
     Parameters
     ----------
     viscosity : float
-        eta0, viscosity at ambient pressure [Pa s]. No default.
+        eta0, viscosity at ambient pressure [Pa s], in :data:`VISCOSITY_RANGE`
+        (:data:`ROELANDS_VISCOSITY` with the Roelands law). No default.
     piezo : float
         Barus pressure-viscosity coefficient alpha [1/Pa] (Roelands uses it for its slope).
     viscosity_law : {"barus", "roelands", "constant"}
@@ -177,16 +334,19 @@ class Lubricant:
     density: Literal["incompressible", "dowson-higginson"] = "incompressible"
 
     def __post_init__(self) -> None:
-        _positive(self, "viscosity", "Pa s")
+        _bounded(self, "viscosity", "Pa s", *VISCOSITY_RANGE)
         _nonneg(self, "piezo", "1/Pa")
         if self.piezo > 1e-6:
             raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils 1e-8..3e-8), "
                              f"got {self.piezo!r}")
         _choice(self, "viscosity_law", ("barus", "roelands", "constant"))
         _choice(self, "density", ("incompressible", "dowson-higginson"))
-        if self.viscosity_law == "roelands" and self.viscosity > 1e4:
+        if self.viscosity_law == "roelands" and not ROELANDS_VISCOSITY[0] <= self.viscosity \
+                <= ROELANDS_VISCOSITY[1]:
             raise SceneError(f"lubricant.viscosity = {self.viscosity!r} Pa s is outside the "
-                             "Roelands law's range (ln eta0 + 9.67 must stay positive and sane)")
+                             f"Roelands law's range [{ROELANDS_VISCOSITY[0]:.3g}, "
+                             f"{ROELANDS_VISCOSITY[1]:g}] Pa s (ln eta0 + 9.67 must stay "
+                             "positive and sane: at 6.3e-5 Pa s its pressure index is infinite)")
 
     @property
     def effective_piezo(self) -> float:
@@ -196,18 +356,23 @@ class Lubricant:
 
 @dataclass(frozen=True, kw_only=True)
 class Kinematics:
-    """Surface speeds along +x [m/s]. The mean (entrainment) speed must be > 0."""
+    """Surface speeds along +x [m/s], each within +-:data:`MAX_SPEED`. The mean
+    (entrainment) speed must be at least :data:`MIN_MEAN_SPEED`."""
 
     _section = "kinematics"
     u1: float
     u2: float
 
     def __post_init__(self) -> None:
-        _number(self, "u1", "m/s")
-        _number(self, "u2", "m/s")
+        _bounded(self, "u1", "m/s", -MAX_SPEED, MAX_SPEED)
+        _bounded(self, "u2", "m/s", -MAX_SPEED, MAX_SPEED)
         if self.mean_speed <= 0.0:
             raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 must be > 0 m/s "
                              f"(inlet at x < 0), got u1={self.u1!r}, u2={self.u2!r}")
+        if self.mean_speed < MIN_MEAN_SPEED:
+            raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 = {self.mean_speed!r} m/s "
+                             f"is below {MIN_MEAN_SPEED:g} m/s, too slow to entrain a film "
+                             f"(u1={self.u1!r}, u2={self.u2!r})")
 
     @property
     def mean_speed(self) -> float:
@@ -232,9 +397,10 @@ class Load:
     Parameters
     ----------
     force : float or None
-        N for a point contact, N per metre of length for a line contact.
+        N for a point contact, N per metre of length for a line contact, in
+        :data:`FORCE_RANGE`.
     gap : float or None
-        Prescribed rigid offset h0 [m] (no load balance).
+        Prescribed rigid offset h0 [m] (no load balance), in :data:`GAP_RANGE`.
     """
 
     _section = "load"
@@ -244,11 +410,11 @@ class Load:
     def __post_init__(self) -> None:
         if (self.force is None) == (self.gap is None):
             raise SceneError("load: give exactly one of load.force (N or N/m) and load.gap (m), "
-                             f"got force={self.force!r}, gap={self.gap!r}")
+                             f"got force={show_value(self.force)}, gap={show_value(self.gap)}")
         if self.force is not None:
-            _positive(self, "force", "N (point) or N/m (line)")
+            _bounded(self, "force", "N (point) or N/m (line)", *FORCE_RANGE)
         else:
-            _positive(self, "gap", "m")
+            _bounded(self, "gap", "m", *GAP_RANGE)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -285,23 +451,33 @@ class MeshSpec:
     x_range, y_range : (float, float) or None
         Domain in units of the Hertz half-width (elastic scenes) or of sqrt(2 rx h0)
         (rigid scenes) [-].
+    file : str or None
+        A grid file (any meshio format; ``meshes/`` has examples) holding the nodes in
+        those same units: a 1D mesh for a line contact, quads on a tensor grid for a point
+        contact (uniform for elastic scenes: the half-space compliance needs it). It
+        replaces ``nodes`` and the ranges. A relative path in a scene file is relative to
+        that file.
     """
 
     _section = "mesh"
     nodes: int | tuple[int, int] | None = None
     x_range: tuple[float, float] | None = None
     y_range: tuple[float, float] | None = None
+    file: str | None = None
 
     def __post_init__(self) -> None:
+        if self.file is not None:
+            self._check_file()
         n = self.nodes
         if n is not None:
             items = [n] if not isinstance(n, (list, tuple)) else list(n)
             if len(items) not in (1, 2) or any(isinstance(v, bool) or not isinstance(v, int)
                                                 for v in items):
                 raise SceneError(f"mesh.nodes must be an integer (line) or two integers "
-                                 f"(point), got {n!r}")
+                                 f"(point), got {show_value(n)}")
             if any(v < 9 or v > 20001 for v in items):
-                raise SceneError(f"mesh.nodes must lie in [9, 20001] per direction, got {n!r}")
+                raise SceneError(f"mesh.nodes must lie in [9, 20001] per direction, got "
+                                 f"{show_value(n)}")
             object.__setattr__(self, "nodes", items[0] if len(items) == 1 and not
                                isinstance(n, (list, tuple)) else tuple(items))
         for name in ("x_range", "y_range"):
@@ -311,12 +487,48 @@ class MeshSpec:
             if (not isinstance(r, (list, tuple)) or len(r) != 2
                     or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
                 raise SceneError(f"mesh.{name} must be two numbers [start, end] (in Hertz "
-                                 f"half-widths), got {r!r}")
-            lo, hi = float(r[0]), float(r[1])
+                                 f"half-widths), got {show_value(r)}")
+            try:
+                lo, hi = float(r[0]), float(r[1])
+            except OverflowError:
+                lo = hi = math.inf
             if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
                 raise SceneError(f"mesh.{name} must satisfy start < 0 < end (in Hertz "
-                                 f"half-widths), got {r!r}")
+                                 f"half-widths), got {show_value(r)}")
+            if max(-lo, hi) > MAX_RANGE:
+                raise SceneError(f"mesh.{name} must lie within [-{MAX_RANGE:g}, {MAX_RANGE:g}] "
+                                 f"(in Hertz half-widths, or sqrt(2 r h0) for rigid scenes), "
+                                 f"got {show_value(r)}")
             object.__setattr__(self, name, (lo, hi))
+
+
+    def _check_file(self) -> None:
+        from .mesh import grid_axes
+
+        f = self.file
+        if not isinstance(f, str) or not f or "\x00" in f:
+            raise SceneError(f"mesh.file must be a file name, got {show_value(f)}")
+        given = [k for k in ("nodes", "x_range", "y_range") if getattr(self, k) is not None]
+        if given:
+            raise SceneError(f"mesh.file replaces {', '.join('mesh.' + k for k in given)}: give "
+                             "either the file or those keys")
+        try:
+            x, y = grid_axes(f)
+        except ValueError as exc:
+            raise SceneError(f"mesh.file: {exc}") from None
+        for name, axis in (("x", x), ("y", y)):
+            if axis is not None and not (axis[0] < 0.0 < axis[-1]):
+                raise SceneError(f"mesh.file {f!r}: the {name} nodes must span 0 (start < 0 < "
+                                 f"end, in Hertz semi-axes or sqrt(2 r h0)), got "
+                                 f"[{axis[0]:g}, {axis[-1]:g}]")
+
+    def axes(self) -> tuple[Any, Any] | None:
+        """The node coordinates of ``file`` (x, and y or None), or None without a file."""
+        if self.file is None:
+            return None
+        from .mesh import grid_axes
+
+        return grid_axes(self.file)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -352,17 +564,13 @@ class SolverSpec:
         _positive(self, "tolerance", "(dimensionless)")
         if self.tolerance >= 1e-1:
             raise SceneError(f"solver.tolerance must be < 0.1 (dimensionless), got {self.tolerance!r}")
-        m = self.max_iterations
-        if isinstance(m, bool) or not isinstance(m, int) or not 1 <= m <= 10000:
-            raise SceneError(f"solver.max_iterations must be an integer in [1, 10000], got {m!r}")
+        _integer(self, "max_iterations", 1, 10000, "Newton iterations")
         if not isinstance(self.continuation, bool):
-            raise SceneError(f"solver.continuation must be true or false, got {self.continuation!r}")
-        b = self.iteration_budget
-        if isinstance(b, bool) or not isinstance(b, int) or not 1 <= b <= 100000:
-            raise SceneError(f"solver.iteration_budget must be an integer in [1, 100000] "
-                             f"(Newton iterations), got {b!r}")
+            raise SceneError(f"solver.continuation must be true or false, got "
+                             f"{show_value(self.continuation)}")
+        _integer(self, "iteration_budget", 1, 100000, "Newton iterations")
         if self.time_limit is not None:
-            _positive(self, "time_limit", "s")
+            _bounded(self, "time_limit", "s", 0.0, 1e6, open_low=True)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -374,7 +582,7 @@ class Thermal:
     oil_temperature : float
         Bulk oil (and far-field body) temperature [deg C]. No default.
     exponent : float
-        Prokofiev exponent n [-] of eta0(t) = eta_ref (t_ref/t)^n (seed 000). No default.
+        Prokofiev exponent n [-] of eta0(t) = eta_ref (t_ref/t)^n (Yachikov & Vostrikov 2015). No default.
     temperature_law : {"prokofiev"}
     reference_temperature : float
         t_ref [deg C] at which ``reference_viscosity`` (or ``lubricant.viscosity``) holds.
@@ -426,47 +634,50 @@ class Thermal:
     max_temperature_rise: float = 300.0
 
     def __post_init__(self) -> None:
-        _positive(self, "oil_temperature", "deg C (Prokofiev law needs t > 0 deg C)")
-        _positive(self, "exponent", "(dimensionless)")
+        t_lo, t_hi = TEMPERATURE_RANGE
+        _bounded(self, "oil_temperature", "deg C", t_lo, t_hi, open_low=True,
+                 why="the Prokofiev law needs t > 0 deg C")
+        _bounded(self, "exponent", "(dimensionless)", 0.0, 20.0, open_low=True,
+                 why="oils have 2..4")
         _choice(self, "temperature_law", ("prokofiev",))
-        _positive(self, "reference_temperature", "deg C")
+        _bounded(self, "reference_temperature", "deg C", t_lo, t_hi, open_low=True)
         if self.reference_viscosity is not None:
-            _positive(self, "reference_viscosity", "Pa s")
-        for name in ("conductivity", "density", "heat_capacity"):
-            unit = {"conductivity": "W/(m K)", "density": "kg/m^3",
-                    "heat_capacity": "J/(kg K)"}[name]
-            _positive(self, name, unit)
+            _bounded(self, "reference_viscosity", "Pa s", *VISCOSITY_RANGE)
+        for name, unit, lo, hi in (("conductivity", "W/(m K)", 1e-3, 1e4),
+                                   ("density", "kg/m^3", 1.0, 1e5),
+                                   ("heat_capacity", "J/(kg K)", 1.0, 1e5)):
+            _bounded(self, name, unit, lo, hi)
             if getattr(self, name + "2") is not None:
-                _positive(self, name + "2", unit)
+                _bounded(self, name + "2", unit, lo, hi)
         _choice(self, "source_model", ("jaeger", "fe"))
         _choice(self, "contact_temperature", ("mean", "max"))
         ts, vs = self.piezo_temperatures, self.piezo_values
         if (ts is None) != (vs is None):
             raise SceneError("thermal: give both thermal.piezo_temperatures (deg C) and "
-                             f"thermal.piezo_values (1/Pa), or neither; got {ts!r}, {vs!r}")
+                             f"thermal.piezo_values (1/Pa), or neither; got {show_value(ts)}, "
+                             f"{show_value(vs)}")
         if ts is not None:
-            ok = (isinstance(ts, (list, tuple)) and isinstance(vs, (list, tuple))
-                  and len(ts) == len(vs) >= 1
-                  and all(isinstance(v, (int, float)) and not isinstance(v, bool)
-                          and math.isfinite(v) for v in (*ts, *vs)))
-            if not ok:
+            table = _float_list(ts), _float_list(vs)
+            if table[0] is None or table[1] is None or not len(ts) == len(vs) >= 1:
                 raise SceneError("thermal.piezo_temperatures (deg C) and thermal.piezo_values "
-                                 f"(1/Pa) must be equal-length lists of numbers, got {ts!r}, {vs!r}")
+                                 f"(1/Pa) must be equal-length lists of finite numbers, got "
+                                 f"{show_value(ts)}, {show_value(vs)}")
+            ts, vs = table
             if any(b <= a for a, b in zip(ts, ts[1:])):
                 raise SceneError(f"thermal.piezo_temperatures must be strictly ascending (deg C), "
-                                 f"got {ts!r}")
+                                 f"got {show_value(ts)}")
+            if any(not -273.15 < t <= t_hi for t in ts):
+                raise SceneError(f"thermal.piezo_temperatures must lie in (-273.15, {t_hi:g}] "
+                                 f"deg C, got {show_value(ts)}")
             if any(not 0.0 < v <= 1e-6 for v in vs):
-                raise SceneError(f"thermal.piezo_values must lie in (0, 1e-6] 1/Pa, got {vs!r}")
-            object.__setattr__(self, "piezo_temperatures", tuple(float(v) for v in ts))
-            object.__setattr__(self, "piezo_values", tuple(float(v) for v in vs))
-        m = self.max_iterations
-        if isinstance(m, bool) or not isinstance(m, int) or not 1 <= m <= 1000:
-            raise SceneError(f"thermal.max_iterations must be an integer in [1, 1000], got {m!r}")
-        _positive(self, "tolerance", "K")
-        r = _positive(self, "relaxation", "(dimensionless)")
-        if r > 1.0:
-            raise SceneError(f"thermal.relaxation must lie in (0, 1] (dimensionless), got {r!r}")
-        _positive(self, "max_temperature_rise", "K")
+                raise SceneError(f"thermal.piezo_values must lie in (0, 1e-6] 1/Pa, got "
+                                 f"{show_value(vs)}")
+            object.__setattr__(self, "piezo_temperatures", ts)
+            object.__setattr__(self, "piezo_values", vs)
+        _integer(self, "max_iterations", 1, 1000, "fixed-point iterations")
+        _bounded(self, "tolerance", "K", 0.0, 100.0, open_low=True)
+        _bounded(self, "relaxation", "(dimensionless)", 0.0, 1.0, open_low=True)
+        _bounded(self, "max_temperature_rise", "K", 0.0, 1e4, open_low=True)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -503,12 +714,59 @@ class Traction:
 
     def __post_init__(self) -> None:
         _choice(self, "model", TRACTION_MODELS)
-        _positive(self, "eyring_stress", "Pa")
-        _nonneg(self, "limiting_shear_stress", "Pa")
-        _nonneg(self, "limiting_slope", "(dimensionless)")
+        _bounded(self, "eyring_stress", "Pa", 1e3, 1e10, why="oils have 2e6..1e7 Pa")
+        _bounded(self, "limiting_shear_stress", "Pa", 0.0, 1e10)
+        _bounded(self, "limiting_slope", "(dimensionless)", 0.0, 1.0,
+                 why="oils have 0.05..0.1; above 1 the friction coefficient would exceed 1")
         if self.limiting_shear_stress == 0.0 and self.limiting_slope == 0.0:
             raise SceneError("traction: limiting_shear_stress (Pa) and limiting_slope (-) are "
                              "both 0: the limiting stress would vanish")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Transient:
+    """A squeeze series of a point contact with a prescribed gap: the rigid offset
+    oscillates as h0(t) = h0 (1 + amplitude cos(omega t)), ``load.gap`` = h0 (the mean).
+
+    ``bearing_fem.solve_series`` (and ``bearing-fem solve``) solve it: rigid scenes
+    instant by instant (no memory), elastic ones with the time derivative of the film
+    (``docs/point.md``, "Squeeze").
+
+    Parameters
+    ----------
+    kind : {"squeeze"}
+    amplitude : float
+        eps [-], 0 <= eps < 1. No default.
+    angular_frequency : float or None
+        omega [rad/s]; None: u_m / sqrt(2 rx h0) (one hydrodynamic length per radian).
+    steps : int
+        Time steps per period (2..10000; default 32).
+    periods : int
+        Periods (1..100; default 1).
+    scheme : {"bdf2", "euler", "quasi-steady"}
+        Time discretisation of elastic scenes (default BDF2, second order); rigid scenes
+        have no memory and are solved instant by instant whatever the scheme.
+    """
+
+    _section = "transient"
+    kind: Literal["squeeze"] = "squeeze"
+    amplitude: float
+    angular_frequency: float | None = None
+    steps: int = 32
+    periods: int = 1
+    scheme: Literal["bdf2", "euler", "quasi-steady"] = "bdf2"
+
+    def __post_init__(self) -> None:
+        _choice(self, "kind", ("squeeze",))
+        amp = _number(self, "amplitude", "(dimensionless)")
+        if not 0.0 <= amp < 1.0:
+            raise SceneError(f"transient.amplitude must lie in [0, 1) (dimensionless: the gap "
+                             f"would close), got {amp!r}")
+        if self.angular_frequency is not None:
+            _bounded(self, "angular_frequency", "rad/s", 0.0, 1e9, open_low=True)
+        _integer(self, "steps", 2, 10000, "time steps per period")
+        _integer(self, "periods", 1, 100, "periods")
+        _choice(self, "scheme", ("bdf2", "euler", "quasi-steady"))
 
 
 _SECTIONS: dict[str, type] = {
@@ -522,13 +780,22 @@ _SECTIONS: dict[str, type] = {
     "solver": SolverSpec,
     "thermal": Thermal,
     "traction": Traction,
+    "transient": Transient,
 }
 _REQUIRED = ("contact", "lubricant", "kinematics", "load")
 
 
 @dataclass(frozen=True, kw_only=True)
 class Scene:
-    """A complete, validated contact scene (SI units). See ``docs/scenes.md``."""
+    """A complete, validated contact scene (SI units). See ``docs/scenes.md``.
+
+    Besides each section's own checks, a scene checks the rules between sections: the
+    materials of an elastic scene, the thermal patch (its section, line contacts only,
+    both surfaces moving), the mesh layout of the contact kind, and for an elastic scene
+    with a load that its Hertz contact is small against the radii
+    (:data:`MAX_HERTZ_RATIO`) and that the viscosity at its Hertz pressure stays within
+    double precision (:data:`MAX_VISCOSITY_RATIO`).
+    """
 
     title: str = ""
     contact: Contact
@@ -541,10 +808,16 @@ class Scene:
     solver: SolverSpec = field(default_factory=SolverSpec)
     thermal: Thermal | None = None
     traction: Traction | None = None
+    transient: Transient | None = None
 
     def __post_init__(self) -> None:
-        if not isinstance(self.title, str):
-            raise SceneError(f"title must be a string, got {self.title!r}")
+        _check_title(self.title)
+        for name, klass in _SECTIONS.items():
+            value = getattr(self, name)
+            optional = name in ("materials", "thermal", "traction", "transient")
+            if not isinstance(value, klass) and not (optional and value is None):
+                raise SceneError(f"scene.{name} must be a {klass.__name__} (the [{name}] "
+                                 f"section), got {show_value(value)}")
         if self.model.elasticity != "rigid" and self.materials is None:
             raise SceneError(f"materials are required for model.elasticity = "
                              f"{self.model.elasticity!r} (give e1, nu1, e2, nu2 in Pa, or "
@@ -561,11 +834,106 @@ class Scene:
             if want_two != isinstance(nodes, tuple) or (want_two and len(nodes) != 2):
                 raise SceneError(f"mesh.nodes must be {'[nx, ny]' if want_two else 'one integer'} "
                                  f"for a {self.contact.kind} contact, got {list(nodes) if isinstance(nodes, tuple) else nodes!r}")
-        if self.model.thermal == "patch" and self.thermal is None:
-            raise SceneError("model.thermal = 'patch' needs a [thermal] section (at least "
-                             "thermal.oil_temperature in deg C and thermal.exponent)")
+        axes = self.mesh.axes()
+        if axes is not None and (axes[1] is None) != (self.contact.kind == "line"):
+            want = "a 1D mesh" if self.contact.kind == "line" else "quads on a tensor grid"
+            raise SceneError(f"mesh.file {self.mesh.file!r}: a {self.contact.kind} contact "
+                             f"needs {want}")
+        self._check_thermal()
+        self._check_transient()
         if self.mesh.y_range is not None and self.contact.kind == "line":
             raise SceneError("mesh.y_range applies to point contacts only")
+        self._check_hertz()
+
+    def _check_transient(self) -> None:
+        """A squeeze series: point contacts with a prescribed gap, isothermal."""
+        if self.transient is None:
+            return
+        if self.contact.kind != "point" or self.load.gap is None:
+            raise SceneError("a [transient] squeeze series needs contact.kind = 'point' and "
+                             "load.gap (m, the mean rigid offset h0 of h0(t)); got "
+                             f"contact.kind = {self.contact.kind!r}, load.gap = "
+                             f"{self.load.gap!r}")
+        if self.model.thermal != "none":
+            raise SceneError("a [transient] squeeze series is isothermal: model.thermal must "
+                             f"be 'none', got {self.model.thermal!r}")
+        if self.model.elasticity == "rigid":
+            lub = self.lubricant
+            if lub.density != "incompressible" or lub.viscosity_law == "roelands":
+                raise SceneError("a rigid squeeze series is solved instant by instant on the "
+                                 "linear path: it needs an incompressible lubricant with a "
+                                 "constant or Barus viscosity law")
+
+    def _check_thermal(self) -> None:
+        """The thermal patch: its section, line contacts only, both surfaces moving."""
+        if self.model.thermal == "none":
+            if self.thermal is not None:
+                raise SceneError("a [thermal] section is given but model.thermal = 'none': it "
+                                 "would be ignored; set model.thermal = 'patch' or remove the "
+                                 "section")
+            return
+        if self.thermal is None:
+            raise SceneError("model.thermal = 'patch' needs a [thermal] section (at least "
+                             "thermal.oil_temperature in deg C and thermal.exponent)")
+        if self.contact.kind != "line":
+            raise SceneError("model.thermal = 'patch' applies to line contacts only (the "
+                             "thermal patch couples a line-contact film to moving heat "
+                             f"sources), got contact.kind = {self.contact.kind!r}")
+        kin = self.kinematics
+        if kin.u1 == 0.0 or kin.u2 == 0.0:
+            raise SceneError("model.thermal = 'patch' needs both surface speeds non-zero (m/s): "
+                             "the flash temperature of a surface is that of a moving heat "
+                             f"source; got u1={kin.u1!r}, u2={kin.u2!r}")
+
+    def hertz_scales(self) -> dict[str, Any] | None:
+        """Hertz scales of an elastic scene with a load, or None (rigid, or a gap).
+
+        Returns
+        -------
+        dict or None
+            ``p_h`` the Hertz pressure [Pa] and ``widths``: one ``(what, width [m],
+            radius name, radius [m])`` per semi-axis (b for a line contact; a_x, a_y for a
+            point contact).
+        """
+        if (self.load.force is None or self.materials is None
+                or self.model.elasticity == "rigid"):
+            return None
+        from . import units  # numpy/scipy only; imported here to keep scene imports light
+
+        c, w = self.contact, self.load.force
+        if c.kind == "line":
+            b, p_h = units.hertz_line(w, c.rx, self.e_prime)
+            return {"p_h": p_h, "widths": [("Hertz half-width b", b, "contact.rx", c.rx)]}
+        hp = units.hertz_point(w, c.rx, c.ry, self.e_prime)
+        return {"p_h": hp.p_h, "widths": [("Hertz semi-axis a_x", hp.a_x, "contact.rx", c.rx),
+                                          ("Hertz semi-axis a_y", hp.a_y, "contact.ry", c.ry)]}
+
+    def _check_hertz(self) -> None:
+        """Elastic scenes with a load: the Hertz contact is small against the radii and
+        the viscosity at the Hertz pressure stays within double precision."""
+        hertz = self.hertz_scales()
+        if hertz is None:
+            return
+        w, p_h = self.load.force, hertz["p_h"]
+        unit = "N/m" if self.contact.kind == "line" else "N"
+        for what, width, radius_name, radius in hertz["widths"]:
+            if width > MAX_HERTZ_RATIO * radius:
+                raise SceneError(
+                    f"load.force = {w!r} {unit} gives a {what} = {width:.4g} m, "
+                    f"{width / radius:.3g} x {radius_name} = {radius!r} m (at most "
+                    f"{MAX_HERTZ_RATIO:g}): Hertz theory and the half-space model need a "
+                    f"contact small against the radii (Hertz pressure {p_h:.4g} Pa with "
+                    f"E' = {self.e_prime:.4g} Pa); check the load and its unit")
+        lub = self.lubricant
+        eta = viscosity_function(lub.viscosity_law, lub.viscosity, lub.effective_piezo)
+        with np.errstate(all="ignore"):
+            ratio = float(np.asarray(eta(np.array([p_h])))[0]) / lub.viscosity
+        if not ratio <= MAX_VISCOSITY_RATIO:
+            raise SceneError(
+                f"lubricant.piezo = {lub.piezo!r} 1/Pa ({lub.viscosity_law} law) at the Hertz "
+                f"pressure {p_h:.4g} Pa raises the viscosity by more than "
+                f"{MAX_VISCOSITY_RATIO:.3g} (alpha p_h = {lub.piezo * p_h:.4g}): beyond double "
+                "precision; check the load and piezo")
 
     # ------------------------------------------------------------------------------
     @property
@@ -581,7 +949,7 @@ class Scene:
         known = ("title",) + tuple(_SECTIONS)
         unknown = [k for k in data if k not in known]
         if unknown:
-            raise SceneError(f"unknown scene section(s) {', '.join(map(repr, unknown))}; "
+            raise SceneError(f"unknown scene section(s) {_names(unknown)}; "
                              f"known: {', '.join(known)}")
         for name in _REQUIRED:
             if name not in data:
@@ -594,11 +962,11 @@ class Scene:
                 continue
             section = data[name]
             if not isinstance(section, Mapping):
-                raise SceneError(f"[{name}] must be a table, got {section!r}")
+                raise SceneError(f"[{name}] must be a table, got {show_value(section)}")
             names = [f.name for f in fields(klass) if not f.name.startswith("_")]
             bad = [k for k in section if k not in names]
             if bad:
-                raise SceneError(f"unknown key(s) {', '.join(f'{name}.{k}' for k in bad)}; "
+                raise SceneError(f"unknown key(s) {_names(bad, prefix=name + '.')}; "
                                  f"known keys of [{name}]: {', '.join(names)}")
             required = [f.name for f in fields(klass) if not f.name.startswith("_")
                         and f.default is MISSING and f.default_factory is MISSING]
@@ -616,15 +984,26 @@ class Scene:
             text = path.read_text(encoding="utf-8")
         except OSError as exc:
             raise SceneError(f"cannot read scene file {str(path)!r}: {exc.strerror}") from None
-        return cls.from_toml_string(text, source=str(path))
+        return cls.from_toml_string(text, source=str(path), base_dir=path.parent)
 
     @classmethod
-    def from_toml_string(cls, text: str, source: str = "<string>") -> "Scene":
-        """Parse and validate a scene given as TOML text."""
+    def from_toml_string(cls, text: str, source: str = "<string>",
+                         base_dir: str | Path | None = None) -> "Scene":
+        """Parse and validate a scene given as TOML text; a relative ``mesh.file`` is
+        taken relative to ``base_dir`` (the scene file's folder) when given."""
+        if text.startswith("\ufeff"):  # a UTF-8 byte-order mark (some editors write one)
+            text = text[1:]
         try:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as exc:
             raise SceneError(f"{source} is not valid TOML: {exc}") from None
+        except RecursionError:
+            raise SceneError(f"{source} is not a scene: its arrays or tables are nested "
+                             "too deeply to read") from None
+        mesh = data.get("mesh")
+        if (base_dir is not None and isinstance(mesh, dict) and isinstance(mesh.get("file"), str)
+                and mesh["file"] and not Path(mesh["file"]).is_absolute()):
+            mesh["file"] = str(Path(base_dir) / mesh["file"])
         return cls.from_dict(data)
 
     def to_dict(self) -> dict[str, Any]:

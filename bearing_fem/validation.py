@@ -16,8 +16,12 @@ MAX_SHOWN = 60
 
 
 def shown(value: Any) -> str:
-    """``repr(value)``, cut to :data:`MAX_SHOWN` characters."""
-    text = repr(value)
+    """``repr(value)``, cut to :data:`MAX_SHOWN` characters (an integer too long to print
+    is described by its size)."""
+    try:
+        text = repr(value)
+    except ValueError:  # int beyond sys.get_int_max_str_digits()
+        return f"an integer of about {int(value.bit_length() * 0.30103) + 1} digits"
     return text if len(text) <= MAX_SHOWN else text[:MAX_SHOWN - 15] + f"... ({len(text)} chars)"
 
 

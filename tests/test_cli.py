@@ -2,8 +2,13 @@
 from __future__ import annotations
 
 import json
+import logging
+import re
 import subprocess
 import sys
+
+import numpy as np
+import pytest
 
 from bearing_fem import analytic, cli
 from bearing_fem.io import read_result, scene_to_toml
@@ -55,11 +60,23 @@ def test_version(capsys):
     assert bearing_fem.__version__ in capsys.readouterr().out
 
 
-def test_module_entry_point_help():
-    proc = subprocess.run([sys.executable, "-m", "bearing_fem.cli", "--help"],
+@pytest.mark.parametrize("module", ["bearing_fem", "bearing_fem.cli"])
+def test_module_entry_point_help(module):
+    proc = subprocess.run([sys.executable, "-m", module, "--help"],
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
-    assert "solve" in proc.stdout
+    assert "solve" in proc.stdout and "exit codes" in proc.stdout
+
+
+def test_help_stands_alone(capsys):
+    """The help itself explains the subcommands and every exit code (an installed copy
+    has no docs folder to point to)."""
+    assert cli.main(["--help"]) == 0
+    out = capsys.readouterr().out
+    for text in ("solve", "demo", "plot", "exit codes", "130", "-q", "anywhere"):
+        assert text in out, text
+    for code in ("0 ", "2 ", "3 "):
+        assert re.search(rf"^\s+{code}\s+\S", out, re.M), f"exit code {code}explained"
 
 
 def test_usage_error_exit_2(capsys):
@@ -89,17 +106,9 @@ def test_demo_writes_four_files(tmp_path, monkeypatch, capsys):
 
 def test_demo_out_option(tmp_path, monkeypatch):
     """--out is honoured (the solve itself is replaced: covered by the test above)."""
-    import bearing_fem.contacts.dispatch
-    from bearing_fem.result import Result
+    import bearing_fem.contacts.dispatch as dispatch
 
-    def fake_solve(scene):
-        import numpy as np
-
-        x = np.linspace(-1e-3, 1e-3, 11)
-        return Result(success=True, status="converged", message="fake", scene=scene, x=x,
-                      pressure=np.zeros_like(x), film=np.full_like(x, 1e-6), h0=1e-6)
-
-    monkeypatch.setattr(bearing_fem.contacts.dispatch, "solve", fake_solve)
+    monkeypatch.setattr(dispatch, "solve", _fake_solve())
     out = tmp_path / "elsewhere"
     assert cli.main(["demo", "--out", str(out)]) == 0
     assert sorted(p.name for p in out.iterdir()) == sorted(
@@ -118,14 +127,136 @@ def test_solve_exit_0(tmp_path, capsys):
     assert "linear" in captured.out and captured.err == ""
 
 
-def test_solve_verbose_logs_to_stderr(tmp_path, capsys):
-    import logging
+@pytest.mark.parametrize("argv_of,level,quiet", [
+    (lambda scene, out: ["-v", "solve", scene, "--out", out], logging.INFO, False),
+    (lambda scene, out: ["solve", scene, "-v", "--out", out], logging.INFO, False),
+    (lambda scene, out: ["solve", scene, "--out", out, "-vv"], logging.DEBUG, False),
+    (lambda scene, out: ["-v", "solve", "--verbose", scene, "--out", out], logging.DEBUG,
+     False),
+    (lambda scene, out: ["solve", scene, "-q", "--out", out], logging.ERROR, True),
+    (lambda scene, out: ["--quiet", "solve", scene, "--out", out], logging.ERROR, True),
+], ids=["v-before", "v-after", "vv-at-end", "v-twice", "q-after", "quiet-before"])
+def test_verbosity_anywhere(tmp_path, capsys, monkeypatch, argv_of, level, quiet):
+    import bearing_fem.contacts.dispatch as dispatch
 
-    logging.getLogger("bearing_fem").handlers.clear()
     out = tmp_path / "out"
-    assert cli.main(["-v", "solve", _write(tmp_path, RIGID_OK), "--out", str(out)]) == 0
-    assert logging.getLogger("bearing_fem").getEffectiveLevel() == logging.INFO
-    logging.getLogger("bearing_fem").setLevel(logging.NOTSET)
+    logger = logging.getLogger("bearing_fem")
+    before = (logger.level, logger.propagate, list(logger.handlers))
+    real_solve, seen = dispatch.solve, []
+
+    def solve_and_look(scene):  # the level in force during the command
+        seen.append(logger.level)
+        return real_solve(scene)
+
+    monkeypatch.setattr(dispatch, "solve", solve_and_look)
+    assert cli.main(argv_of(_write(tmp_path, RIGID_OK), str(out))) == 0
+    assert seen == [level]
+    assert (logger.level, logger.propagate, list(logger.handlers)) == before, \
+        "main() restores the package logger"
+    captured = capsys.readouterr()
+    assert ("h_central" in captured.out) != quiet, "-q prints no summary"
+    if level <= logging.INFO:
+        assert "INFO bearing_fem.cli: solving" in captured.err
+    else:
+        assert captured.err == ""
+    assert (out / "summary.json").is_file()
+
+
+def test_split_verbosity():
+    assert cli.split_verbosity(["-vv", "solve", "-q", "a.toml", "--verbose"]) == (
+        ["solve", "a.toml"], 2)
+    # after "--" nothing is an option; other dashed tokens are left to argparse
+    assert cli.split_verbosity(["plot", "--", "-v"]) == (["plot", "--", "-v"], 0)
+    assert cli.split_verbosity(["-o", "-v.png", "-vq"]) == (["-o", "-v.png", "-vq"], 0)
+
+
+@pytest.mark.parametrize("argv", [["solve", "SCENE", "--out", ""], ["demo", "--out", " "],
+                                  ["demo", "-o", ""], ["plot", "RESULT", "--out", ""]])
+def test_empty_out_is_refused(tmp_path, monkeypatch, capsys, argv):
+    monkeypatch.chdir(tmp_path)
+    out = tmp_path / "out"
+    assert cli.main(["solve", _write(tmp_path, RIGID_OK), "--out", str(out)]) == 0
+    before = sorted(p.name for p in tmp_path.iterdir())
+    argv = [{"SCENE": str(tmp_path / "scene.toml"), "RESULT": str(out / "result.h5")}.get(a, a)
+            for a in argv]
+    assert cli.main(argv) == 2
+    assert "--out must name a directory or file, got an empty string" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == before, "nothing written in ."
+
+
+def _fake_solve(warnings=(), raise_=None, runtime_warning=False):
+    def fake(scene):
+        from bearing_fem.result import Result
+
+        if raise_ is not None:
+            raise raise_
+        if runtime_warning:
+            np.log(np.zeros(3))  # a numpy RuntimeWarning outside any errstate
+        x = np.linspace(-1e-3, 1e-3, 11)
+        return Result(success=True, status="converged", message="fake", scene=scene, x=x,
+                      pressure=np.zeros_like(x), film=np.full_like(x, 1e-6), h0=1e-6,
+                      warnings=list(warnings))
+    return fake
+
+
+def test_ctrl_c_exits_130_with_one_line(tmp_path, monkeypatch, capsys):
+    import bearing_fem.contacts.dispatch as dispatch
+
+    monkeypatch.setattr(dispatch, "solve", _fake_solve(raise_=KeyboardInterrupt()))
+    out = tmp_path / "out"
+    assert cli.main(["solve", _write(tmp_path, RIGID_OK), "--out", str(out)]) == 130
+    err = capsys.readouterr().err
+    assert err == "bearing-fem: interrupted\n"
+    assert not out.exists()
+
+
+def test_sigint_of_a_running_solve(tmp_path):
+    """A real Ctrl-C (SIGINT) during a solve: exit 130, one line, no traceback, no files."""
+    import signal
+
+    data = {"contact": {"kind": "point", "rx": 0.0127, "ry": 0.0127},
+            "materials": {"reduced_modulus": 2.3e11},
+            "lubricant": {"viscosity": 0.04, "piezo": 2.2e-8},
+            "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 30.0},
+            "mesh": {"nodes": [257, 257]}}  # several seconds: interrupted long before
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "bearing_fem", "-v", "solve",
+                             _write(tmp_path, data), "--out", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        first = proc.stderr.readline()
+        assert "solving" in first, first
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err and err.strip().splitlines()[-1] == "bearing-fem: interrupted"
+    assert not out.exists() or not any(out.iterdir())
+
+
+def test_python_warnings_go_to_the_log(tmp_path, monkeypatch, capsys):
+    """A numpy RuntimeWarning never reaches the terminal raw; -v shows it as a log line."""
+    import bearing_fem.contacts.dispatch as dispatch
+
+    monkeypatch.setattr(dispatch, "solve", _fake_solve(runtime_warning=True))
+    scene = _write(tmp_path, RIGID_OK)
+    assert cli.main(["solve", scene, "--out", str(tmp_path / "a")]) == 0
+    err = capsys.readouterr().err
+    assert "RuntimeWarning" not in err and "divide by zero" not in err, err
+    assert cli.main(["solve", scene, "--out", str(tmp_path / "b"), "-v"]) == 0
+    err = capsys.readouterr().err
+    assert "INFO bearing_fem.cli: RuntimeWarning: divide by zero" in err, err
+    assert ".py:" not in err, "no internal file paths at info level"
+
+
+def test_summary_prints_the_warnings(tmp_path, monkeypatch, capsys):
+    import bearing_fem.contacts.dispatch as dispatch
+
+    monkeypatch.setattr(dispatch, "solve", _fake_solve(warnings=["first thing", "second"]))
+    assert cli.main(["solve", _write(tmp_path, RIGID_OK), "--out", str(tmp_path / "o")]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"warning\s+first thing", out) and re.search(r"warning\s+second", out)
 
 
 def test_solve_exit_2_on_scene_error(tmp_path, capsys):
@@ -171,9 +302,35 @@ def test_solve_exit_3_not_converged(tmp_path, capsys):
     out = tmp_path / "out"
     assert cli.main(["solve", _write(tmp_path, data), "--out", str(out)]) == 3
     err = capsys.readouterr().err
-    assert "no converged solution" in err and "residual" in err
+    assert "no converged solution" in err
+    # only numbers whose meaning is known, each with its unit
+    assert re.search(r"\d+ Newton iterations", err)
+    assert re.search(r"last scaled Newton residual \S+ \(dimensionless; tolerance 1e-08\)",
+                     err), err
+    assert re.search(r"; [0-9.e+-]+ s\)", err), "wall time in s"
     summary = _summary(out)
     assert summary["success"] is False and summary["status"] != "no_solution"
+
+
+def test_exit_3_thermal_names_the_temperature_residual(tmp_path, capsys):
+    """A thermal loop stopped after one iteration: its residual is a temperature in K
+    and is printed as one; the Newton residual is labelled as the isothermal solve's."""
+    data = {"contact": {"kind": "line", "rx": 0.01, "length": 0.02},
+            "materials": {"e1": 2.1e11, "nu1": 0.3, "e2": 2.1e11, "nu2": 0.3},
+            "lubricant": {"viscosity": 0.05, "piezo": 2e-8},
+            "kinematics": {"u1": 2.2, "u2": 1.8}, "load": {"force": 2e5},
+            "model": {"elasticity": "local", "thermal": "patch"}, "mesh": {"nodes": 401},
+            "thermal": {"oil_temperature": 60.0, "exponent": 2.93, "max_iterations": 1},
+            "traction": {"model": "eyring"}}
+    out = tmp_path / "out"
+    assert cli.main(["solve", _write(tmp_path, data), "--out", str(out)]) == 3
+    err = capsys.readouterr().err
+    assert "status max_iterations" in err
+    m = re.search(r"thermal residual \|G\(T\) - T\| = (\S+) K", err)
+    assert m, err
+    assert float(m.group(1)) == pytest.approx(_summary(out)["thermal_residual"], rel=1e-2)
+    assert "last scaled Newton residual of the isothermal solve" in err
+    assert not re.search(r"last scaled residual", err)
 
 
 def test_plot_subcommand(tmp_path, capsys):
@@ -188,13 +345,34 @@ def test_plot_subcommand(tmp_path, capsys):
     assert (out / "result.png").read_bytes()[:8] == PNG_MAGIC
 
 
-def test_plot_falls_back_without_plot_module(tmp_path, monkeypatch):
+def test_plot_refuses_point_kinds_for_a_line_result(tmp_path, capsys):
     out = tmp_path / "out"
     assert cli.main(["solve", _write(tmp_path, RIGID_OK), "--out", str(out)]) == 0
-    monkeypatch.setitem(sys.modules, "bearing_fem.plot", None)  # import now fails
-    png = tmp_path / "fallback.png"
-    assert cli.main(["plot", str(out), "--out", str(png)]) == 0
+    capsys.readouterr()
+    for kind in ("map", "surface"):
+        png = tmp_path / f"{kind}.png"
+        assert cli.main(["plot", str(out), "--kind", kind, "--out", str(png)]) == 2
+        err = capsys.readouterr().err
+        assert f"--kind {kind} applies to point contacts only" in err and "line" in err
+        assert not png.exists()
+
+
+@pytest.mark.parametrize("status", ["no_solution", "max_iterations", "stalled", "diverged",
+                                    "budget_exhausted", "time_limit"])
+def test_plot_of_a_failure_writes_a_stamped_figure_and_exits_3(tmp_path, capsys, status):
+    from bearing_fem.contacts.dispatch import solve
+    from bearing_fem.io import export
+    from bearing_fem.scene import Scene
+
+    result = solve(Scene.from_dict(RIGID_OK))
+    result.status, result.success = status, False
+    export(result, tmp_path)
+    png = tmp_path / "fig.png"
+    assert cli.main(["plot", str(tmp_path), "--out", str(png)]) == 3
     assert png.read_bytes()[:8] == PNG_MAGIC
+    err = capsys.readouterr().err
+    assert f"(status {status})" in err and "stamped with the status" in err
+    assert ("reduced pressure q" in err) == (status == "no_solution")
 
 
 def test_plot_exit_2_on_missing_or_foreign_file(tmp_path, capsys):

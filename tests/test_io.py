@@ -146,6 +146,75 @@ def test_export_is_atomic_on_failure(line_result, tmp_path, monkeypatch):
     assert after == before
 
 
+def _dead_pid() -> int:
+    """The process id of a process that has ended (a child that already exited)."""
+    import subprocess
+    import sys
+
+    proc = subprocess.Popen([sys.executable, "-c", "pass"])
+    proc.wait()
+    return proc.pid
+
+
+def test_stale_temporaries_of_dead_processes_are_removed(line_result, tmp_path):
+    """Leftovers of a killed export are removed by the next one; a running export's
+    files, old-looking but unrelated files and the user's own files are kept."""
+    import os
+    import time
+
+    dead = _dead_pid()
+    stale = [tmp_path / f".summary.json.{dead}.0123456789ab.tmp.json",
+             tmp_path / f".result.h5.{dead}.0123456789ab.tmp.h5",
+             tmp_path / f".squeeze_0001.vtu.{dead}.abcdefabcdef.tmp.vtu"]
+    alive = tmp_path / f".fields.vtu.{os.getpid()}.0123456789ab.tmp.vtu"
+    unrelated = [tmp_path / ".notes.tmp", tmp_path / f".x.{dead}.0123456789ab.tmp.h5",
+                 tmp_path / "mine.txt"]  # wrong suffix for its final name; user files
+    for path in stale + [alive] + unrelated:
+        path.write_bytes(b"half-written")
+    removed = io.clean_stale_temporaries(tmp_path)
+    assert sorted(removed) == sorted(stale)
+    assert all(p.exists() for p in [alive] + unrelated)
+    # a running process id whose file is older than the stale age: removed
+    old = time.time() - io.STALE_TEMP_AGE - 10.0
+    os.utime(alive, (old, old))
+    files = bf.export(line_result, tmp_path)
+    assert not alive.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [f.name for f in files.values()] + [p.name for p in unrelated])
+
+
+def test_sigkill_during_export_leaves_files_that_the_next_export_removes(line_result,
+                                                                         tmp_path):
+    """A real SIGKILL between writing the temporaries and moving them into place."""
+    import signal
+    import subprocess
+    import sys
+
+    out = tmp_path / "out"
+    script = f"""
+import time, bearing_fem as bf
+from bearing_fem import io
+from bearing_fem.scene import Scene
+result = bf.solve(Scene.from_dict({RIGID_LINE!r}))
+def stuck(result, path):
+    path.write_bytes(b"half")
+    print("writing", flush=True)
+    time.sleep(60)
+io.write_vtu = stuck
+io.export(result, {str(out)!r})
+"""
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    try:
+        assert proc.stdout.readline().strip() == "writing"
+        proc.send_signal(signal.SIGKILL)
+    finally:
+        proc.wait(timeout=30)
+    left = sorted(p.name for p in out.iterdir())
+    assert len(left) == 3 and all(n.startswith(".") and ".tmp" in n for n in left), left
+    bf.export(line_result, out)
+    assert sorted(p.name for p in out.iterdir()) == sorted(io.FILES.values())
+
+
 def _point_result(x_axis, y_axis, nodal: bool, shuffle: bool, grid2d: bool = False) -> Result:
     scene = Scene.from_dict(RIGID_POINT)
     xx, yy = np.meshgrid(x_axis, y_axis)  # (ny, nx)

@@ -1,4 +1,4 @@
-"""Bad input: every scene field rejected with a message naming it (STYLE.md, tests).
+"""Bad input: every scene field rejected with a message naming its field, value and unit.
 
 Each case mutates a valid base scene and must give
 
@@ -49,6 +49,16 @@ POINT = {
 }
 THERMAL = {"oil_temperature": 40.0, "exponent": 2.5}
 TRACTION = {"model": "eyring"}
+#: A valid squeeze series: a rigid ball with a vibrating gap.
+SQUEEZE = {
+    "contact": {"kind": "point", "rx": 0.00635, "ry": 0.00635},
+    "lubricant": {"viscosity": 0.0106, "piezo": 2e-8},
+    "kinematics": {"u1": 2.0, "u2": 2.0},
+    "load": {"gap": 2e-7},
+    "model": {"elasticity": "rigid", "cavitation": "none"},
+    "transient": {"kind": "squeeze", "amplitude": 0.3, "angular_frequency": 2e4, "steps": 8,
+                  "periods": 1, "scheme": "bdf2"},
+}
 
 
 def _line_elastic() -> dict:
@@ -274,6 +284,101 @@ CASES = [
           "limiting_shear_stress", "limiting_slope", base="traction"),
 ]
 
+#: Finite extremes that passed validation once and crashed (or overflowed) in the solve,
+#: and unit slips that cannot be computed: each bound is in docs/scenes.md ("Ranges").
+EXTREMES = [
+    _case("contact.rx-subnormal", {"contact.rx": 5e-324}, "contact.rx", "5e-324", "m"),
+    _case("contact.rx-huge", {"contact.rx": 1e308}, "contact.rx", "1e+308", "m"),
+    _case("contact.ry-huge", {"contact.ry": 1e308}, "contact.ry", "m", base="point"),
+    _case("contact.ry-ratio", {"contact.rx": 1e-6, "contact.ry": 1.0}, "contact.ry / contact.rx",
+          "line contact", base="point"),
+    _case("contact.length-huge", {"contact.length": 1e308}, "contact.length", "m"),
+    _case("materials.e1-in-GPa", {"materials.e1": 208.0}, "materials.e1", "208", "Pa"),
+    _case("materials.reduced_modulus-small", {"materials.reduced_modulus": 1e5},
+          "materials.reduced_modulus", "Pa", base="point"),
+    _case("materials-poisson-near-minus-one",
+          {"materials.nu1": -0.99999999999999, "materials.nu2": -0.99999999999999,
+           "materials.e1": 1e29, "materials.e2": 1e29}, "materials", "E'", "Pa"),
+    _case("lubricant.viscosity-huge", {"lubricant.viscosity": 1e308}, "lubricant.viscosity",
+          "Pa s"),
+    _case("lubricant.viscosity-tiny", {"lubricant.viscosity": 1e-300}, "lubricant.viscosity",
+          "Pa s"),
+    _case("lubricant.viscosity-roelands-low",
+          {"lubricant.viscosity_law": "roelands", "lubricant.viscosity": 1e-5},
+          "lubricant.viscosity", "Roelands"),
+    _case("lubricant.piezo-overflow", {"lubricant.piezo": 1e-6, "load.force": 2e7},
+          "lubricant.piezo", "1/Pa", "double precision", base="line-elastic"),
+    _case("kinematics-huge-speeds", {"kinematics.u1": 1e308, "kinematics.u2": 1e308},
+          "kinematics.u1", "m/s"),
+    _case("kinematics-mean-speed-tiny", {"kinematics.u1": 1e-9, "kinematics.u2": 1e-9},
+          "kinematics", "mean speed", "m/s"),
+    _case("load.force-huge", {"load.force": 1e308}, "load.force", "N"),
+    _case("load.force-401-digits", {"load.force": 10**400, "load.gap": DELETE}, "load.force",
+          "401 chars",
+          "floating-point range"),
+    _case("load.force-hertz-width", {"load.force": 1e9}, "load.force", "a_x",
+          "contact.rx", "Hertz", base="point"),
+    _case("load.force-line-hertz-width", {"load.force": 1e11}, "load.force", "N/m",
+          "Hertz half-width b", base="line-elastic"),
+    _case("load.gap-subnormal", {"load.gap": 5e-324}, "load.gap", "m"),
+    _case("load.gap-huge", {"load.gap": 1.0}, "load.gap", "m"),
+    _case("title-nul", {"title": "roller\x00"}, "title", "U+0000"),
+    _case("title-escape", {"title": "roller\x1b[31m"}, "title", "control character"),
+    _case("title-newline", {"title": "two\nlines"}, "title", "one line"),
+    _case("title-long", {"title": "t" * 1_000_000}, "title", "1000000"),
+    _case("mesh.x_range-huge", {"mesh.x_range": [-1e308, 1.5]}, "mesh.x_range"),
+    _case("mesh.x_range-401-digits", {"mesh.x_range": [-(10**400), 1.5]}, "mesh.x_range",
+          "chars"),
+    _case("solver.time_limit-huge", {"solver.time_limit": 1e308}, "solver.time_limit", "s"),
+    _case("thermal.oil_temperature-huge", {"thermal.oil_temperature": 1e308},
+          "thermal.oil_temperature", "deg C", base="thermal"),
+    _case("thermal.exponent-huge", {"thermal.exponent": 100.0}, "thermal.exponent",
+          base="thermal"),
+    _case("thermal.conductivity-subnormal", {"thermal.conductivity": 5e-324},
+          "thermal.conductivity", "W/(m K)", base="thermal"),
+    _case("thermal.piezo_values-401-digits",
+          {"thermal.piezo_temperatures": [40.0], "thermal.piezo_values": [10**400]},
+          "thermal.piezo_values", "chars", base="thermal"),
+    _case("thermal-section-without-patch", {"model.thermal": "none"}, "[thermal]",
+          "model.thermal", base="thermal"),
+    _case("thermal-patch-on-point",
+          {"model.thermal": "patch", "thermal": dict(THERMAL)}, "model.thermal",
+          "line contacts only", base="point"),
+    _case("thermal-patch-standing-surface", {"kinematics.u2": 0.0}, "model.thermal",
+          "non-zero", "u2=0.0", base="thermal"),
+    _case("traction.eyring_stress-subnormal", {"traction.eyring_stress": 5e-324},
+          "traction.eyring_stress", "Pa", base="traction"),
+    _case("traction.limiting_slope-above-1", {"traction.limiting_slope": 2.0},
+          "traction.limiting_slope", "friction coefficient", base="traction"),
+    _case("mesh.file-missing-file", {"mesh.nodes": DELETE, "mesh.x_range": DELETE,
+                                     "mesh.file": "no/such/grid.vtu"}, "mesh.file",
+          "does not exist"),
+    _case("mesh.file-type", {"mesh.nodes": DELETE, "mesh.x_range": DELETE, "mesh.file": 5},
+          "mesh.file"),
+    _case("mesh.file-with-nodes", {"mesh.file": "grid.vtu"}, "mesh.file", "mesh.nodes"),
+    # --- transient (squeeze series) ----------------------------------------------------
+    _case("transient.kind-value", {"transient.kind": "impact"}, "transient.kind", "squeeze",
+          base="squeeze"),
+    _case("transient.amplitude-one", {"transient.amplitude": 1.0}, "transient.amplitude",
+          "[0, 1)", base="squeeze"),
+    _case("transient.amplitude-missing", {"transient.amplitude": DELETE},
+          "transient.amplitude", base="squeeze"),
+    _case("transient.angular_frequency-sign", {"transient.angular_frequency": -5.0},
+          "transient.angular_frequency", "rad/s", base="squeeze"),
+    _case("transient.steps-one", {"transient.steps": 1}, "transient.steps", base="squeeze"),
+    _case("transient.periods-float", {"transient.periods": 1.5}, "transient.periods",
+          base="squeeze"),
+    _case("transient.scheme-value", {"transient.scheme": "rk4"}, "transient.scheme",
+          base="squeeze"),
+    _case("unknown-key-transient", {"transient.colour": 1}, "transient.colour", "known keys",
+          base="squeeze"),
+    _case("transient-under-load", {"load": {"force": 30.0}}, "[transient]", "load.gap",
+          base="squeeze"),
+    _case("transient-rigid-roelands", {"lubricant.viscosity_law": "roelands"}, "rigid",
+          "Barus", base="squeeze"),
+]
+CASES += EXTREMES
+
 
 def _base(name: str) -> dict:
     if name == "line":
@@ -282,6 +387,8 @@ def _base(name: str) -> dict:
         return copy.deepcopy(POINT)
     if name == "line-elastic":
         return _line_elastic()
+    if name == "squeeze":
+        return copy.deepcopy(SQUEEZE)
     if name in ("thermal", "traction"):
         if name not in scene_module._SECTIONS:
             pytest.skip(f"[{name}] is not a section of the installed bearing_fem.scene")
@@ -310,7 +417,8 @@ def _apply(data: dict, changes: dict) -> dict:
     return data
 
 
-@pytest.mark.parametrize("base", ["line", "point", "line-elastic", "thermal", "traction"])
+@pytest.mark.parametrize("base", ["line", "point", "line-elastic", "thermal", "traction",
+                                  "squeeze"])
 def test_bases_are_valid(base):
     """Positive control: without a change, every base scene validates."""
     Scene.from_dict(_base(base))
@@ -351,7 +459,10 @@ def test_cli_rejects_with_exit_2(base, changes, expect, tmp_path, capsys):
     ("[contact]\nrx = 0.01\nrx = 0.02\n", "not valid TOML"),
     ("[lubricant]\nviscosity = \n", "not valid TOML"),
     ("title = 'unterminated\n", "not valid TOML"),
-], ids=["open-table", "duplicate-key", "missing-value", "open-string"])
+    ("title = " + "[" * 100_000 + "]" * 100_000 + "\n", "nested too deeply"),
+    ("title = " + "{a=" * 5000 + "1" + "}" * 5000 + "\n", "nested too deeply"),
+], ids=["open-table", "duplicate-key", "missing-value", "open-string", "deep-array",
+        "deep-table"])
 def test_cli_broken_toml(tmp_path, capsys, text, expect):
     path = tmp_path / "broken.toml"
     path.write_text(text, encoding="utf-8")
@@ -404,3 +515,46 @@ def test_messages_name_value_and_unit():
     with pytest.raises(SceneError) as info:
         Scene.from_dict(_apply(_base("line"), {"contact.rx": float("nan")}))
     assert "contact.rx" in str(info.value) and "nan" in str(info.value)
+
+
+def test_long_values_are_echoed_short(tmp_path, capsys):
+    """A 1 MB string, a 5000-digit integer and a 1 MB key give one short line each."""
+    long_string = "x" * 1_000_000
+    for changes, expect in (({"lubricant.viscosity": long_string}, "1000002 chars"),
+                            ({"lubricant.viscosity": 10**5000}, "digits"),
+                            ({"lubricant." + long_string: 1.0}, "characters"),
+                            ({"contact.kind": long_string}, "chars")):
+        data = _apply(_base("line"), changes)
+        with pytest.raises(SceneError) as info:
+            Scene.from_dict(data)
+        msg = str(info.value)
+        assert expect in msg and len(msg) < 400, msg[:500]
+    path = tmp_path / "long.toml"
+    path.write_text(scene_to_toml(_apply(_base("line"), {"lubricant.viscosity": long_string})),
+                    encoding="utf-8")
+    assert cli.main(["solve", str(path), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert len(err) < 400 and "lubricant.viscosity" in err, err[:500]
+
+
+def test_byte_order_mark_is_accepted(tmp_path):
+    """Some editors start UTF-8 files with a byte-order mark: the scene reads as without."""
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + scene_to_toml(LINE).encode("utf-8"))
+    assert Scene.from_toml(path) == Scene.from_dict(LINE)
+    assert cli.main(["solve", str(path), "--out", str(tmp_path / "out")]) == 0
+
+
+def test_bounds_are_inclusive_where_documented():
+    """Positive controls at the documented ends of the ranges (docs/scenes.md, "Ranges")."""
+    from bearing_fem import scene as sc
+
+    ok = [{"contact.rx": sc.LENGTH_RANGE[0]}, {"contact.rx": sc.LENGTH_RANGE[1]},
+          {"lubricant.viscosity": sc.VISCOSITY_RANGE[0]},
+          {"lubricant.viscosity": sc.VISCOSITY_RANGE[1]},
+          {"kinematics.u1": sc.MAX_SPEED, "kinematics.u2": -sc.MAX_SPEED + 1.0},
+          {"load.gap": sc.GAP_RANGE[0]}, {"load.gap": sc.GAP_RANGE[1]},
+          {"materials.e1": sc.MODULUS_RANGE[0]}, {"title": "t" * sc.MAX_TITLE},
+          {"title": "Rolle auf Innenring, \u00d8 20 mm \u2013 \u03b7 = 0.05 Pa s"}]
+    for changes in ok:
+        Scene.from_dict(_apply(_base("line"), changes))

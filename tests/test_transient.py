@@ -264,8 +264,13 @@ def test_start_failure_has_nothing_to_export(tmp_path):
                                           max_iterations=1)
     assert series.status == "max_iterations" and series.results == []
     assert "step 0" in series.message
-    with pytest.raises(ValueError, match="nothing to export"):
-        bf.io.export_series(series, tmp_path)
+    files = bf.io.export_series(series, tmp_path)
+    assert set(files) == {"summary"}, "nothing solved: the summary alone"
+    import json
+
+    summary = json.loads(files["summary"].read_text())
+    assert summary["status"] == "max_iterations" and summary["success"] is False
+    assert summary["instants"] == 0 and "step 0" in summary["message"]
 
 
 @pytest.mark.parametrize("kwargs, match", [

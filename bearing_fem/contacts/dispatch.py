@@ -16,7 +16,8 @@ Paths (a scene pays only for what it needs):
 
 Floating-point warnings of intermediate iterates never reach the user: they are
 silenced during the solve and logged at debug level; a failure is a status and a
-message, never a warning.
+message, never a warning. Inputs outside the range the package knows to be plausible
+(:func:`bearing_fem.checks.input_warnings`) head the result's ``warnings``.
 """
 from __future__ import annotations
 
@@ -26,6 +27,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ..checks import input_warnings
 from ..errors import SceneError
 from ..result import Result
 from ..scene import Scene
@@ -70,6 +72,9 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
         result = _route(scene, boundary_pressure, progress)
     for w in caught:
         log.debug("suppressed during the solve: %s: %s", w.category.__name__, w.message)
+    notes = input_warnings(scene)
+    if notes:
+        result.warnings = notes + [w for w in result.warnings if w not in notes]
     return result
 
 
@@ -89,3 +94,64 @@ def _route(scene: Scene, boundary_pressure, progress) -> Result:
     from .line import solve_line
 
     return solve_line(scene, boundary_pressure=boundary_pressure, progress=progress)
+
+
+def solve_series(scene: Scene, *, progress: Callable[[dict[str, Any]], None] | None = None):
+    """Solve the squeeze series of a scene with a ``[transient]`` section.
+
+    h0(t) = h0 (1 + amplitude cos(omega t)) with ``load.gap`` = h0: ``transient.steps``
+    steps per period over ``transient.periods`` periods. Rigid scenes are solved instant
+    by instant on the linear path (:func:`bearing_fem.contacts.series.solve_squeeze_series`:
+    the rigid film has no memory); elastic ones with the time derivative of the film
+    (:func:`bearing_fem.contacts.transient.solve_elastic_squeeze_series`, scheme
+    ``transient.scheme``).
+
+    Parameters
+    ----------
+    scene : Scene
+        With a ``[transient]`` section (point contact, ``load.gap``).
+    progress : callable, optional
+        Called with ``{"event": "step", "step": k, "steps": n}`` before each instant is
+        reported (elastic series report after the whole series).
+
+    Returns
+    -------
+    SqueezeSeries or ElasticSqueezeSeries
+        ``status``, ``success``, ``message``, ``summary()`` and one Result per instant;
+        never raises for a failed instant (the series stops there, with its status).
+
+    Raises
+    ------
+    SceneError
+        The scene has no ``[transient]`` section.
+    """
+    if not isinstance(scene, Scene):
+        raise SceneError(f"solve_series() needs a Scene, got {type(scene).__name__}")
+    tr = scene.transient
+    if tr is None:
+        raise SceneError("solve_series() needs a [transient] section (a squeeze series of a "
+                         "point contact with load.gap)")
+    with np.errstate(all="ignore"), warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        if scene.model.elasticity == "rigid":
+            import math
+
+            from .series import solve_squeeze_series
+
+            h0 = scene.load.gap
+            omega = tr.angular_frequency or (scene.kinematics.mean_speed
+                                             / math.sqrt(2.0 * scene.contact.rx * h0))
+            times = np.arange(tr.steps * tr.periods + 1) * (2.0 * math.pi / (omega * tr.steps))
+            series = solve_squeeze_series(scene, eps=tr.amplitude, omega=omega, times=times)
+        else:
+            from .transient import solve_elastic_squeeze_series
+
+            series = solve_elastic_squeeze_series(
+                scene, eps=tr.amplitude, omega=tr.angular_frequency, n_steps=tr.steps,
+                periods=tr.periods, scheme=tr.scheme)
+    for w in caught:
+        log.debug("suppressed during the series: %s: %s", w.category.__name__, w.message)
+    if progress is not None:
+        for k in range(len(series.results)):
+            progress({"event": "step", "step": k, "steps": len(series.results)})
+    return series

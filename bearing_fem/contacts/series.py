@@ -12,11 +12,13 @@ import math
 import time
 from dataclasses import dataclass
 from dataclasses import replace as dc_replace
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 
 from ..errors import SceneError
+from ..result import SUCCESS_STATUSES, number_or_none
+from ..version import VERSION
 from .driver import solve_linear_model
 from .point import PointModel, is_linear
 
@@ -37,6 +39,8 @@ class SqueezeSeries:
         Maximum pressure of each step [Pa] (``inf`` for a step without solution).
     results : list of Result
         One quasi-steady solve per step, all on the same grid.
+    scene : Scene or None
+        The scene of the series (``load.gap`` = the mean offset h0).
     """
 
     times: np.ndarray
@@ -44,10 +48,59 @@ class SqueezeSeries:
     squeeze_velocity: np.ndarray
     p_max: np.ndarray
     results: list
+    scene: Any = None
 
     @property
     def statuses(self) -> list[str]:
         return [r.status for r in self.results]
+
+    @property
+    def status(self) -> str:
+        """``linear`` when every instant was solved, else the first failed instant's."""
+        return next((st for st in self.statuses if st not in SUCCESS_STATUSES), "linear")
+
+    @property
+    def success(self) -> bool:
+        return self.status in SUCCESS_STATUSES
+
+    @property
+    def message(self) -> str:
+        failed = [k for k, r in enumerate(self.results) if not r.success]
+        if not failed:
+            return (f"{len(self.results)} instants of the rigid squeeze solved on the linear "
+                    "path (no memory: each instant on its own)")
+        r = self.results[failed[0]]
+        return (f"{len(failed)} of {len(self.results)} instants without solution, the first "
+                f"at t = {self.times[failed[0]]:.6g} s: {r.message}")
+
+    def summary(self) -> dict[str, Any]:
+        """The series as a dict of lists (SI): status, success, message, the time and gap
+        of every instant with p_max, h_min, h_central and load (None where an instant has
+        no solution), iteration and time totals, warnings, units, version, scene."""
+        def column(key: str) -> list:
+            return [number_or_none(r.quantities.get(key)) if r.success else None
+                    for r in self.results]
+
+        warnings: list[str] = []
+        for r in self.results:
+            warnings += [w for w in r.warnings if w not in warnings]
+        return {
+            "status": self.status, "success": bool(self.success), "message": self.message,
+            "kind": "squeeze series", "scheme": getattr(self, "scheme", "quasi-steady"),
+            "instants": len(self.results),
+            "times": [float(t) for t in self.times], "gap": [float(g) for g in self.gap],
+            "squeeze_velocity": [float(v) for v in self.squeeze_velocity],
+            "p_max": column("p_max"), "h_min": column("h_min"),
+            "h_central": column("h_central"), "load": column("load"),
+            "newton_iterations": int(sum(r.newton_iterations for r in self.results)),
+            "linear_solves": int(sum(r.linear_solves for r in self.results)),
+            "wall_time_s": float(sum(r.wall_time_s for r in self.results)),
+            "warnings": warnings,
+            "units": {"times": "s", "gap": "m", "squeeze_velocity": "m/s", "p_max": "Pa",
+                      "h_min": "m", "h_central": "m", "load": "N", "wall_time_s": "s"},
+            "version": VERSION,
+            "scene": None if self.scene is None else self.scene.to_dict(),
+        }
 
 
 def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
@@ -114,5 +167,5 @@ def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
         results.append(res)
     p_max = np.array([r.quantities.get("p_max", np.inf) if r.success else np.inf
                       for r in results])
-    return SqueezeSeries(times, gaps, rates, p_max, results)
+    return SqueezeSeries(times, gaps, rates, p_max, results, scene)
 

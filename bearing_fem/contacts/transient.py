@@ -619,7 +619,7 @@ def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = 
         newton_iterations=np.array([r.newton_iterations for r in results], dtype=int),
         wall_time_s=np.array([r.wall_time_s for r in results]),
         status=status, message=message, scheme=scheme, time_step=dt, eps=eps,
-        omega=omega, n_planned=n_total + 1, failure=failure)
+        omega=omega, n_planned=n_total + 1, failure=failure, scene=scene)
 
 
 def _guess(problem: TransientPointProblem, zs: list[np.ndarray]) -> np.ndarray:
