@@ -24,6 +24,7 @@ _LAZY = {
     "solve_series": ("bearing_fem.contacts.dispatch", "solve_series"),
     "Result": ("bearing_fem.result", "Result"),
     "export": ("bearing_fem.io", "export"),
+    "sweep": ("bearing_fem.sweep", "sweep"),
 }
 #: Short attribute names of the modules (``bf.kodnir.solve(...)``,
 #: ``bf.thermal.strip_source(...)``), imported on first use.
