@@ -245,14 +245,22 @@ class PoolExecutor:
 
     def _pool(self):
         import multiprocessing as mp
+        import sys
         from concurrent.futures import ProcessPoolExecutor
 
-        try:
-            ctx = mp.get_context("forkserver")
-            ctx.set_forkserver_preload(["bearing_fem.sweep.execute",
-                                        "bearing_fem.contacts.dispatch"])
-        except ValueError:  # pragma: no cover - platforms without forkserver
-            ctx = mp.get_context("spawn")
+        main_file = getattr(sys.modules.get("__main__"), "__file__", None)
+        if main_file is not None and not Path(main_file).is_file() and \
+                "fork" in mp.get_all_start_methods():
+            # e.g. a script read from standard input: a forkserver or spawned worker
+            # would try to import it again from a file that does not exist
+            ctx = mp.get_context("fork")
+        else:
+            try:
+                ctx = mp.get_context("forkserver")
+                ctx.set_forkserver_preload(["bearing_fem.sweep.execute",
+                                            "bearing_fem.contacts.dispatch"])
+            except ValueError:  # pragma: no cover - platforms without forkserver
+                ctx = mp.get_context("spawn")
         return ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx)
 
     def run(self, tasks: Sequence[Task], done: Done) -> None:
