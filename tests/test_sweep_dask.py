@@ -156,3 +156,12 @@ def test_case_that_kills_every_worker_is_lost_then_rerun(tmp_path, client):
     assert (rerun.successes, rerun.failures, rerun.unfinished) == (8, 4, 0)
     assert rerun.statuses[victim.hash] == "linear"
     check_no_success_without_files(store)
+
+
+def test_unreachable_scheduler_is_an_input_error(tmp_path):
+    from bearing_fem.errors import SceneError
+    from bearing_fem.sweep.execute import DaskExecutor
+
+    with pytest.raises(SceneError, match="cannot reach the Dask scheduler at "
+                                         "'tcp://127.0.0.1:1'"):
+        DaskExecutor("tcp://127.0.0.1:1", timeout=1).open()

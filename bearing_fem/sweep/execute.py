@@ -226,6 +226,12 @@ class SerialExecutor:
 
     name = "serial (this process)"
 
+    def open(self) -> None:
+        """Nothing to start."""
+
+    def close(self) -> None:
+        """Nothing to stop."""
+
     def run(self, tasks: Sequence[Task], done: Done) -> None:
         for t in tasks:
             done(t, run_task(t))
@@ -242,6 +248,12 @@ class PoolExecutor:
     def __init__(self, workers: int) -> None:
         self.workers = int(workers)
         self.name = f"local pool of {self.workers} processes"
+
+    def open(self) -> None:
+        """Nothing to start (the pool starts in :meth:`run`)."""
+
+    def close(self) -> None:
+        """Nothing to stop (the pool stops at the end of :meth:`run`)."""
 
     def _pool(self):
         import multiprocessing as mp
@@ -338,6 +350,8 @@ class DaskExecutor:
         self.scheduler = scheduler
         self.timeout = timeout
         self.name = f"Dask cluster at {self.address}"
+        self.client = None
+        self.own = False
 
     @property
     def address(self) -> str:
@@ -363,10 +377,22 @@ class DaskExecutor:
                              f"{type(exc).__name__}: {exc}") from None
         return client, True
 
+    def open(self) -> None:
+        """Connect to the scheduler (SceneError when it does not answer)."""
+        if self.client is None:
+            self.client, self.own = self._client()
+
+    def close(self) -> None:
+        """Close the connection if this executor opened it (a given Client stays open)."""
+        if self.client is not None and self.own:
+            self.client.close()
+        self.client = None
+
     def run(self, tasks: Sequence[Task], done: Done) -> None:
         from distributed import as_completed
 
-        client, own = self._client()
+        self.open()
+        client = self.client
         futures: dict[Any, Task] = {}
         try:
             token = secrets.token_hex(4)
@@ -390,8 +416,6 @@ class DaskExecutor:
         finally:
             for fut in futures:
                 fut.cancel()
-            if own:
-                client.close()
 
 
 def default_workers() -> int:
@@ -566,6 +590,8 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
             report.adopted = len(adoptable)
             report.wall_time_s = time.perf_counter() - t0
             return report
+        if to_run:
+            executor.open()  # e.g. reach the scheduler before anything is written
         store.fill_params(skipped)
         for c, out in adoptable:
             store.write(c, out)
@@ -597,6 +623,7 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
             if tasks:
                 executor.run(tasks, done)
         finally:
+            executor.close()
             bar.close()
             final = store.states([c.hash for c in cases])
             report.statuses = {h: s["status"] for h, s in final.items()}
