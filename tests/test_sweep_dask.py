@@ -2,13 +2,11 @@
 workers killed while they run a case."""
 from __future__ import annotations
 
-import json
 import os
 import sys
 from pathlib import Path
 
 import pytest
-import tomli_w
 
 distributed = pytest.importorskip("distributed")
 import cloudpickle  # noqa: E402  (a dependency of distributed)
@@ -17,20 +15,12 @@ from distributed.diagnostics.plugin import WorkerPlugin  # noqa: E402
 
 import bearing_fem as bf  # noqa: E402
 from bearing_fem.sweep import RunStore, SweepSpec, query_runs  # noqa: E402
-from bearing_fem.sweep.execute import result_complete  # noqa: E402
 
-#: Rigid Barus cylinder, full-Sommerfeld (one linear solve per case, milliseconds): at the
-#: gap 1e-7 m the pressure does not exist (alpha q_max > 1, status no_solution), at 3e-7
-#: and 1e-6 m it does (status linear).
-BASE = {
-    "title": "rigid cylinder",
-    "contact": {"kind": "line", "rx": 0.01},
-    "lubricant": {"viscosity": 0.05, "piezo": 5e-8},
-    "kinematics": {"u1": 1.0, "u2": 1.0},
-    "load": {"gap": 1e-6},
-    "model": {"elasticity": "rigid", "cavitation": "none"},
-    "mesh": {"nodes": 101},
-}
+from test_sweep_run import successes_have_files, write_sweep  # noqa: E402
+
+#: The rigid cylinder of test_sweep_run (one linear solve per case, milliseconds): at the
+#: gap 1e-7 m the pressure does not exist (status no_solution), at 3e-7 and 1e-6 m it does
+#: (status linear) at these speeds.
 SWEEP = {"sweep": {"scene": "base.toml"},
          "axes": {"load.gap": [1e-7, 3e-7, 1e-6], "kinematics.u1": [0.75, 1.0, 1.5, 2.0]},
          "zip": {"kinematics.u2": "kinematics.u1"}}
@@ -75,19 +65,7 @@ def client():
 
 
 def make_sweep(tmp_path: Path) -> Path:
-    (tmp_path / "base.toml").write_text(tomli_w.dumps(BASE), encoding="utf-8")
-    path = tmp_path / "sweep.toml"
-    path.write_text(tomli_w.dumps(SWEEP), encoding="utf-8")
-    return path
-
-
-def check_no_success_without_files(store_path: Path) -> None:
-    with RunStore(store_path) as store:
-        for r in store.rows():
-            folder = store.resolve(r["result_path"])
-            if r["success"]:
-                assert result_complete(folder, "scene"), f"success without files: {r}"
-                assert json.loads((folder / "run.json").read_text())["hash"] == r["hash"]
+    return write_sweep(tmp_path, SWEEP)
 
 
 def test_twelve_cases_on_two_dask_workers(tmp_path, client):
@@ -123,7 +101,7 @@ def test_twelve_cases_on_two_dask_workers(tmp_path, client):
     assert v["status"] == "linear" and v["h_central"] == pytest.approx(1e-6, rel=1e-12), (
         "the killed case was run again on the other worker and solved (rigid: h(0) = gap)")
     assert len({r["worker"] for r in rows}) >= 2, "both workers (and the restarted one) ran"
-    check_no_success_without_files(store)
+    successes_have_files(store)
 
     again = bf.sweep(path, scheduler=client)
     assert (again.ran, again.skipped, again.adopted) == (0, 12, 0), "resume solves nothing"
@@ -155,7 +133,7 @@ def test_case_that_kills_every_worker_is_lost_then_rerun(tmp_path, client):
     assert (rerun.ran, rerun.skipped) == (12, 0), "the lost case runs again with the rest"
     assert (rerun.successes, rerun.failures, rerun.unfinished) == (8, 4, 0)
     assert rerun.statuses[victim.hash] == "linear"
-    check_no_success_without_files(store)
+    successes_have_files(store)
 
 
 def test_unreachable_scheduler_is_an_input_error(tmp_path):

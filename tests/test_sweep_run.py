@@ -336,3 +336,11 @@ def test_bearing_file_sweep(tmp_path):
     light, heavy = sorted(rows, key=lambda r: r["radial_load"])
     assert heavy["friction_torque"] > light["friction_torque"], "more load, more torque"
     assert bf.sweep(path, workers=1).ran == 0, "resume"
+
+
+def test_solve_quiet_prints_nothing(tmp_path, capsys):
+    scene = tmp_path / "scene.toml"
+    scene.write_text(tomli_w.dumps({**BASE, "load": {"gap": 1e-6}}), encoding="utf-8")
+    assert main(["solve", str(scene), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    assert capsys.readouterr() == ("", "")
+    assert (tmp_path / "out" / "summary.json").is_file()
