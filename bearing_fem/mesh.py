@@ -17,6 +17,7 @@ meshio is imported inside the functions that use it.
 from __future__ import annotations
 
 import contextlib
+import functools
 import io
 import os
 import secrets
@@ -25,7 +26,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["read_mesh", "write_mesh", "tensor_axes", "line_nodes", "tensor_mesh"]
+__all__ = ["read_mesh", "write_mesh", "tensor_axes", "line_nodes", "tensor_mesh",
+           "grid_axes", "every_other"]
 
 #: meshio cell types and the scikit-fem meshes they become.
 _CELLS = {"line": "MeshLine", "triangle": "MeshTri", "quad": "MeshQuad"}
@@ -150,3 +152,37 @@ def line_nodes(mesh: Any) -> np.ndarray:
     if _kind(mesh) != "line":
         raise ValueError(f"a line-contact grid is a 1D mesh, got {type(mesh).__name__}")
     return np.sort(np.asarray(mesh.p[0], dtype=float))
+
+
+@functools.lru_cache(maxsize=32)
+def _axes(path: str, mtime: float) -> tuple[tuple[float, ...], tuple[float, ...] | None]:
+    mesh = read_mesh(path)
+    kind = _kind(mesh)
+    if kind == "line":
+        return tuple(line_nodes(mesh)), None
+    if kind == "quad":
+        x, y = tensor_axes(mesh)
+        return tuple(x), tuple(y)
+    raise ValueError(f"mesh file {path!r} holds triangles: a contact grid is a line mesh "
+                     "(line contact) or quads on a tensor grid (point contact)")
+
+
+def grid_axes(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray | None]:
+    """Node coordinates of a contact grid file: x (and y for a quad tensor grid; None for
+    a 1D mesh), dimensionless, as stored. Cached per file and modification time."""
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"mesh file {str(p)!r} does not exist")
+    x, y = _axes(str(p.resolve()), p.stat().st_mtime)
+    return np.array(x), (None if y is None else np.array(y))
+
+
+def every_other(axis: np.ndarray, nodes: int) -> np.ndarray:
+    """The nodes of ``axis`` taken with the stride that leaves ``nodes`` of them (the
+    coarser grids of grid sequencing); ValueError unless the stride is a whole number."""
+    n = axis.size
+    if nodes == n:
+        return axis
+    if nodes < 2 or (n - 1) % (nodes - 1):
+        raise ValueError(f"a grid of {n} nodes has no nested coarser grid of {nodes} nodes")
+    return axis[::(n - 1) // (nodes - 1)]

@@ -451,14 +451,23 @@ class MeshSpec:
     x_range, y_range : (float, float) or None
         Domain in units of the Hertz half-width (elastic scenes) or of sqrt(2 rx h0)
         (rigid scenes) [-].
+    file : str or None
+        A grid file (any meshio format; ``meshes/`` has examples) holding the nodes in
+        those same units: a 1D mesh for a line contact, quads on a tensor grid for a point
+        contact (uniform for elastic scenes: the half-space compliance needs it). It
+        replaces ``nodes`` and the ranges. A relative path in a scene file is relative to
+        that file.
     """
 
     _section = "mesh"
     nodes: int | tuple[int, int] | None = None
     x_range: tuple[float, float] | None = None
     y_range: tuple[float, float] | None = None
+    file: str | None = None
 
     def __post_init__(self) -> None:
+        if self.file is not None:
+            self._check_file()
         n = self.nodes
         if n is not None:
             items = [n] if not isinstance(n, (list, tuple)) else list(n)
@@ -491,6 +500,35 @@ class MeshSpec:
                                  f"(in Hertz half-widths, or sqrt(2 r h0) for rigid scenes), "
                                  f"got {show_value(r)}")
             object.__setattr__(self, name, (lo, hi))
+
+
+    def _check_file(self) -> None:
+        from .mesh import grid_axes
+
+        f = self.file
+        if not isinstance(f, str) or not f or "\x00" in f:
+            raise SceneError(f"mesh.file must be a file name, got {show_value(f)}")
+        given = [k for k in ("nodes", "x_range", "y_range") if getattr(self, k) is not None]
+        if given:
+            raise SceneError(f"mesh.file replaces {', '.join('mesh.' + k for k in given)}: give "
+                             "either the file or those keys")
+        try:
+            x, y = grid_axes(f)
+        except ValueError as exc:
+            raise SceneError(f"mesh.file: {exc}") from None
+        for name, axis in (("x", x), ("y", y)):
+            if axis is not None and not (axis[0] < 0.0 < axis[-1]):
+                raise SceneError(f"mesh.file {f!r}: the {name} nodes must span 0 (start < 0 < "
+                                 f"end, in Hertz semi-axes or sqrt(2 r h0)), got "
+                                 f"[{axis[0]:g}, {axis[-1]:g}]")
+
+    def axes(self) -> tuple[Any, Any] | None:
+        """The node coordinates of ``file`` (x, and y or None), or None without a file."""
+        if self.file is None:
+            return None
+        from .mesh import grid_axes
+
+        return grid_axes(self.file)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -796,6 +834,11 @@ class Scene:
             if want_two != isinstance(nodes, tuple) or (want_two and len(nodes) != 2):
                 raise SceneError(f"mesh.nodes must be {'[nx, ny]' if want_two else 'one integer'} "
                                  f"for a {self.contact.kind} contact, got {list(nodes) if isinstance(nodes, tuple) else nodes!r}")
+        axes = self.mesh.axes()
+        if axes is not None and (axes[1] is None) != (self.contact.kind == "line"):
+            want = "a 1D mesh" if self.contact.kind == "line" else "quads on a tensor grid"
+            raise SceneError(f"mesh.file {self.mesh.file!r}: a {self.contact.kind} contact "
+                             f"needs {want}")
         self._check_thermal()
         self._check_transient()
         if self.mesh.y_range is not None and self.contact.kind == "line":
@@ -941,11 +984,13 @@ class Scene:
             text = path.read_text(encoding="utf-8")
         except OSError as exc:
             raise SceneError(f"cannot read scene file {str(path)!r}: {exc.strerror}") from None
-        return cls.from_toml_string(text, source=str(path))
+        return cls.from_toml_string(text, source=str(path), base_dir=path.parent)
 
     @classmethod
-    def from_toml_string(cls, text: str, source: str = "<string>") -> "Scene":
-        """Parse and validate a scene given as TOML text."""
+    def from_toml_string(cls, text: str, source: str = "<string>",
+                         base_dir: str | Path | None = None) -> "Scene":
+        """Parse and validate a scene given as TOML text; a relative ``mesh.file`` is
+        taken relative to ``base_dir`` (the scene file's folder) when given."""
         if text.startswith("\ufeff"):  # a UTF-8 byte-order mark (some editors write one)
             text = text[1:]
         try:
@@ -955,6 +1000,10 @@ class Scene:
         except RecursionError:
             raise SceneError(f"{source} is not a scene: its arrays or tables are nested "
                              "too deeply to read") from None
+        mesh = data.get("mesh")
+        if (base_dir is not None and isinstance(mesh, dict) and isinstance(mesh.get("file"), str)
+                and mesh["file"] and not Path(mesh["file"]).is_absolute()):
+            mesh["file"] = str(Path(base_dir) / mesh["file"])
         return cls.from_dict(data)
 
     def to_dict(self) -> dict[str, Any]:

@@ -70,3 +70,64 @@ def test_wrong_mesh_kind_is_refused():
         bm.tensor_axes(bm.read_mesh(MESHES / "korovchinsky_patch.vtu"))
     with pytest.raises(ValueError, match="triangles"):
         thermal.patch_from_mesh(bm.read_mesh(MESHES / "point_elastic_129.vtu"), 1e-4)
+
+
+# ---------------------------------------------------------------------------------------
+# scenes naming a grid file
+# ---------------------------------------------------------------------------------------
+BALL = {"contact": {"kind": "point", "rx": 0.0127, "ry": 0.0127},
+        "materials": {"reduced_modulus": 2.3e11},
+        "lubricant": {"viscosity": 0.04, "piezo": 2.2e-8},
+        "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 30.0}}
+
+
+def test_point_scene_with_a_grid_file_equals_its_ranges(tmp_path):
+    import bearing_fem as bf
+
+    path = bm.write_mesh(bm.tensor_mesh(np.linspace(-4.5, 1.5, 65), np.linspace(-3, 3, 65)),
+                         tmp_path / "grid.vtu")
+    ranged = bf.solve(bf.Scene.from_dict(dict(BALL, mesh={
+        "nodes": [65, 65], "x_range": [-4.5, 1.5], "y_range": [-3.0, 3.0]})))
+    (tmp_path / "ball.toml").write_text(
+        '[contact]\nkind = "point"\nrx = 0.0127\nry = 0.0127\n[materials]\n'
+        'reduced_modulus = 2.3e11\n[lubricant]\nviscosity = 0.04\npiezo = 2.2e-8\n'
+        '[kinematics]\nu1 = 1.0\nu2 = 1.0\n[load]\nforce = 30.0\n[mesh]\nfile = "grid.vtu"\n',
+        encoding="utf-8")
+    scene = bf.Scene.from_toml(tmp_path / "ball.toml")
+    assert scene.mesh.file == str(path), "a relative mesh.file is relative to the scene file"
+    filed = bf.solve(scene)
+    assert ranged.success and filed.success, (ranged.message, filed.message)
+    assert filed.newton_iterations == ranged.newton_iterations
+    for key in ("h_central", "h_min", "p_max"):
+        np.testing.assert_allclose(filed.quantities[key], ranged.quantities[key], rtol=1e-9,
+                                   err_msg=f"{key}: the file holds the same grid")
+
+
+def test_line_scene_with_the_shipped_grid_file():
+    import bearing_fem as bf
+
+    line = {"contact": {"kind": "line", "rx": 0.01}, "materials": {"reduced_modulus": 2.2e11},
+            "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+            "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 2e5}}
+    ranged = bf.solve(bf.Scene.from_dict(dict(line, mesh={"nodes": 1801,
+                                                          "x_range": [-4.5, 1.5]})))
+    filed = bf.solve(bf.Scene.from_dict(dict(line, mesh={
+        "file": str(MESHES / "line_elastic_1801.vtu")})))
+    np.testing.assert_allclose(filed.quantities["h_central"], ranged.quantities["h_central"],
+                               rtol=1e-9, err_msg="meshes/line_elastic_1801.vtu is that grid")
+
+
+def test_grid_file_errors_name_the_field(tmp_path):
+    import bearing_fem as bf
+    from bearing_fem.errors import SceneError
+
+    graded = str(MESHES / "point_rigid_graded_161.vtu")
+    cases = [({"file": str(tmp_path / "none.vtu")}, "does not exist"),
+             ({"file": graded, "nodes": [65, 65]}, "replaces mesh.nodes"),
+             ({"file": graded}, "uniformly spaced"),
+             ({"file": str(MESHES / "line_elastic_1801.vtu")}, "tensor grid"),
+             ({"file": str(MESHES / "korovchinsky_patch.vtu")}, "triangles")]
+    for mesh, match in cases:
+        with pytest.raises(SceneError, match=match):
+            scene = bf.Scene.from_dict(dict(BALL, mesh=mesh))
+            bf.solve(scene)

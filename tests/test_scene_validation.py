@@ -350,6 +350,12 @@ EXTREMES = [
           "traction.eyring_stress", "Pa", base="traction"),
     _case("traction.limiting_slope-above-1", {"traction.limiting_slope": 2.0},
           "traction.limiting_slope", "friction coefficient", base="traction"),
+    _case("mesh.file-missing-file", {"mesh.nodes": DELETE, "mesh.x_range": DELETE,
+                                     "mesh.file": "no/such/grid.vtu"}, "mesh.file",
+          "does not exist"),
+    _case("mesh.file-type", {"mesh.nodes": DELETE, "mesh.x_range": DELETE, "mesh.file": 5},
+          "mesh.file"),
+    _case("mesh.file-with-nodes", {"mesh.file": "grid.vtu"}, "mesh.file", "mesh.nodes"),
     # --- transient (squeeze series) ----------------------------------------------------
     _case("transient.kind-value", {"transient.kind": "impact"}, "transient.kind", "squeeze",
           base="squeeze"),

@@ -34,7 +34,9 @@ from skfem import CellBasis, ElementLineP1, MeshLine
 
 from .. import units
 from ..analytic import reduced_from_barus
+from ..errors import SceneError
 from ..formulas import line_central_film_moes
+from ..mesh import every_other
 from ..numerics.fe import QuadratureOperators, quadrature_operators
 from ..numerics.newton import gmres_right
 from ..physics.elasticity import (HalfSpaceLine, LocalCompliance, RigidCompliance,
@@ -59,7 +61,12 @@ class LineDiscretisation:
 
     @classmethod
     def uniform(cls, x_min: float, x_max: float, nodes: int, intorder: int = 4) -> "LineDiscretisation":
-        x = np.linspace(x_min, x_max, nodes)
+        return cls.from_nodes(np.linspace(x_min, x_max, nodes), intorder)
+
+    @classmethod
+    def from_nodes(cls, x: np.ndarray, intorder: int = 4) -> "LineDiscretisation":
+        """The P1 discretisation on the increasing node coordinates x [m]."""
+        x = np.asarray(x, dtype=float)
         mesh = MeshLine(x)
         basis = CellBasis(mesh, ElementLineP1(), intorder=intorder)
         return cls(x=x, mesh=mesh, basis=basis, ops=quadrature_operators(basis))
@@ -451,12 +458,21 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
         density = NODES_PER_RIGID_LENGTH
     width = x_range[1] - x_range[0]
     cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
-    if nodes is None:
-        # n - 1 a multiple of 4: the grid and its two coarser grids (every other node)
-        # nest, for the grid sequence and the error estimate
-        auto = 4 * math.ceil(min(max(width * density, 801), cap - 1) / 4) + 1
-        nodes = scene.mesh.nodes or auto
-    disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
+    axes = scene.mesh.axes()
+    if axes is not None:  # a grid file, in units of x_unit
+        x_file = axes[0]
+        xs = every_other(x_file, nodes or x_file.size) * x_unit
+        if model.elasticity == "half-space" and np.ptp(np.diff(xs)) > 1e-6 * np.mean(np.diff(xs)):
+            raise SceneError(f"mesh.file {scene.mesh.file!r}: an elastic line contact needs "
+                             "uniformly spaced nodes (the half-space compliance)")
+        disc = LineDiscretisation.from_nodes(xs)
+    else:
+        if nodes is None:
+            # n - 1 a multiple of 4: the grid and its two coarser grids (every other
+            # node) nest, for the grid sequence and the error estimate
+            auto = 4 * math.ceil(min(max(width * density, 801), cap - 1) / 4) + 1
+            nodes = scene.mesh.nodes or auto
+        disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
     if model.elasticity == "rigid":
         comp = RigidCompliance()
         c_stab = 0.0
@@ -530,12 +546,15 @@ class LineModel:
 
     # -- levels ----------------------------------------------------------------------------
     def level(self, nodes: int) -> LineSetup:
-        """The scene on a uniform grid of ``nodes`` nodes over the same interval (cached:
-        the driver recognises a level by identity)."""
+        """The scene on a grid of ``nodes`` nodes over the same interval (uniform, or every
+        other node of a grid file; cached: the driver recognises a level by identity)."""
         if nodes not in self._setups:
-            x = self.setup.disc.x
-            self._setups[nodes] = _regridded(self.scene, self.setup, float(x[0]),
-                                             float(x[-1]), nodes)
+            if self.scene.mesh.file is not None:
+                self._setups[nodes] = line_setup(self.scene, nodes)
+            else:
+                x = self.setup.disc.x
+                self._setups[nodes] = _regridded(self.scene, self.setup, float(x[0]),
+                                                 float(x[-1]), nodes)
         return self._setups[nodes]
 
     def levels(self) -> list[LineSetup]:

@@ -58,6 +58,7 @@ from .. import units
 from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import point_central_film_nvm
+from ..mesh import every_other
 from ..numerics.newton import gmres_right
 from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
@@ -223,16 +224,34 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
         side = max(3.0, 0.5 * inlet)
         xr = scene.mesh.x_range or (-inlet, 1.5)
         yr = scene.mesh.y_range or (-side, side)
-        nxy = nodes or _nodes(scene, ELASTIC_NODES)
-        x = np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0])
-        if _mirrorable(yr, nxy[1]):  # rows mirror each other exactly about y = 0
-            y_half = np.linspace(0.0, yr[1] * y_unit, (nxy[1] + 1) // 2)
-            y = np.concatenate([-y_half[:0:-1], y_half])
-        elif symmetric:
-            raise ValueError(f"a symmetric point setup needs mesh.y_range symmetric about 0 "
-                             f"and an odd node count across, got {yr} and {nxy[1]}")
+        axes = _file_axes(scene, nodes, x_unit, y_unit)
+        if axes is not None:
+            x, y = axes
+            for name, v in (("x", x), ("y", y)):
+                if np.ptp(np.diff(v)) > 1e-6 * np.mean(np.diff(v)):
+                    raise SceneError(f"mesh.file {scene.mesh.file!r}: an elastic point contact "
+                                     f"needs uniformly spaced {name} nodes (the FFT "
+                                     "half-space compliance)")
+            mirrored = bool(y.size % 2 == 1 and np.allclose(y, -y[::-1], rtol=0,
+                                                            atol=1e-12 * np.ptp(y)))
+            if mirrored:
+                y = 0.5 * (y - y[::-1])  # exactly symmetric
+            y_half = y[y.size // 2:]
+            if symmetric and not mirrored:
+                raise ValueError("a symmetric point setup needs a grid symmetric about y = 0 "
+                                 "with an odd node count across")
         else:
-            y = np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1])
+            nxy = nodes or _nodes(scene, ELASTIC_NODES)
+            x = np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0])
+            if _mirrorable(yr, nxy[1]):  # rows mirror each other exactly about y = 0
+                y_half = np.linspace(0.0, yr[1] * y_unit, (nxy[1] + 1) // 2)
+                y = np.concatenate([-y_half[:0:-1], y_half])
+            elif symmetric:
+                raise ValueError(f"a symmetric point setup needs mesh.y_range symmetric "
+                                 f"about 0 and an odd node count across, got {yr} and "
+                                 f"{nxy[1]}")
+            else:
+                y = np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1])
         if symmetric:
             grid = PointGrid.tensor(x, y_half, mirror_y=True)
             comp = MirroredHalfSpacePoint(x, y_half, scene.e_prime)
@@ -259,7 +278,10 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
     yr = scene.mesh.y_range or rng[1]
     nxy = nodes or _nodes(scene, RIGID_NODES)
     uniform = scene.mesh.x_range is not None or scene.mesh.y_range is not None
-    if uniform:  # an explicit range asks for a uniform grid (convergence studies)
+    axes = _file_axes(scene, nodes, x_unit, y_unit)
+    if axes is not None:  # a grid file
+        gx, gy = axes
+    elif uniform:  # an explicit range asks for a uniform grid (convergence studies)
         gx = np.linspace(xr[0] * x_unit, xr[1] * x_unit, nxy[0])
         gy = np.linspace(yr[0] * y_unit, yr[1] * y_unit, nxy[1])
     else:
@@ -267,6 +289,18 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
         gy = graded_coordinates(yr[0], yr[1], nxy[1], y_unit, stretch=1.5)
     grid = PointGrid.tensor(gx, gy)
     return PointSetup(grid, None, p_ref, h0, x_unit, y_unit, h0, 0.0, None)
+
+
+def _file_axes(scene, nodes: tuple[int, int] | None, x_unit: float,
+               y_unit: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """The grid of ``mesh.file`` in metres (every other node for a coarser level of
+    ``nodes``), or None without a file."""
+    axes = scene.mesh.axes()
+    if axes is None:
+        return None
+    xf, yf = axes
+    n = nodes or (xf.size, yf.size)
+    return every_other(xf, n[0]) * x_unit, every_other(yf, n[1]) * y_unit
 
 
 def is_linear(scene) -> bool:
