@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pytest
 
 from bearing_fem.sweep import RunStore
 
@@ -51,3 +52,18 @@ def test_line_map_as_a_sweep_in_process(tmp_path, load_study):
     assert out["summary"]["converged"] == 1
     with RunStore(tmp_path / "line_ehl_map.sqlite") as s:
         assert sorted(r["nodes"] for r in s.rows()) == [201, 401]
+
+
+@pytest.mark.slow
+def test_sweep_benchmark_quick(tmp_path, load_study):
+    out = load_study("sweep_benchmark").main(tmp_path, quick=True)
+    assert out["runs"] == 13 and out["grids"] == [65]
+    for name in ("dask", "pool"):
+        s = out["sweeps"][name]
+        assert s["successes"] == s["ran"] == 13
+        assert s["statuses_match"], "the sweep solves what the serial loop solves"
+        assert s["max_film_difference"] < 1e-9, (
+            "same scenes, same solver: the films agree to round-off (measured 6e-13; only "
+            "the worker's BLAS thread count differs)")
+        assert s["ratio"] > 0  # wall times are reported, never asserted
+    assert "| serial loop (one process) |" in (tmp_path / "sweep_benchmark.md").read_text()

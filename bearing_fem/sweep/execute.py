@@ -592,34 +592,35 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
             return report
         if to_run:
             executor.open()  # e.g. reach the scheduler before anything is written
-        store.fill_params(skipped)
-        for c, out in adoptable:
-            store.write(c, out)
-            report.adopted += 1
-        states = store.states([c.hash for c in to_run])
-        attempts = {h: s["attempts"] for h, s in states.items()}
-        store.mark_pending(to_run, attempts)
-        blas = 1 if isinstance(executor, PoolExecutor) else None
-        tasks = [Task(c, str(results / c.hash), files, blas, attempts.get(c.hash, 0) + 1)
-                 for c in to_run]
-        bar = SweepProgress(len(tasks), enabled=None if progress else False)
-
-        def done(task: Task, outcome: Outcome) -> None:
-            outcome = dict(outcome)
-            path = outcome.get("result_path")
-            if outcome["status"] not in NON_FINAL and outcome["status"] != ERROR_STATUS \
-                    and not result_complete(Path(path) if path else None, task.case.kind):
-                outcome = lost(task, f"the worker ({outcome.get('worker')}) reported status "
-                                     f"{outcome['status']} but its result folder {path!r} is "
-                                     "not visible here: the results folder must be on a "
-                                     "filesystem shared by the workers and the client")
-            store.write(task.case, outcome)
-            report.ran += 1
-            bar.update(outcome)
-            if on_outcome is not None:
-                on_outcome(task.case, outcome)
-
+        bar = SweepProgress(len(to_run), enabled=None if progress else False)
         try:
+            store.fill_params(skipped)
+            for c, out in adoptable:
+                store.write(c, out)
+                report.adopted += 1
+            states = store.states([c.hash for c in to_run])
+            attempts = {h: s["attempts"] for h, s in states.items()}
+            store.mark_pending(to_run, attempts)
+            blas = 1 if isinstance(executor, PoolExecutor) else None
+            tasks = [Task(c, str(results / c.hash), files, blas, attempts.get(c.hash, 0) + 1)
+                     for c in to_run]
+
+            def done(task: Task, outcome: Outcome) -> None:
+                outcome = dict(outcome)
+                path = outcome.get("result_path")
+                if outcome["status"] not in NON_FINAL and outcome["status"] != ERROR_STATUS \
+                        and not result_complete(Path(path) if path else None, task.case.kind):
+                    outcome = lost(task, f"the worker ({outcome.get('worker')}) reported "
+                                         f"status {outcome['status']} but its result folder "
+                                         f"{path!r} is not visible here: the results folder "
+                                         "must be on a filesystem shared by the workers and "
+                                         "the client")
+                store.write(task.case, outcome)
+                report.ran += 1
+                bar.update(outcome)
+                if on_outcome is not None:
+                    on_outcome(task.case, outcome)
+
             if tasks:
                 executor.run(tasks, done)
         finally:
