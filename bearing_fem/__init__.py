@@ -26,6 +26,7 @@ _LAZY = {
     "export": ("bearing_fem.io", "export"),
     "Bearing": ("bearing_fem.bearing", "Bearing"),
     "solve_bearing": ("bearing_fem.bearing", "solve_bearing"),
+    "sweep": ("bearing_fem.sweep", "sweep"),
 }
 #: Short attribute names of the modules (``bf.kodnir.solve(...)``,
 #: ``bf.thermal.strip_source(...)``), imported on first use.

@@ -301,6 +301,93 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
 
 
 # ---------------------------------------------------------------------------------------
+# sweeps (logic in bearing_fem.sweep; see docs/sweeps.md)
+# ---------------------------------------------------------------------------------------
+def _cmd_sweep(args: argparse.Namespace) -> int:
+    from .sweep import sweep
+
+    report = sweep(args.sweep_file, args.store, scheduler=args.scheduler,
+                   workers=args.workers, retry_failed=True if args.retry_failed else None,
+                   progress=not args.quiet, dry_run=args.dry_run)
+    if not args.quiet:
+        print(report.text())
+    if args.dry_run or report.all_successful:
+        return EXIT_OK
+    print(f"bearing-fem: {report.failures} case(s) unsuccessful and {report.unfinished} "
+          f"unfinished of {report.cases} (see 'bearing-fem runs {report.store} --status "
+          "failed --status unfinished')", file=sys.stderr)
+    return EXIT_NO_SOLUTION
+
+
+def _cmd_runs(args: argparse.Namespace) -> int:
+    from .sweep import export_runs, format_runs, query_runs, store_units
+
+    columns = args.columns.split(",") if args.columns and "," in args.columns \
+        else args.columns
+    if columns is None and (args.csv or args.parquet):
+        columns = "all"
+    rows, cols = query_runs(args.store, status=args.status, where=args.where,
+                            columns=[columns] if isinstance(columns, str) and columns not in
+                            ("all", "default") else columns, limit=args.limit)
+    if args.csv or args.parquet:
+        text = export_runs(rows, cols, csv=args.csv, parquet=args.parquet)
+        if text is not None:
+            sys.stdout.write(text)
+        elif not args.quiet:
+            print(f"wrote {len(rows)} rows to "
+                  + ", ".join(str(p) for p in (args.csv, args.parquet) if p))
+        return EXIT_OK
+    print(format_runs(rows, cols, store_units(args.store)))
+    return EXIT_OK
+
+
+def _add_sweep_parsers(sub: Any) -> None:
+    """The ``sweep`` and ``runs`` subcommands."""
+    p = sub.add_parser("sweep", help="run a parameter sweep into a run store",
+                       description="Run every case of a sweep file (a base scene or bearing "
+                                   "file and axes over its keys; docs/sweeps.md) that the "
+                                   "run store does not hold yet, on a local process pool or "
+                                   "a Dask cluster. Rerunning resumes an interrupted sweep. "
+                                   "Exit code 0 when every case is stored successful, 3 "
+                                   "when some are unsuccessful or unfinished, 2 for invalid "
+                                   "input.")
+    p.add_argument("sweep_file", metavar="SWEEP.toml", help="sweep file")
+    p.add_argument("--store", metavar="FILE", default=None,
+                   help="SQLite run store (default: [sweep] store, else SWEEP.sqlite)")
+    p.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="Dask scheduler address, e.g. tcp://127.0.0.1:8786 (default: "
+                        "[sweep] scheduler, else a local process pool)")
+    p.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="processes of the local pool (default: [sweep] workers, else one "
+                        "per core; 1 runs in this process)")
+    p.add_argument("--retry-failed", action="store_true",
+                   help="also rerun cases stored with an unsuccessful status")
+    p.add_argument("--dry-run", action="store_true",
+                   help="validate every case and say what would run; solve nothing")
+    p.set_defaults(func=_cmd_sweep)
+
+    p = sub.add_parser("runs", help="list or export a run store",
+                       description="List the rows of a run store written by 'bearing-fem "
+                                   "sweep', or export them as CSV or Parquet (Parquet needs "
+                                   "pyarrow).")
+    p.add_argument("store", metavar="STORE", help="run store (SQLite file)")
+    p.add_argument("--status", action="append", default=None, metavar="STATUS",
+                   help="keep rows with this status (repeatable); also the groups success, "
+                        "failed, final, unfinished")
+    p.add_argument("--where", action="append", default=None, metavar="EXPR",
+                   help="filter such as 'load.force>=20' (operators = != < <= > >=; "
+                        "repeatable, combined with AND)")
+    p.add_argument("--columns", default=None, metavar="COLS",
+                   help="comma-separated columns, or 'all' (default: hash, status, the "
+                        "parameters and the main results; exports: all)")
+    p.add_argument("--limit", type=int, default=None, metavar="N", help="at most N rows")
+    p.add_argument("--csv", metavar="FILE", default=None,
+                   help="write CSV to FILE ('-' for standard output)")
+    p.add_argument("--parquet", metavar="FILE", default=None, help="write Parquet to FILE")
+    p.set_defaults(func=_cmd_runs)
+
+
+# ---------------------------------------------------------------------------------------
 _EPILOG = """\
 Run 'bearing-fem COMMAND --help' for the options of one command.
 options -v, -vv and -q may stand anywhere on the line (before or after COMMAND).
@@ -417,6 +504,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", "-o", metavar="DIR", required=True, help="output directory")
     p.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     p.set_defaults(func=_cmd_bearing)
+    _add_sweep_parsers(sub)
     return parser
 
 

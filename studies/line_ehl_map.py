@@ -20,7 +20,11 @@ Expected outcome
     12 % of Moes (the formula is a fit with a stated accuracy of a few per cent).
 
 Run ``python studies/line_ehl_map.py [outdir]``; ``main(outdir, quick=True)`` runs a
-subset for the tests.
+subset for the tests. The solves run as sweeps (:func:`bearing_fem.sweep`; first every
+coarse grid, then the fine grid of each case whose coarse solve succeeded) on a local
+process pool (``main(..., workers=N)``) or a Dask cluster (``scheduler=ADDRESS``), each
+recorded in the run store ``line_ehl_map.sqlite`` with its result files in
+``line_ehl_map_runs/``; running the study again resumes from the store.
 """
 from __future__ import annotations
 
@@ -84,13 +88,25 @@ def run_case(M: float, L: float, nodes: int | None = None) -> dict:
     for tag, n in (("coarse", nodes), ("fine", 2 * nodes - 1)):
         t0 = time.perf_counter()
         r = bf.solve(scene_for(M, L, n))
-        out[tag] = {"nodes": n, "status": r.status, "iterations": r.newton_iterations,
-                    "seconds": time.perf_counter() - t0,
-                    "h_central": r.quantities.get("h_central"),
-                    "h_min": r.quantities.get("h_min"), "p_max_over_ph":
-                    r.quantities.get("p_max", 0.0) / g["p_h"], "message": r.message}
+        out[tag] = grid_entry(n, r.status, r.newton_iterations, time.perf_counter() - t0,
+                              r.quantities, r.message, g["p_h"])
         if not r.success:
             break
+    return finish_case(out, h_moes)
+
+
+def grid_entry(n: int, status: str, iterations: int, seconds: float, q: dict, message: str,
+               p_h: float) -> dict:
+    """The numbers of one grid of a case (``q``: the result's quantities or stored row)."""
+    p_max = q.get("p_max", 0.0)
+    return {"nodes": n, "status": status, "iterations": iterations, "seconds": seconds,
+            "h_central": q.get("h_central"), "h_min": q.get("h_min"),
+            "p_max_over_ph": (math.nan if p_max is None else p_max) / p_h,
+            "message": message}
+
+
+def finish_case(out: dict, h_moes: float) -> dict:
+    """Grid change and Moes deviation of a case whose grids are in ``out``."""
     out["h_moes"] = h_moes
     c, f = out["coarse"], out.get("fine")
     if f and c["status"] == f["status"] == "converged":
@@ -99,26 +115,66 @@ def run_case(M: float, L: float, nodes: int | None = None) -> dict:
     return out
 
 
+def sweep_grids(runs: list[tuple[float, float, int]], store: Path, *, scheduler=None,
+                workers: int | None = None) -> dict[tuple[float, float, int], dict]:
+    """Solve (M, L, nodes) runs as a sweep into ``store`` (resuming from it); return
+    (M, L, nodes) -> the stored row (status, message, summary numbers)."""
+    from bearing_fem.sweep import Case, RunStore, sweep
+
+    cases = {(M, L, n): Case({"M": M, "L": L, "nodes": n}, scene_for(M, L, n))
+             for M, L, n in sorted(runs, key=lambda r: -r[2])}  # largest first
+    sweep(list(cases.values()), store=store, scheduler=scheduler, workers=workers,
+          progress=True)
+    with RunStore(store) as s:
+        stored = {r["hash"]: r for r in s.rows()}
+    return {key: stored[c.hash] for key, c in cases.items()}
+
+
 def main(outdir: str | Path = "out/line_ehl_map", quick: bool = False, nodes: int | None = None,
          max_alpha_ph: float = 100.0, l_values: tuple[float, ...] = L_VALUES,
-         m_values: tuple[float, ...] = M_VALUES) -> dict:
+         m_values: tuple[float, ...] = M_VALUES, *, scheduler=None, workers: int | None = None,
+         store: str | Path | None = None) -> dict:
     """Run the map; write ``line_ehl_map.json`` and ``line_ehl_map.md``; return the rows.
 
-    ``nodes`` None: each case on the solver's default mesh and on one twice as fine."""
+    ``nodes`` None: each case on the solver's default mesh and on one twice as fine.
+    ``scheduler`` (a Dask scheduler address or client), ``workers`` (local pool size;
+    1 solves in this process) and ``store`` (default ``outdir/line_ehl_map.sqlite``) say
+    where the solves run and where they are kept; a rerun resumes from the store."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
+    store = Path(store) if store is not None else outdir / "line_ehl_map.sqlite"
     cases = [(M, L) for L in l_values for M in m_values]
     if quick:
         cases = [(20, 5), (100, 10)]
+    cases = [(M, L) for M, L in cases if L * math.sqrt(M / (2 * math.pi)) <= max_alpha_ph]
+    coarse_nodes = {(M, L): nodes or default_nodes(M, L) for M, L in cases}
+    info = {}
+    for M, L in cases:
+        s = scene_for(M, L, coarse_nodes[(M, L)])
+        g = units.moes_line(s.load.force, s.contact.rx, s.e_prime, s.lubricant.viscosity,
+                            s.kinematics.mean_speed, s.lubricant.piezo)
+        h_moes = formulas.line_central_film_moes(s.load.force, s.contact.rx, s.e_prime,
+                                                 s.lubricant.viscosity,
+                                                 s.kinematics.mean_speed, s.lubricant.piezo)
+        info[(M, L)] = (g, h_moes)
+    # the fine grid of a case is solved only when its coarse grid succeeded
+    coarse = sweep_grids([(M, L, coarse_nodes[(M, L)]) for M, L in cases], store,
+                         scheduler=scheduler, workers=workers)
+    ok = [(M, L) for M, L in cases if coarse[(M, L, coarse_nodes[(M, L)])]["success"]]
+    fine = sweep_grids([(M, L, 2 * coarse_nodes[(M, L)] - 1) for M, L in ok], store,
+                       scheduler=scheduler, workers=workers)
     rows = []
     for M, L in cases:
-        a_ph = L * math.sqrt(M / (2 * math.pi))
-        if a_ph > max_alpha_ph:
-            continue
-        row = run_case(M, L, nodes)
-        rows.append(row)
+        g, h_moes = info[(M, L)]
+        row: dict = {"M": M, "L": L, "alpha_ph": g["alpha_ph"]}
+        for tag, table in (("coarse", coarse), ("fine", fine)):
+            n = coarse_nodes[(M, L)] if tag == "coarse" else 2 * coarse_nodes[(M, L)] - 1
+            r = table.get((M, L, n))
+            if r is not None:
+                row[tag] = grid_entry(n, r["status"], r.get("newton_iterations") or 0,
+                                      r.get("wall_time_s"), r, r["message"], g["p_h"])
+        rows.append(finish_case(row, h_moes))
         print(_row_text(row), flush=True)
-        _write(outdir, rows, {"complete": False})  # keep what is done if interrupted
     core = [r for r in rows if r["alpha_ph"] <= 40.0]
     summary = {
         "cases": len(core),
@@ -166,10 +222,14 @@ def _row_md(r: dict) -> str:
 
 if __name__ == "__main__":
     # python studies/line_ehl_map.py [outdir] [nodes | default] [L values] [M values]
-    # (value lists comma-separated)
-    main(sys.argv[1] if len(sys.argv) > 1 else "out/line_ehl_map",
-         nodes=int(sys.argv[2]) if len(sys.argv) > 2 and sys.argv[2] != "default" else None,
-         l_values=tuple(float(v) for v in sys.argv[3].split(",")) if len(sys.argv) > 3
+    #     [--workers=N] [--scheduler=ADDRESS]        (value lists comma-separated)
+    opts = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--") and "=" in a)
+    argv = [a for a in sys.argv if not a.startswith("--")]
+    main(argv[1] if len(argv) > 1 else "out/line_ehl_map",
+         nodes=int(argv[2]) if len(argv) > 2 and argv[2] != "default" else None,
+         l_values=tuple(float(v) for v in argv[3].split(",")) if len(argv) > 3
          else L_VALUES,
-         m_values=tuple(float(v) for v in sys.argv[4].split(",")) if len(sys.argv) > 4
-         else M_VALUES)
+         m_values=tuple(float(v) for v in argv[4].split(",")) if len(argv) > 4
+         else M_VALUES,
+         workers=int(opts["workers"]) if "workers" in opts else None,
+         scheduler=opts.get("scheduler"))

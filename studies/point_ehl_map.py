@@ -26,9 +26,13 @@ NVM, and h_c and h_min lie within 20% of Hamrock-Dowson (fits with a stated scat
 5-10%; their h_min fit is the weaker one).
 
 ``python studies/point_ehl_map.py --groups`` prints the Hamrock-Dowson groups of the map
-cases (no solve). Run ``python studies/point_ehl_map.py [outdir] [--quick] [--grids=129,257,513]`` (about
-16 minutes on one core with the default grids; the 513^2 solves dominate). The tables are
-rewritten after every case, so an interrupted run keeps the cases it finished.
+cases (no solve). Run ``python studies/point_ehl_map.py [outdir] [--quick] [--grids=129,257,513]
+[--workers=N] [--scheduler=ADDRESS]`` (about 16 minutes on one core with the default grids;
+the 513^2 solves dominate). The solves run as a sweep (:func:`bearing_fem.sweep`): on a
+local process pool (one process per core, or ``--workers``) or on a Dask cluster
+(``--scheduler``), each recorded in the run store ``point_ehl_map.sqlite`` with its result
+files in ``point_ehl_map_runs/``. An interrupted run resumes: running it again solves only
+the cases the store does not hold, and the tables are built from the store.
 """
 from __future__ import annotations
 
@@ -83,18 +87,25 @@ def _formulas(scene: Scene) -> dict:
 
 
 def run_case(M: float, L: float, nodes: int) -> tuple[dict, object]:
-    """Solve one (M, L) case on nodes x nodes; return (row, Result)."""
+    """Solve one (M, L) case on nodes x nodes in this process; return (row, Result)."""
     scene = moes_scene(M, L, nodes)
-    f = _formulas(scene)
-    g = f["moes"]
     t0 = time.perf_counter()
     res = solve_point(scene)
     wall = time.perf_counter() - t0
-    q = res.quantities
+    return case_row(M, L, nodes, scene, res.quantities, res.status, res.newton_iterations,
+                    wall, [list(s) for s in res.continuation], res.message), res
+
+
+def case_row(M: float, L: float, nodes: int, scene: Scene, q: dict, status: str,
+             newton_iterations: int, wall: float, continuation: list, message: str) -> dict:
+    """The table row of one solve: its numbers against the film formulas."""
+    f = _formulas(scene)
+    g = f["moes"]
+    q = {k: math.nan if v is None else v for k, v in q.items()}  # a store keeps NaN as None
     hc, hmin = q.get("h_central", math.nan), q.get("h_min", math.nan)
-    return {"M": M, "L": L, "alpha_ph": g["alpha_ph"], "nodes": nodes, "status": res.status,
-            "newton_iterations": res.newton_iterations, "wall_time_s": wall,
-            "continuation": [list(s) for s in res.continuation],
+    return {"M": M, "L": L, "alpha_ph": g["alpha_ph"], "nodes": nodes, "status": status,
+            "newton_iterations": newton_iterations, "wall_time_s": wall,
+            "continuation": continuation,
             "gmres_iterations": q.get("gmres_iterations"),
             "h_central_m": hc, "h_min_m": hmin, "p_max_Pa": q.get("p_max"),
             "h_central_nvm_m": f["h_central_nvm_m"], "h_central_hd_m": f["h_central_hd_m"],
@@ -104,7 +115,7 @@ def run_case(M: float, L: float, nodes: int) -> tuple[dict, object]:
             "h_min_vs_hd": hmin / f["h_min_hd_m"] - 1.0,
             "p_max_over_ph": q.get("p_max", math.nan) / g["p_h"],
             "load_ratio": q.get("load", math.nan) / scene.load.force,
-            "message": res.message}, res
+            "message": message}
 
 
 def _assess(case: dict) -> dict:
@@ -183,9 +194,41 @@ def _table(cases: list[dict], grids: tuple[int, ...]) -> tuple[str, str]:
     return "\n".join(lines), "\n".join(md)
 
 
+def sweep_cases(runs: list[tuple[float, float, int]], store: Path, *, scheduler=None,
+                workers: int | None = None) -> dict[tuple[float, float, int], dict]:
+    """Solve (M, L, nodes) runs as a sweep into ``store``; return their rows.
+
+    Runs the store already holds are not solved again (resume). The largest grids are
+    submitted first (the cases differ in cost by 50x). A run whose worker was lost has
+    status ``lost`` and no numbers (run the study again to finish it).
+    """
+    from bearing_fem.io import read_result
+    from bearing_fem.sweep import Case, RunStore, sweep
+
+    cases = {(M, L, n): Case({"M": M, "L": L, "nodes": n}, moes_scene(M, L, n))
+             for M, L, n in sorted(runs, key=lambda r: -r[2])}
+    sweep(list(cases.values()), store=store, scheduler=scheduler, workers=workers,
+          progress=True)
+    with RunStore(store) as s:
+        stored = {r["hash"]: r for r in s.rows()}
+        paths = {h: s.resolve(r["result_path"]) for h, r in stored.items()}
+    rows = {}
+    for (M, L, n), case in cases.items():
+        r = stored[case.hash]
+        h5 = paths[case.hash] / "result.h5" if paths[case.hash] else None
+        continuation = (read_result(h5)["continuation"] if h5 is not None and h5.is_file()
+                        else [])
+        rows[(M, L, n)] = case_row(M, L, n, case.scene, r, r["status"],
+                                   r.get("newton_iterations") or 0, r.get("wall_time_s"),
+                                   continuation, r["message"])
+        rows[(M, L, n)]["result_path"] = str(paths[case.hash]) if paths[case.hash] else None
+    return rows
+
+
 def main(outdir, quick: bool = False, *, nodes: int | None = None,
          grids: tuple[int, ...] | None = None, plot: bool = True,
-         check_next_grid: bool = True) -> dict:
+         check_next_grid: bool = True, scheduler=None, workers: int | None = None,
+         store: str | Path | None = None) -> dict:
     """Run the map; write ``point_ehl_map.json``/``.txt``/``.md`` (and a PNG); return it.
 
     Parameters
@@ -204,6 +247,12 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
         (2 n - 1 nodes), to show how far the finest of ``grids`` is from convergence
         (``grid_change_next``), up to ``MAX_CHECK_GRID`` nodes; the acceptance verdict is
         not changed by it.
+    scheduler : str or distributed.Client or cluster, optional
+        Run the solves on a Dask cluster (default: a local process pool).
+    workers : int, optional
+        Processes of the local pool (default: one per core; 1 solves in this process).
+    store : path, optional
+        The run store (default ``outdir/point_ehl_map.sqlite``); a rerun resumes from it.
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -211,38 +260,49 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
         grids = (nodes,) if nodes else ((65, 129) if quick else GRIDS)
     grids = tuple(int(n) for n in grids)
     pairs = [(20, 10), (100, 10)] if quick else [(m, l) for m in M_VALUES for l in L_VALUES]
+    store = Path(store) if store is not None else outdir / "point_ehl_map.sqlite"
     cases = []
     t_start = time.perf_counter()
+    alpha_ph = {(M, L): _formulas(moes_scene(M, L, grids[0]))["moes"]["alpha_ph"]
+                for M, L in pairs}
+    solved = [(M, L) for M, L in pairs if alpha_ph[(M, L)] <= MAX_ALPHA_PH]
+    rows = sweep_cases([(M, L, n) for M, L in solved for n in grids], store,
+                       scheduler=scheduler, workers=workers)
     for M, L in pairs:
-        g = _formulas(moes_scene(M, L, grids[0]))["moes"]
-        if g["alpha_ph"] > MAX_ALPHA_PH:
-            cases.append({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "status": "skipped",
-                          "message": f"alpha p_h = {g['alpha_ph']:.1f} > {MAX_ALPHA_PH}"})
+        if alpha_ph[(M, L)] > MAX_ALPHA_PH:
+            cases.append({"M": M, "L": L, "alpha_ph": alpha_ph[(M, L)], "status": "skipped",
+                          "message": f"alpha p_h = {alpha_ph[(M, L)]:.1f} > {MAX_ALPHA_PH}"})
             continue
-        runs = []
-        res = None
-        for n in grids:
-            row, res = run_case(M, L, n)
-            runs.append(row)
-            print(f"M={M:g} L={L:g} {n}^2: {row['status']}, {row['newton_iterations']} "
-                  f"Newton its, {row['wall_time_s']:.1f} s, h_c/NVM "
-                  f"{row['h_central_ratio']:.4f}", flush=True)
-        case = _assess({"M": M, "L": L, "alpha_ph": g["alpha_ph"], "runs": runs})
-        if check_next_grid and "grid change" in case["missed"] \
-                and 2 * grids[-1] - 1 <= MAX_CHECK_GRID:
-            row, _ = run_case(M, L, 2 * grids[-1] - 1)
+        runs = [rows[(M, L, n)] for n in grids]
+        for row in runs:
+            print(_run_text(row), flush=True)
+        cases.append(_assess({"M": M, "L": L, "alpha_ph": alpha_ph[(M, L)], "runs": runs}))
+    finer = 2 * grids[-1] - 1
+    checks = [c for c in cases if c["status"] != "skipped" and "grid change" in c["missed"]]
+    if check_next_grid and checks and finer <= MAX_CHECK_GRID:
+        extra = sweep_cases([(c["M"], c["L"], finer) for c in checks], store,
+                            scheduler=scheduler, workers=workers)
+        for case in checks:
+            row = extra[(case["M"], case["L"], finer)]
             case["next_run"] = row
-            case["grid_change_next"] = row["h_central_m"] / runs[-1]["h_central_m"] - 1.0
-            print(f"M={M:g} L={L:g} {row['nodes']}^2 (grid check): {row['status']}, "
-                  f"{row['newton_iterations']} Newton its, {row['wall_time_s']:.1f} s, "
-                  f"h_c/NVM {row['h_central_ratio']:.4f}", flush=True)
-        cases.append(case)
-        _write(outdir, cases, grids, t_start)
-        if plot and (M, L) == pairs[-1] and res is not None:
+            case["grid_change_next"] = row["h_central_m"] / case["runs"][-1]["h_central_m"] - 1.0
+            print(_run_text(row, " (grid check)"), flush=True)
+    if plot and solved:
+        path = rows[(*solved[-1], grids[-1])]["result_path"]
+        if path is not None:
             from bearing_fem.plot import plot_result
 
-            plot_result(res, outdir / "point_ehl_map_last.png", kind="map")
+            plot_result(Path(path) / "result.h5", outdir / "point_ehl_map_last.png", kind="map")
+    for c in cases:  # where each run's files are is in the store, not in the tables
+        for row in c.get("runs", []) + ([c["next_run"]] if "next_run" in c else []):
+            row.pop("result_path", None)
     return _write(outdir, cases, grids, t_start, final=True)
+
+
+def _run_text(row: dict, note: str = "") -> str:
+    return (f"M={row['M']:g} L={row['L']:g} {row['nodes']}^2{note}: {row['status']}, "
+            f"{row['newton_iterations']} Newton its, {row['wall_time_s']:.1f} s, h_c/NVM "
+            f"{row['h_central_ratio']:.4f}")
 
 
 def _write(outdir: Path, cases: list[dict], grids: tuple[int, ...], t_start: float,
@@ -311,6 +371,8 @@ if __name__ == "__main__":
         print(hamrock_groups())
         sys.exit(0)
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    grid_arg = [a.split("=", 1)[1] for a in sys.argv[1:] if a.startswith("--grids=")]
+    opts = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--") and "=" in a)
     main(args[0] if args else "out_point_ehl_map", quick="--quick" in sys.argv,
-         grids=tuple(int(n) for n in grid_arg[0].split(",")) if grid_arg else None)
+         grids=tuple(int(n) for n in opts["grids"].split(",")) if "grids" in opts else None,
+         workers=int(opts["workers"]) if "workers" in opts else None,
+         scheduler=opts.get("scheduler"))

@@ -1,0 +1,635 @@
+"""Running the cases of a sweep: the worker function, the executors and the client loop.
+
+Workers solve a case and write its result files into ``<results>/<hash>/`` (first into a
+temporary folder, renamed into place when complete); the client alone writes the run
+store, one transaction per finished case, as soon as it is reported. So a worker that
+fails or is killed loses only the case it was running, which stays ``pending`` or
+becomes ``lost`` and runs again on the next run of the sweep; a row never claims success
+unless the client has seen the result folder. A client that is killed leaves its
+finished result folders behind; the next run adopts them (their ``run.json`` names the
+case's hash) instead of solving them again.
+
+Executors
+    :class:`SerialExecutor` (``workers = 1``: in the calling process),
+    :class:`PoolExecutor` (default: a local process pool with one process per core, BLAS
+    limited to one thread per process) and :class:`DaskExecutor` (a Dask distributed
+    cluster: a scheduler address, a ``distributed.Client`` or a cluster object such as
+    ``LocalCluster``). The result folder must be on a filesystem that the workers and
+    the client share.
+"""
+from __future__ import annotations
+
+import json
+import logging
+import os
+import secrets
+import shutil
+import socket
+import time
+import traceback
+from collections import deque
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Mapping, Sequence
+
+from ..errors import SceneError
+from .spec import Case
+from .store import ERROR_STATUS, NON_FINAL, RunStore
+
+log = logging.getLogger(__name__)
+
+#: Times a case may be in flight on a worker that dies before it is recorded ``lost``.
+MAX_ATTEMPTS = 3
+#: Marker file written into every result folder (hash, kind, params, status).
+RUN_FILE = "run.json"
+#: The summary file of a result folder, per kind.
+SUMMARY_FILE = {"scene": "summary.json", "bearing": "bearing_summary.json"}
+
+Outcome = dict[str, Any]
+Done = Callable[["Task", Outcome], None]
+
+
+@dataclass(frozen=True)
+class Task:
+    """What a worker needs to run one case.
+
+    Attributes
+    ----------
+    case : Case
+    run_dir : str
+        Absolute path of the case's result folder (``<results>/<hash>``).
+    files : {"all", "summary"}
+    blas_threads : int or None
+        Limit of BLAS/OpenMP threads inside the worker (None: as configured).
+    attempts : int
+        How many times the case has been started (this one included).
+    """
+
+    case: Case
+    run_dir: str
+    files: str = "all"
+    blas_threads: int | None = None
+    attempts: int = 1
+
+
+def worker_name() -> str:
+    """``host:pid`` of the running process."""
+    return f"{socket.gethostname()}:{os.getpid()}"
+
+
+# ---------------------------------------------------------------------------------------
+# worker side
+# ---------------------------------------------------------------------------------------
+def _solve(case: Case) -> tuple[Any, Callable[[Any, Path], Any]]:
+    """Solve a case; return the result and the function that exports it."""
+    if case.kind == "bearing":
+        from ..bearing import solve_bearing  # type: ignore[attr-defined]
+        from ..io import export_bearing  # type: ignore[attr-defined]
+
+        return solve_bearing(case.scene), export_bearing
+    if getattr(case.scene, "transient", None) is not None:
+        from ..contacts.dispatch import solve_series
+        from ..io import export_series
+
+        return solve_series(case.scene), export_series
+    from ..contacts.dispatch import solve
+    from ..io import export
+
+    return solve(case.scene), export
+
+
+def _limits(threads: int | None):
+    """Context limiting BLAS/OpenMP threads (threadpoolctl), or a no-op."""
+    import contextlib
+
+    if not threads:
+        return contextlib.nullcontext()
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - threadpoolctl is a dependency
+        return contextlib.nullcontext()
+    return threadpool_limits(limits=threads)
+
+
+def run_task(task: Task) -> Outcome:
+    """Solve one case and write its result folder (the function the workers run).
+
+    Never raises for a failed solve: a solve that raises gives status ``error``
+    (final), a failure to write the files status ``lost`` (not final), each with the
+    exception in the message.
+
+    Returns
+    -------
+    dict
+        ``status``, ``success``, ``message``, ``summary`` (the result's summary or None),
+        ``result_path`` (the folder, or None), ``run_time_s`` [s], ``worker``,
+        ``attempts``.
+    """
+    t0 = time.perf_counter()
+    case = task.case
+    base = {"hash": case.hash, "worker": worker_name(), "attempts": task.attempts}
+    try:
+        with _limits(task.blas_threads):
+            result, exporter = _solve(case)
+        summary = result.summary()
+    except Exception as exc:  # a bug or an input the solver refuses: recorded, not raised
+        log.debug("case %s raised:\n%s", case.hash[:12], traceback.format_exc())
+        return {**base, "status": ERROR_STATUS, "success": False, "summary": None,
+                "message": f"the solve raised {type(exc).__name__}: {exc}",
+                "result_path": None, "run_time_s": time.perf_counter() - t0}
+    try:
+        path = publish(result, exporter, case, Path(task.run_dir), task.files,
+                       summary, time.perf_counter() - t0)
+    except Exception as exc:
+        return {**base, "status": "lost", "success": False, "summary": None,
+                "message": f"writing the result files into {task.run_dir!r} failed: "
+                           f"{type(exc).__name__}: {exc}",
+                "result_path": None, "run_time_s": time.perf_counter() - t0}
+    return {**base, "status": str(result.status), "success": bool(result.success),
+            "message": str(result.message), "summary": summary, "result_path": str(path),
+            "run_time_s": time.perf_counter() - t0}
+
+
+def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_dir: Path,
+            files: str, summary: Mapping[str, Any], run_time_s: float) -> Path:
+    """Write the result folder of a case atomically.
+
+    The files are written into a temporary sibling folder, which is renamed to
+    ``run_dir`` once complete (an older folder of the same case is moved aside first and
+    removed after). ``files = "summary"`` writes the summary file alone.
+    """
+    run_dir.parent.mkdir(parents=True, exist_ok=True)
+    token = f"{os.getpid()}-{secrets.token_hex(4)}"
+    tmp = run_dir.with_name(f".{run_dir.name}.tmp-{token}")
+    try:
+        tmp.mkdir()
+        if files == "summary":
+            text = json.dumps(summary, indent=2, allow_nan=False, default=str)
+            (tmp / SUMMARY_FILE[case.kind]).write_text(text + "\n", encoding="utf-8")
+        else:
+            exporter(result, tmp)
+        marker = {"hash": case.hash, "kind": case.kind, "params": case.params,
+                  "status": str(result.status), "success": bool(result.success),
+                  "run_time_s": run_time_s, "worker": worker_name()}
+        (tmp / RUN_FILE).write_text(json.dumps(marker, indent=1, default=str) + "\n",
+                                    encoding="utf-8")
+        old = None
+        if run_dir.exists():
+            old = run_dir.with_name(f".{run_dir.name}.old-{token}")
+            os.replace(run_dir, old)
+        os.replace(tmp, run_dir)
+        if old is not None:
+            shutil.rmtree(old, ignore_errors=True)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return run_dir
+
+
+def result_complete(path: Path | None, kind: str) -> bool:
+    """True when ``path`` is a complete result folder (its marker and summary exist)."""
+    return (path is not None and (path / RUN_FILE).is_file()
+            and (path / SUMMARY_FILE.get(kind, "summary.json")).is_file())
+
+
+def adopt(case: Case, run_dir: Path) -> Outcome | None:
+    """The outcome stored in a complete result folder of ``case`` (written by a worker
+    whose client did not record it), or None."""
+    if not result_complete(run_dir, case.kind):
+        return None
+    try:
+        marker = json.loads((run_dir / RUN_FILE).read_text(encoding="utf-8"))
+        summary = json.loads((run_dir / SUMMARY_FILE[case.kind]).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if marker.get("hash") != case.hash or "status" not in summary:
+        return None
+    return {"hash": case.hash, "status": str(summary["status"]),
+            "success": bool(summary.get("success")), "message": str(summary.get("message", "")),
+            "summary": summary, "result_path": str(run_dir),
+            "run_time_s": marker.get("run_time_s"), "worker": marker.get("worker"),
+            "attempts": 1}
+
+
+def lost(task: Task, message: str) -> Outcome:
+    """Outcome of a case whose worker never reported (status ``lost``, not final)."""
+    return {"hash": task.case.hash, "status": "lost", "success": False, "summary": None,
+            "message": message, "result_path": None, "run_time_s": None, "worker": None,
+            "attempts": task.attempts}
+
+
+# ---------------------------------------------------------------------------------------
+# executors
+# ---------------------------------------------------------------------------------------
+class SerialExecutor:
+    """Run the tasks one after another in the calling process."""
+
+    name = "serial (this process)"
+
+    def open(self) -> None:
+        """Nothing to start."""
+
+    def close(self) -> None:
+        """Nothing to stop."""
+
+    def run(self, tasks: Sequence[Task], done: Done) -> None:
+        for t in tasks:
+            done(t, run_task(t))
+
+
+class PoolExecutor:
+    """A local process pool (``concurrent.futures``; forkserver start where available).
+
+    At most ``workers`` tasks are in flight; a worker process that dies breaks the pool,
+    which is started again, and the tasks that were in flight are resubmitted until they
+    have been started :data:`MAX_ATTEMPTS` times (then recorded ``lost``).
+    """
+
+    def __init__(self, workers: int) -> None:
+        self.workers = int(workers)
+        self.name = f"local pool of {self.workers} processes"
+
+    def open(self) -> None:
+        """Nothing to start (the pool starts in :meth:`run`)."""
+
+    def close(self) -> None:
+        """Nothing to stop (the pool stops at the end of :meth:`run`)."""
+
+    def _pool(self):
+        import multiprocessing as mp
+        import sys
+        from concurrent.futures import ProcessPoolExecutor
+
+        main_file = getattr(sys.modules.get("__main__"), "__file__", None)
+        if main_file is not None and not Path(main_file).is_file() and \
+                "fork" in mp.get_all_start_methods():
+            # e.g. a script read from standard input: a forkserver or spawned worker
+            # would try to import it again from a file that does not exist
+            ctx = mp.get_context("fork")
+        else:
+            try:
+                ctx = mp.get_context("forkserver")
+                ctx.set_forkserver_preload(["bearing_fem.sweep.execute",
+                                            "bearing_fem.contacts.dispatch"])
+            except ValueError:  # pragma: no cover - platforms without forkserver
+                ctx = mp.get_context("spawn")
+        return ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx)
+
+    def run(self, tasks: Sequence[Task], done: Done) -> None:
+        from concurrent.futures import FIRST_COMPLETED, wait
+        from concurrent.futures.process import BrokenProcessPool
+
+        queue = deque(tasks)
+        inflight: dict[Any, Task] = {}
+        pool = self._pool()
+        try:
+            while queue or inflight:
+                while queue and len(inflight) < self.workers:
+                    t = queue.popleft()
+                    inflight[pool.submit(run_task, t)] = t
+                finished, _ = wait(list(inflight), return_when=FIRST_COMPLETED)
+                broken = False
+                for f in finished:
+                    t = inflight.pop(f)
+                    try:
+                        out = f.result()
+                    except BrokenProcessPool:
+                        broken = True
+                        if t.attempts >= MAX_ATTEMPTS:
+                            done(t, lost(t, f"its worker process died {t.attempts} times "
+                                            "while running it"))
+                        else:
+                            queue.appendleft(_again(t))
+                        continue
+                    except Exception as exc:  # e.g. the task could not be pickled
+                        done(t, lost(t, f"the local pool failed to run it: "
+                                        f"{type(exc).__name__}: {exc}"))
+                        continue
+                    done(t, out)
+                if broken:
+                    log.warning("a worker process died; restarting the local pool")
+                    for f, t in list(inflight.items()):  # they died with the pool
+                        inflight.pop(f)
+                        if t.attempts >= MAX_ATTEMPTS:
+                            done(t, lost(t, f"its worker process died {t.attempts} times "
+                                            "while running it"))
+                        else:
+                            queue.appendleft(_again(t))
+                    pool.shutdown(wait=True, cancel_futures=True)
+                    pool = self._pool()
+        finally:
+            pool.shutdown(wait=False, cancel_futures=True)
+
+
+def _again(t: Task) -> Task:
+    return Task(t.case, t.run_dir, t.files, t.blas_threads, t.attempts + 1)
+
+
+class DaskExecutor:
+    """Cases on a Dask distributed cluster.
+
+    Parameters
+    ----------
+    scheduler : str or distributed.Client or cluster
+        A scheduler address (``tcp://host:8786``), a connected ``Client`` (left open), or
+        a cluster object with a ``scheduler_address`` (``LocalCluster``).
+    timeout : float
+        Seconds to wait for the scheduler when connecting.
+
+    A worker that dies is handled by the scheduler: it reschedules the task on another
+    worker (up to its ``allowed-failures``); a task that kills every worker it runs on
+    comes back as ``KilledWorker`` and is recorded ``lost``.
+    """
+
+    def __init__(self, scheduler: Any, timeout: float = 30.0) -> None:
+        try:
+            import distributed  # noqa: F401
+        except ImportError:
+            raise SceneError("running a sweep on a Dask scheduler needs dask.distributed: "
+                             "pip install 'bearing_fem[sweep]'") from None
+        self.scheduler = scheduler
+        self.timeout = timeout
+        self.name = f"Dask cluster at {self.address}"
+        self.client = None
+        self.own = False
+
+    @property
+    def address(self) -> str:
+        s = self.scheduler
+        if isinstance(s, str):
+            return s
+        return str(getattr(s, "scheduler_address", None) or getattr(
+            getattr(s, "scheduler", None), "address", None) or s)
+
+    def _client(self):
+        from distributed import Client
+
+        if isinstance(self.scheduler, Client):
+            return self.scheduler, False
+        try:
+            if isinstance(self.scheduler, str):
+                client = Client(self.scheduler, timeout=self.timeout,
+                                set_as_default=False)
+            else:
+                client = Client(self.scheduler, set_as_default=False)
+        except (OSError, TimeoutError) as exc:
+            raise SceneError(f"cannot reach the Dask scheduler at {self.address!r}: "
+                             f"{type(exc).__name__}: {exc}") from None
+        return client, True
+
+    def open(self) -> None:
+        """Connect to the scheduler (SceneError when it does not answer)."""
+        if self.client is None:
+            self.client, self.own = self._client()
+
+    def close(self) -> None:
+        """Close the connection if this executor opened it (a given Client stays open)."""
+        if self.client is not None and self.own:
+            self.client.close()
+        self.client = None
+
+    def run(self, tasks: Sequence[Task], done: Done) -> None:
+        from distributed import as_completed
+
+        self.open()
+        client = self.client
+        futures: dict[Any, Task] = {}
+        try:
+            token = secrets.token_hex(4)
+            for i, t in enumerate(tasks):
+                fut = client.submit(run_task, t, key=f"bearing_fem-{t.case.hash[:16]}-{token}",
+                                    pure=False, priority=-i)
+                futures[fut] = t
+            for fut in as_completed(list(futures), loop=client.loop):
+                t = futures.pop(fut)
+                if fut.status == "finished":
+                    out = fut.result()
+                else:
+                    exc = fut.exception()
+                    name = type(exc).__name__
+                    why = ("its worker died each time it ran it (KilledWorker)"
+                           if name == "KilledWorker" else f"the cluster failed to run it: "
+                                                          f"{name}: {exc}")
+                    out = lost(t, why)
+                fut.release()
+                done(t, out)
+        finally:
+            for fut in futures:
+                fut.cancel()
+
+
+def default_workers() -> int:
+    """Processes of the default local pool: the cores this process may use."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def make_executor(scheduler: Any = None, workers: int | None = None, cases: int = 1):
+    """The executor for ``scheduler`` (Dask) or ``workers`` (local; 1 = in process)."""
+    if scheduler is not None:
+        return DaskExecutor(scheduler)
+    n = default_workers() if workers is None else int(workers)
+    n = max(1, min(n, cases))
+    return SerialExecutor() if n == 1 else PoolExecutor(n)
+
+
+# ---------------------------------------------------------------------------------------
+# the client loop
+# ---------------------------------------------------------------------------------------
+@dataclass
+class SweepReport:
+    """What a run of a sweep did.
+
+    Attributes
+    ----------
+    store : Path
+    results : Path
+        Folder of the per-run result folders.
+    executor : str
+    cases : int
+        Cases in the sweep.
+    ran : int
+        Cases solved by this run.
+    adopted : int
+        Cases recorded from result folders that an earlier, interrupted run left.
+    skipped : int
+        Cases already in the store with a final status (not run again).
+    statuses : dict
+        hash -> status of every case after this run.
+    successes, failures, unfinished : int
+        Cases whose stored status is successful, unsuccessful and final, or not final
+        (``pending``/``lost``) after this run.
+    wall_time_s : float
+    dry_run : bool
+    to_run : list of str
+        Hashes that were (or, for a dry run, would be) run.
+    """
+
+    store: Path
+    results: Path
+    executor: str
+    cases: int
+    ran: int = 0
+    adopted: int = 0
+    skipped: int = 0
+    statuses: dict[str, str] = field(default_factory=dict)
+    successes: int = 0
+    failures: int = 0
+    unfinished: int = 0
+    wall_time_s: float = 0.0
+    dry_run: bool = False
+    to_run: list[str] = field(default_factory=list)
+
+    @property
+    def all_successful(self) -> bool:
+        """Every case of the sweep is stored with a successful status."""
+        return self.successes == self.cases
+
+    def text(self) -> str:
+        """A few lines for a terminal."""
+        if self.dry_run:
+            return (f"{self.cases} cases: {len(self.to_run)} to run, {self.skipped} already "
+                    f"in {self.store} (dry run: nothing solved)")
+        lines = [f"{self.cases} cases: {self.ran} solved now, {self.adopted} recorded from "
+                 f"earlier result folders, {self.skipped} already in the store",
+                 f"  {self.successes} successful, {self.failures} unsuccessful, "
+                 f"{self.unfinished} unfinished (pending or lost: run the sweep again)",
+                 f"  store {self.store}; result folders in {self.results}",
+                 f"  {self.executor}, {self.wall_time_s:.1f} s"]
+        return "\n".join(lines)
+
+
+def plan(cases: Sequence[Case], store: RunStore, results: Path, retry_failed: bool
+         ) -> tuple[list[Case], list[Case], list[tuple[Case, Outcome]]]:
+    """Split cases into (to run, skipped, adoptable with their outcome).
+
+    A case is skipped when its row has a final status and, if successful, its result
+    folder exists; unsuccessful final rows are run again only with ``retry_failed``.
+    Rows ``pending`` or ``lost``, and successful rows whose result folder is gone, run
+    again (or are adopted from a complete result folder of the same hash).
+    """
+    states = store.states([c.hash for c in cases])
+    run, skip, adopted = [], [], []
+    for c in cases:
+        s = states.get(c.hash)
+        if s is not None and s["status"] not in NON_FINAL:
+            if s["success"]:
+                if result_complete(store.resolve(s["result_path"]), c.kind):
+                    skip.append(c)
+                    continue
+                log.info("case %s: stored as %s but its result folder is missing; running "
+                         "it again", c.hash[:12], s["status"])
+            elif not retry_failed:
+                skip.append(c)
+                continue
+            else:
+                run.append(c)
+                continue
+        found = adopt(c, results / c.hash)
+        if found is not None:
+            adopted.append((c, found))
+        else:
+            run.append(c)
+    return run, skip, adopted
+
+
+def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | Path | None = None,
+              files: str = "all", scheduler: Any = None, workers: int | None = None,
+              retry_failed: bool = False, progress: bool = False, dry_run: bool = False,
+              on_outcome: Callable[[Case, Outcome], None] | None = None) -> SweepReport:
+    """Run the cases that the store does not hold yet and record every outcome.
+
+    Parameters
+    ----------
+    cases : sequence of Case
+    store_path : path
+        The SQLite run store (created if missing).
+    results : path, optional
+        Folder of the per-run result folders (default ``<store stem>_runs`` next to the
+        store).
+    files : {"all", "summary"}
+    scheduler : str or Client or cluster, optional
+        Run on Dask; default: the local pool.
+    workers : int, optional
+        Local pool size (default: the machine's cores; 1 runs in this process).
+    retry_failed : bool
+        Also rerun cases stored with an unsuccessful final status.
+    progress : bool
+        A progress bar on stderr (only when stderr is a terminal).
+    dry_run : bool
+        Plan only: report what would run, solve and write nothing.
+    on_outcome : callable, optional
+        Called with (case, outcome) after each case is recorded.
+
+    Returns
+    -------
+    SweepReport
+    """
+    from .progress import SweepProgress
+
+    t0 = time.perf_counter()
+    store_path = Path(store_path)
+    results = Path(results) if results is not None else \
+        store_path.parent / f"{store_path.stem}_runs"
+    results = results.resolve()
+    if dry_run and not store_path.exists():  # nothing stored yet: every case would run
+        executor = make_executor(scheduler, workers, max(1, len(cases)))
+        return SweepReport(store=store_path, results=results, executor=executor.name,
+                           cases=len(cases), dry_run=True, to_run=[c.hash for c in cases],
+                           wall_time_s=time.perf_counter() - t0)
+    with RunStore(store_path) as store:
+        to_run, skipped, adoptable = plan(cases, store, results, retry_failed)
+        executor = make_executor(scheduler, workers, max(1, len(to_run)))
+        report = SweepReport(store=store_path, results=results,
+                             executor=executor.name if to_run else "nothing to run",
+                             cases=len(cases), skipped=len(skipped), dry_run=dry_run,
+                             to_run=[c.hash for c in to_run])
+        if dry_run:
+            report.adopted = len(adoptable)
+            report.wall_time_s = time.perf_counter() - t0
+            return report
+        if to_run:
+            executor.open()  # e.g. reach the scheduler before anything is written
+        bar = SweepProgress(len(to_run), enabled=None if progress else False)
+        try:
+            store.fill_params(skipped)
+            for c, out in adoptable:
+                store.write(c, out)
+                report.adopted += 1
+            states = store.states([c.hash for c in to_run])
+            attempts = {h: s["attempts"] for h, s in states.items()}
+            store.mark_pending(to_run, attempts)
+            blas = 1 if isinstance(executor, PoolExecutor) else None
+            tasks = [Task(c, str(results / c.hash), files, blas, attempts.get(c.hash, 0) + 1)
+                     for c in to_run]
+
+            def done(task: Task, outcome: Outcome) -> None:
+                outcome = dict(outcome)
+                path = outcome.get("result_path")
+                if outcome["status"] not in NON_FINAL and outcome["status"] != ERROR_STATUS \
+                        and not result_complete(Path(path) if path else None, task.case.kind):
+                    outcome = lost(task, f"the worker ({outcome.get('worker')}) reported "
+                                         f"status {outcome['status']} but its result folder "
+                                         f"{path!r} is not visible here: the results folder "
+                                         "must be on a filesystem shared by the workers and "
+                                         "the client")
+                store.write(task.case, outcome)
+                report.ran += 1
+                bar.update(outcome)
+                if on_outcome is not None:
+                    on_outcome(task.case, outcome)
+
+            if tasks:
+                executor.run(tasks, done)
+        finally:
+            executor.close()
+            bar.close()
+            final = store.states([c.hash for c in cases])
+            report.statuses = {h: s["status"] for h, s in final.items()}
+            report.successes = sum(1 for s in final.values() if s["success"])
+            report.unfinished = sum(1 for s in final.values() if s["status"] in NON_FINAL)
+            report.failures = len(final) - report.successes - report.unfinished
+            report.wall_time_s = time.perf_counter() - t0
+    return report

@@ -1,0 +1,145 @@
+"""A 12-case sweep on a Dask LocalCluster of 2 worker processes: the store, resume, and
+workers killed while they run a case."""
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+distributed = pytest.importorskip("distributed")
+import cloudpickle  # noqa: E402  (a dependency of distributed)
+import dask  # noqa: E402
+from distributed.diagnostics.plugin import WorkerPlugin  # noqa: E402
+
+import bearing_fem as bf  # noqa: E402
+from bearing_fem.sweep import RunStore, SweepSpec, query_runs  # noqa: E402
+
+from test_sweep_run import successes_have_files, write_sweep  # noqa: E402
+
+#: The rigid cylinder of test_sweep_run (one linear solve per case, milliseconds): at the
+#: gap 1e-7 m the pressure does not exist (status no_solution), at 3e-7 and 1e-6 m it does
+#: (status linear) at these speeds.
+SWEEP = {"sweep": {"scene": "base.toml"},
+         "axes": {"load.gap": [1e-7, 3e-7, 1e-6], "kinematics.u1": [0.75, 1.0, 1.5, 2.0]},
+         "zip": {"kinematics.u2": "kinematics.u1"}}
+
+
+class KillOnStart(WorkerPlugin):
+    """Kills the worker process (``os._exit``) when the case whose hash starts with
+    ``prefix`` starts executing on it, ``times`` times in all (counted in a file, which
+    outlives the workers)."""
+
+    name = "bearing-fem-test-killer"
+
+    def __init__(self, case_hash: str, counter: str, times: int) -> None:
+        self.prefix = f"bearing_fem-{case_hash[:16]}"  # DaskExecutor's task keys
+        self.counter, self.times = counter, times
+
+    def transition(self, key, start, finish, **kwargs):
+        if finish == "executing" and str(key).startswith(self.prefix):
+            path = Path(self.counter)
+            n = int(path.read_text()) if path.exists() else 0
+            if n < self.times:
+                path.write_text(str(n + 1))
+                os._exit(1)
+
+
+@pytest.fixture(scope="module")
+def client():
+    """One LocalCluster for the module: 2 worker processes of 1 thread. A task whose
+    worker dies is rescheduled once; the second death makes it KilledWorker. One task
+    per worker at a time, so a dying worker takes no other case with it."""
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # the plugin travels
+    with dask.config.set({"distributed.scheduler.allowed-failures": 1,
+                          "distributed.scheduler.worker-saturation": 1.0}):
+        cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                           dashboard_address=None)
+        c = distributed.Client(cluster, set_as_default=False)
+    try:
+        yield c
+    finally:
+        c.close()
+        cluster.close()
+
+
+def make_sweep(tmp_path: Path) -> Path:
+    return write_sweep(tmp_path, SWEEP)
+
+
+def test_twelve_cases_on_two_dask_workers(tmp_path, client):
+    path = make_sweep(tmp_path)
+    cases = SweepSpec.from_toml(path).cases()
+    assert len(cases) == 12
+    victim = next(c for c in cases if c.params["load.gap"] == 1e-6)
+    counter = tmp_path / "kills"
+    client.register_plugin(KillOnStart(victim.hash, str(counter), times=1))
+    store = tmp_path / "sweep.sqlite"
+    finals_seen = []
+
+    def after_each(case, outcome):  # the client records each case as it arrives
+        with RunStore(store) as reader:
+            finals_seen.append(sum(n for s, n in reader.count().items() if s != "pending"))
+
+    try:
+        report = bf.sweep(path, scheduler=client, on_outcome=after_each)
+    finally:
+        client.unregister_worker_plugin(KillOnStart.name)
+    assert counter.read_text() == "1", "the worker running the victim case was killed once"
+    assert report.executor.startswith("Dask cluster at tcp://")
+    assert (report.cases, report.ran, report.skipped) == (12, 12, 0)
+    assert (report.successes, report.failures, report.unfinished) == (8, 4, 0)
+    assert finals_seen == list(range(1, 13)), "one final row per finished case, in turn"
+    rows, _ = query_runs(store, columns="all")
+    assert len(rows) == 12
+    for r in rows:
+        expected = "no_solution" if r["load.gap"] == 1e-7 else "linear"
+        assert r["status"] == expected and r["success"] == (expected == "linear"), r
+        assert r["kinematics.u2"] == r["kinematics.u1"]
+    (v,) = [r for r in rows if r["hash"] == victim.hash]
+    assert v["status"] == "linear" and v["h_central"] == pytest.approx(1e-6, rel=1e-12), (
+        "the killed case was run again on the other worker and solved (rigid: h(0) = gap)")
+    assert len({r["worker"] for r in rows}) >= 2, "both workers (and the restarted one) ran"
+    successes_have_files(store)
+
+    again = bf.sweep(path, scheduler=client)
+    assert (again.ran, again.skipped, again.adopted) == (0, 12, 0), "resume solves nothing"
+    assert again.statuses == report.statuses
+
+
+def test_case_that_kills_every_worker_is_lost_then_rerun(tmp_path, client):
+    path = make_sweep(tmp_path)
+    cases = SweepSpec.from_toml(path).cases()
+    victim = next(c for c in cases if c.params["load.gap"] == 3e-7)
+    counter = tmp_path / "kills"
+    store = tmp_path / "sweep.sqlite"
+    # the victim alone first: a dying worker then takes no other case with it (the
+    # scheduler counts every task it had in flight as a suspect)
+    client.register_plugin(KillOnStart(victim.hash, str(counter), times=100))
+    try:
+        report = bf.sweep([victim], store=store, scheduler=client)
+    finally:
+        client.unregister_worker_plugin(KillOnStart.name)
+    assert counter.read_text() == "2", "allowed-failures = 1: two deaths, then KilledWorker"
+    assert (report.successes, report.failures, report.unfinished) == (0, 0, 1)
+    (lost,) = query_runs(store, columns="all")[0]
+    assert lost["hash"] == victim.hash and lost["status"] == "lost"
+    assert lost["success"] == 0 and lost["result_path"] is None
+    assert "KilledWorker" in lost["message"]
+    assert lost["load.gap"] == 3e-7, "the parameters are stored with the lost case"
+
+    rerun = bf.sweep(path, store=store, scheduler=client)  # the workers are healthy again
+    assert (rerun.ran, rerun.skipped) == (12, 0), "the lost case runs again with the rest"
+    assert (rerun.successes, rerun.failures, rerun.unfinished) == (8, 4, 0)
+    assert rerun.statuses[victim.hash] == "linear"
+    successes_have_files(store)
+
+
+def test_unreachable_scheduler_is_an_input_error(tmp_path):
+    from bearing_fem.errors import SceneError
+    from bearing_fem.sweep.execute import DaskExecutor
+
+    with pytest.raises(SceneError, match="cannot reach the Dask scheduler at "
+                                         "'tcp://127.0.0.1:1'"):
+        DaskExecutor("tcp://127.0.0.1:1", timeout=1).open()

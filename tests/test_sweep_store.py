@@ -1,0 +1,220 @@
+"""The run store: schema, migration, filters, exports, and concurrent writers."""
+from __future__ import annotations
+
+import json
+import sqlite3
+import subprocess
+import sys
+import textwrap
+import time
+
+import pytest
+
+from bearing_fem.errors import SceneError
+from bearing_fem.scene import Scene
+from bearing_fem.sweep import Case, RunStore, query_runs
+from bearing_fem.sweep.store import (CORE_COLUMNS, export_csv, flatten_summary,
+                                     parse_filter)
+
+
+def rigid(gap: float) -> Scene:
+    return Scene.from_dict({"contact": {"kind": "line", "rx": 0.01},
+                            "lubricant": {"viscosity": 0.01},
+                            "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": gap},
+                            "model": {"elasticity": "rigid"}, "mesh": {"nodes": 51}})
+
+
+def outcome(status="linear", success=True, **numbers):
+    summary = {"status": status, "success": success, "message": f"{status} done",
+               "warnings": ["a note"], "error_estimate": {"h_central": 1e-3, "method": "x"},
+               "wall_time_s": 0.5, "version": "9.9", "units": {"h_central": "m"},
+               "dimensionless": {"M": 10.0}, "scene": {"ignored": True}, "history": [1, 2],
+               **numbers}
+    return {"status": status, "success": success, "message": summary["message"],
+            "summary": summary, "result_path": None, "run_time_s": 0.7, "worker": "w:1",
+            "attempts": 1}
+
+
+def test_schema_columns_units_and_migration(tmp_path):
+    path = tmp_path / "runs.sqlite"
+    c1, c2 = Case({"load.gap": 1e-6}, rigid(1e-6)), Case({"load.gap": 2e-6}, rigid(2e-6))
+    with RunStore(path) as store:
+        assert store.conn.execute("PRAGMA journal_mode").fetchone()[0] == "wal"
+        assert list(CORE_COLUMNS) == store.columns()
+        store.write(c1, outcome(h_central=1.1e-6))
+        store.write(c2, outcome(h_central=2.2e-6, p_max=3e5))  # a new summary key: migrated
+        cols = store.columns()
+        assert {"load.gap", "h_central", "p_max", "dimensionless.M",
+                "error_estimate.h_central", "error_estimate.method"} <= set(cols)
+        assert "history" not in cols and "units" not in cols, "lists and units are not columns"
+        info = store.column_info()
+        assert info["h_central"] == {"role": "summary", "unit": "m"}
+        assert info["load.gap"]["role"] == "param" and info["hash"]["role"] == "core"
+        assert info["wall_time_s"]["unit"] == "s"
+        rows = {r["hash"]: r for r in store.rows()}
+    r1, r2 = rows[c1.hash], rows[c2.hash]
+    assert r1["p_max"] is None and r2["p_max"] == 3e5
+    assert r1["load.gap"] == 1e-6 and r1["status"] == "linear" and r1["success"] == 1
+    assert json.loads(r1["warnings"]) == ["a note"]
+    assert json.loads(r1["error_estimate"]) == {"h_central": 1e-3, "method": "x"}
+    assert r1["version"] == "9.9" and r1["wall_time_s"] == 0.5 and r1["run_time_s"] == 0.7
+    assert json.loads(r1["scene"])["load"] == {"gap": 1e-6}
+    # reopening keeps everything (schema created once)
+    with RunStore(path) as store:
+        assert len(store.rows()) == 2
+
+
+def test_pending_then_final_replaces_the_row(tmp_path):
+    case = Case({"load.gap": 1e-6}, rigid(1e-6))
+    with RunStore(tmp_path / "s.sqlite") as store:
+        store.write(case, outcome(h_central=1.0))
+        store.mark_pending([case], {case.hash: 1})
+        (row,) = store.rows()
+        assert row["status"] == "pending" and row["success"] is None
+        assert row["h_central"] is None, "a pending row carries no stale result"
+        assert store.states([case.hash])[case.hash]["attempts"] == 1
+        store.write(case, outcome("max_iterations", False, h_central=2.0))
+        (row,) = store.rows()
+        assert (row["status"], row["success"], row["h_central"]) == ("max_iterations", 0, 2.0)
+
+
+def test_filters_statuses_and_exports(tmp_path):
+    path = tmp_path / "s.sqlite"
+    cases = [Case({"load.gap": g}, rigid(g)) for g in (1e-6, 2e-6, 3e-6, 4e-6)]
+    with RunStore(path) as store:
+        store.write(cases[0], outcome(h_central=1.0))
+        store.write(cases[1], outcome("no_solution", False))
+        store.mark_pending([cases[2]])
+        store.write(cases[3], outcome(h_central=4.0))
+    rows, cols = query_runs(path, status=["success"])
+    assert sorted(r["load.gap"] for r in rows) == [1e-6, 4e-6]
+    assert cols[:3] == ["hash", "status", "load.gap"] and "h_central" in cols
+    assert [r["status"] for r in query_runs(path, status=["failed"])[0]] == ["no_solution"]
+    assert [r["status"] for r in query_runs(path, status=["unfinished"])[0]] == ["pending"]
+    assert len(query_runs(path, status=["final"])[0]) == 3
+    rows, _ = query_runs(path, where=["load.gap>=2e-6", "status!=pending"])
+    assert [r["load.gap"] for r in rows] == [2e-6, 4e-6], "sorted by the parameters"
+    rows, cols = query_runs(path, columns=["hash", "h_central"], where=[("h_central", ">", 2)])
+    assert cols == ["hash", "h_central"] and rows == [{"hash": cases[3].hash,
+                                                        "h_central": 4.0}]
+    text = export_csv(query_runs(path, columns="all")[0], None, ["load.gap", "status"])
+    assert text.splitlines()[0] == "load.gap,status" and len(text.splitlines()) == 5
+    export_csv(rows, tmp_path / "out.csv", ["hash", "h_central"])
+    assert (tmp_path / "out.csv").read_text().splitlines()[1] == f"{cases[3].hash},4.0"
+    with pytest.raises(SceneError, match="no column 'nope'"):
+        query_runs(path, where=["nope=1"])
+    with pytest.raises(SceneError, match="COLUMN OP VALUE"):
+        parse_filter("load.gap")
+    with pytest.raises(SceneError, match="no run store"):
+        query_runs(tmp_path / "missing.sqlite")
+
+
+def test_parquet_needs_pyarrow(tmp_path):
+    from bearing_fem.sweep import export_runs
+
+    try:
+        import pyarrow  # noqa: F401
+    except ImportError:
+        with pytest.raises(SceneError, match="Parquet export needs pyarrow"):
+            export_runs([{"a": 1}], ["a"], parquet=tmp_path / "x.parquet")
+        assert not (tmp_path / "x.parquet").exists()
+    else:  # pragma: no cover - pyarrow is optional
+        import pyarrow.parquet as pq
+
+        export_runs([{"a": 1, "b": "x"}, {"a": None, "b": None}], ["a", "b"],
+                    parquet=tmp_path / "x.parquet")
+        assert pq.read_table(tmp_path / "x.parquet").to_pydict() == {"a": [1, None],
+                                                                    "b": ["x", None]}
+
+
+def test_flatten_summary():
+    cols, units = flatten_summary({"status": "converged", "h_min": None, "p_max": 1.0,
+                                   "units": {"p_max": "Pa", "nope": "m"}, "warnings": ["x"],
+                                   "dimensionless": {"M": 1.0, "deep": {"x": 1}},
+                                   "elements": [{"load": 1.0}], "scene": {}})
+    assert cols == {"status": "converged", "h_min": None, "p_max": 1.0, "dimensionless.M": 1.0}
+    assert units == {"p_max": "Pa"}
+
+
+def test_not_a_store(tmp_path):
+    (tmp_path / "junk.sqlite").write_bytes(b"this is not sqlite" * 100)
+    with pytest.raises(SceneError, match="is not a bearing_fem run store"):
+        RunStore(tmp_path / "junk.sqlite")
+    with pytest.raises(SceneError, match="is a directory"):
+        RunStore(tmp_path)
+
+
+# ---------------------------------------------------------------------------------------
+# several processes writing one store at once
+# ---------------------------------------------------------------------------------------
+WRITER = textwrap.dedent("""
+    import sys, time
+    from pathlib import Path
+    from bearing_fem.scene import Scene
+    from bearing_fem.sweep import Case, RunStore
+
+    store_path, k, n, go = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), Path(sys.argv[4])
+
+    def scene(gap):
+        return Scene.from_dict({"contact": {"kind": "line", "rx": 0.01},
+                                "lubricant": {"viscosity": 0.01},
+                                "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": gap},
+                                "model": {"elasticity": "rigid"}})
+
+    cases = [Case({"writer": k, "i": i}, scene(1e-7 * (1 + k + 10 * i))) for i in range(n)]
+    shared = Case({"shared": 1}, scene(5e-4))  # every writer writes this one too
+    store = RunStore(store_path, timeout=60)
+    while not go.exists():
+        time.sleep(0.005)
+    store.mark_pending(cases)
+    for i, c in enumerate(cases):
+        summary = {"status": "linear", "success": True, "message": f"w{k} i{i}",
+                   "h_central": float(1000 * k + i), f"only_writer_{k}": float(i),
+                   "units": {"h_central": "m"}}
+        store.write(c, {"status": "linear", "success": True, "message": summary["message"],
+                        "summary": summary, "result_path": None, "run_time_s": 0.0,
+                        "worker": f"writer{k}", "attempts": 1})
+        if i == n // 2:
+            store.write(shared, {"status": "linear", "success": True, "message": f"w{k}",
+                                 "summary": {"status": "linear", "h_central": -1.0},
+                                 "result_path": None, "attempts": 1})
+    store.close()
+""")
+
+
+def test_concurrent_writers_from_several_processes(tmp_path):
+    """Four processes write 40 cases each (plus one case all of them write) at once, each
+    bringing its own new summary column: every row arrives intact, no lock error."""
+    path, go = tmp_path / "shared.sqlite", tmp_path / "go"
+    script = tmp_path / "writer.py"
+    script.write_text(WRITER, encoding="utf-8")
+    n, writers = 40, 4
+    procs = [subprocess.Popen([sys.executable, str(script), str(path), str(k), str(n), str(go)],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+             for k in range(writers)]
+    time.sleep(0.5)  # let them all open the store and wait
+    go.write_text("go")
+    errors = []
+    for p in procs:
+        out, err = p.communicate(timeout=120)
+        if p.returncode:
+            errors.append(err)
+    assert not errors, errors
+    with RunStore(path) as store:
+        assert store.conn.execute("PRAGMA integrity_check").fetchone()[0] == "ok"
+        rows = store.rows()
+        cols = store.columns()
+    assert len(rows) == writers * n + 1
+    assert {f"only_writer_{k}" for k in range(writers)} <= set(cols)
+    for r in rows:
+        if r["shared"] == 1:
+            assert r["status"] == "linear" and r["h_central"] == -1.0
+            continue
+        k, i = r["writer"], r["i"]
+        assert (r["status"], r["success"], r["message"]) == ("linear", 1, f"w{k} i{i}")
+        assert r["h_central"] == 1000 * k + i and r[f"only_writer_{k}"] == i
+        assert all(r[f"only_writer_{j}"] is None for j in range(writers) if j != k)
+    # a plain sqlite3 reader sees the same (the WAL is readable by any client)
+    with sqlite3.connect(path) as conn:
+        assert conn.execute("SELECT COUNT(*) FROM runs WHERE status = 'linear'"
+                            ).fetchone()[0] == writers * n + 1
