@@ -58,7 +58,7 @@ from .. import units
 from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import point_central_film_nvm
-from ..numerics.newton import gmres_right
+from ..numerics.newton import blas_threads, gmres_right
 from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat
@@ -146,6 +146,13 @@ GMRES_FORCING_MAX = 1e-3
 #: Newton tolerance. Only the last one or two steps are affected (where |F_k| is within a
 #: few decades of tol); there GMRES stops after ~10 instead of 30-40 iterations.
 GMRES_TOLERANCE_FRACTION = 0.1
+
+#: BLAS threads inside a point solve (restored afterwards). Its dense work is small
+#: (vectors of one grid, (cells x 9) by (9 x 16) products), where the threads' start-up
+#: and synchronisation cost more than they save, and far more on a busy machine: measured
+#: on 2 cores with two other jobs, (131072 x 4) @ (4 x 9) took 57 ms with the default
+#: threads and 0.85 ms with one. None: leave the process setting alone.
+BLAS_THREADS = 1
 
 # ---------------------------------------------------------------------------------------
 # setup
@@ -331,11 +338,11 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
     q : ndarray (flat, Pa); linear_solves : int; active : bool ndarray (cavitated nodes)
     """
     ops = grid.ops
-    xq, yq = ops.points
-    h = h0 + xq**2 / (2 * rx) + yq**2 / (2 * ry)
+    xq, yq = ops.coordinate_x(), ops.coordinate_y()
+    h = h0 + ops.separable(xq**2 / (2 * rx), yq**2 / (2 * ry))
     eps = h**3 / (12.0 * viscosity)
     zero = np.zeros_like(h)
-    a = (ops.flux_jacobian(0, zero, (eps, zero)) + ops.flux_jacobian(1, zero, (zero, eps))).tocsr()
+    a = ops.assembler.flux_jacobian_sum([(0, zero, (eps, zero)), (1, zero, (zero, eps))])
     f = ops.weak_divergence(mean_speed * h, zero)
     if squeeze_velocity:
         f = f - ops.value.T @ (ops.weights * squeeze_velocity)
@@ -403,10 +410,11 @@ class PointProblem(ScaledResidual):
         self.free = np.nonzero(~grid.boundary_mask())[0]
         self.p_bc = np.zeros(n) if p_bc is None else np.asarray(p_bc, dtype=float).ravel()
         ops = grid.ops
-        xq, yq = ops.points
-        self.g_q = xq**2 / (2 * rx) + yq**2 / (2 * ry)
-        self.gx_q = xq / rx
-        self.gy_q = yq / ry
+        # separable geometry at the quadrature points (no stored coordinate arrays)
+        xq, yq = ops.coordinate_x(), ops.coordinate_y()
+        self.g_q = ops.separable(xq**2 / (2 * rx), yq**2 / (2 * ry))
+        self.gx_q = ops.separable(xq / rx, None)
+        self.gy_q = ops.separable(None, yq / ry)
         X, Y = grid.node_coordinates()
         self.g_nodes = X**2 / (2 * rx) + Y**2 / (2 * ry)
         # a mirrored half grid stands for the whole one: the load integral counts both
@@ -429,6 +437,9 @@ class PointProblem(ScaledResidual):
         self._pattern = None
         self._fields_cache = None
         self.linear_iterations = 0
+        #: optional one-element list that also receives the GMRES iteration counts (a
+        #: model's total over all its problems, without keeping the problems alive)
+        self.iteration_sink: list[int] | None = None
 
     # -- unknowns <-> fields -------------------------------------------------------------
     def unpack(self, z: np.ndarray) -> tuple[np.ndarray, float]:
@@ -652,6 +663,8 @@ class PointProblem(ScaledResidual):
         dz, its, rel = gmres_right(matvec, precond, -f, rtol=rtol,
                                    max_iterations=GMRES_MAX_ITERATIONS)
         self.linear_iterations += its
+        if self.iteration_sink is not None:
+            self.iteration_sink[0] += its
         log.debug("gmres: %d iterations, relative residual %.2e", its, rel)
         if not np.all(np.isfinite(dz)):
             raise RuntimeError("gmres produced non-finite values")
@@ -759,7 +772,7 @@ class PointModel:
         self.grid_note = ", each solved on its half y >= 0 by symmetry" if self.symmetric \
             else ""
         self._levels: dict[tuple[tuple[int, int], bool], PointLevel] = {}
-        self._problems: list[PointProblem] = []
+        self._linear_iterations = [0]  # GMRES iterations of all problems of the model
 
     def _symmetric(self) -> bool:
         """True if the elastic Newton solve may run on the half grid y >= 0
@@ -816,7 +829,7 @@ class PointModel:
                                scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
                                scene.lubricant.viscosity, level.p_bc, self.squeeze,
                                tolerance=tolerance)
-        self._problems.append(problem)
+        problem.iteration_sink = self._linear_iterations
         return problem
 
     def initial_guess(self, level: PointLevel, problem: PointProblem,
@@ -914,8 +927,16 @@ class PointModel:
         out.warnings += notes + more
         out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
         if self.elastic:
-            q["gmres_iterations"] = float(sum(pr.linear_iterations for pr in self._problems))
+            q["gmres_iterations"] = float(self.linear_iterations())
         return out
+
+    def linear_iterations(self) -> int:
+        """GMRES iterations of all problems of the model so far (a subclass that keeps its
+        problems in ``_problems`` instead of giving them the shared counter: their sum)."""
+        sink = getattr(self, "_linear_iterations", None)
+        if sink is not None:
+            return int(sink[0])
+        return int(sum(pr.linear_iterations for pr in getattr(self, "_problems", ())))
 
     def linear(self, level: PointLevel) -> tuple[str, Solution, str, int]:
         """Linear (reduced-pressure) solve on ``level``: status, solution, message and the
@@ -983,7 +1004,8 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
     if max_iterations is not None:
         scene = replace(scene, solver=replace(scene.solver, max_iterations=int(max_iterations)))
     t0 = time.perf_counter()
-    model = PointModel(scene, boundary_pressure, sq)
-    if is_linear(scene):
-        return solve_linear_model(model, scene, t0)
-    return solve_newton_model(model, scene, t0, progress=progress)
+    with blas_threads(BLAS_THREADS):
+        model = PointModel(scene, boundary_pressure, sq)
+        if is_linear(scene):
+            return solve_linear_model(model, scene, t0)
+        return solve_newton_model(model, scene, t0, progress=progress)

@@ -14,12 +14,14 @@ interface, :class:`NonlinearProblem`; this module knows nothing of the physics.
 """
 from __future__ import annotations
 
+import contextlib
 import logging
 import time
 from dataclasses import dataclass, field
-from typing import Callable, Protocol
+from typing import Callable, Iterator, Protocol
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 log = logging.getLogger(__name__)
 
@@ -38,6 +40,18 @@ class NonlinearProblem(Protocol):
 
     def admissible(self, z: np.ndarray) -> bool:
         """True if z is a physically admissible iterate (e.g. positive film)."""
+
+
+@contextlib.contextmanager
+def blas_threads(limit: int | None) -> Iterator[None]:
+    """Limit the BLAS threads of numpy/scipy to ``limit`` inside the block and restore
+    the previous setting on exit (None: no change). For solves whose dense work is small
+    vectors and small products, where thread start-up costs more than it saves."""
+    if limit is None:
+        yield
+        return
+    with threadpool_limits(limits=int(limit), user_api="blas"):
+        yield
 
 
 #: Statuses that end a whole solve (not just one attempt): the budget is spent.
