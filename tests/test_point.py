@@ -447,11 +447,12 @@ def test_nested_dissection_is_a_separator_order(nx, ny):
     assert np.array_equal(np.sort(perm), np.arange(nx * ny))
 
 
-def test_preconditioner_fast_path_equals_sparse_products():
+def test_preconditioner_fast_path_equals_sparse_products(monkeypatch):
     # the gathered, dissected LU solves the same matrix as the sparse-product fallback
     scene = _moes_scene(100, 10, 17)
     import bearing_fem.contacts.point as bp
 
+    monkeypatch.setattr(bp, "PRECONDITIONER_SINGLE", False)
     model = bp.PointModel(scene)
     level = model.level(model.fine_nodes, half=False)
     prob = model.problem(level)
@@ -465,6 +466,13 @@ def test_preconditioner_fast_path_equals_sparse_products():
     r = np.random.default_rng(0).standard_normal(prob.free.size)
     np.testing.assert_allclose(fast(r), slow(r), rtol=1e-9, atol=1e-12,
                                err_msg="two orderings of one sparse LU: rounding only")
+    monkeypatch.setattr(bp, "PRECONDITIONER_SINGLE", True)
+    single = prob._preconditioner_lu(a_p, a_h, scale, diag)
+    ref = slow(r)
+    assert single(r).dtype == np.float64
+    np.testing.assert_allclose(single(r), ref, rtol=0, atol=1e-4 * np.abs(ref).max(),
+                               err_msg="the single-precision factors solve the same matrix "
+                               "to float32 rounding times its modest condition number")
 
 
 def _flux_inputs(seed: int, n: int = 500):

@@ -91,25 +91,33 @@ class TensorMap:
                          _base=self)
 
     # -- structured products ---------------------------------------------------------
-    def _forward(self, u: np.ndarray) -> np.ndarray:
-        ny, nx = self.grid_shape
-        u2 = u.reshape(ny, nx)
-        loc = np.empty(((ny - 1) * (nx - 1), 4), dtype=np.result_type(u, float))
+    def rows(self, u2: np.ndarray, j0: int, j1: int) -> np.ndarray:
+        """The map applied to the nodal field ``u2`` (ny, nx), for the cells of rows
+        j0 <= j < j1 only: values at their quadrature points, flat in row order."""
+        nx = self.grid_shape[1]
+        loc = np.empty(((j1 - j0) * (nx - 1), 4), dtype=np.result_type(u2, float))
         for k, (b, a) in enumerate(_LOCAL):
-            loc[:, k] = u2[b:ny - 1 + b, a:nx - 1 + a].ravel()
+            loc[:, k] = u2[j0 + b:j1 + b, a:nx - 1 + a].ravel()
         if self.scale is not None:
-            loc *= self.scale.reshape(-1, 1)
+            loc *= self.scale[j0:j1].reshape(-1, 1)
         return (loc @ self.table.T).ravel()
 
-    def _backward(self, f: np.ndarray) -> np.ndarray:
-        ny, nx = self.grid_shape
-        nq = self.table.shape[0]
-        loc = f.reshape(-1, nq) @ self.table
+    def add_rows(self, f: np.ndarray, out2: np.ndarray, j0: int, j1: int) -> None:
+        """``out2 += M.T f`` for values ``f`` at the quadrature points of the cells of rows
+        j0 <= j < j1 (``out2`` nodal, (ny, nx), updated in place)."""
+        nx = self.grid_shape[1]
+        loc = np.reshape(f, (-1, self.table.shape[0])) @ self.table
         if self.scale is not None:
-            loc *= self.scale.reshape(-1, 1)
-        out = np.zeros((ny, nx), dtype=loc.dtype)
+            loc *= self.scale[j0:j1].reshape(-1, 1)
         for k, (b, a) in enumerate(_LOCAL):
-            out[b:ny - 1 + b, a:nx - 1 + a] += loc[:, k].reshape(ny - 1, nx - 1)
+            out2[j0 + b:j1 + b, a:nx - 1 + a] += loc[:, k].reshape(j1 - j0, nx - 1)
+
+    def _forward(self, u: np.ndarray) -> np.ndarray:
+        return self.rows(u.reshape(self.grid_shape), 0, self.grid_shape[0] - 1)
+
+    def _backward(self, f: np.ndarray) -> np.ndarray:
+        out = np.zeros(self.grid_shape, dtype=np.result_type(f, float))
+        self.add_rows(f, out, 0, self.grid_shape[0] - 1)
         return out.ravel()
 
     def __matmul__(self, other):
@@ -260,11 +268,42 @@ class TensorOperators:
             out += fy[:, None, :]
         return out.ravel()
 
+    # -- cell rows (bounded temporaries) -------------------------------------------------
+    def chunks(self, points: int) -> list[tuple[int, int]]:
+        """Ranges [j0, j1) of cell rows with about ``points`` quadrature points each,
+        covering the grid."""
+        ny1 = self.y.size - 1
+        step = max(1, int(points) // ((self.x.size - 1) * self.n_quad))
+        return [(j, min(j + step, ny1)) for j in range(0, ny1, step)]
+
+    def weights_rows(self, j0: int, j1: int) -> np.ndarray:
+        """:attr:`weights` of the cells of rows j0 <= j < j1."""
+        w = (self.hy[j0:j1, None, None] * self.hx[None, :, None]) * self._quad_weights
+        return w.ravel()
+
+    def element_size_rows(self, j0: int, j1: int) -> np.ndarray:
+        """:attr:`element_size` of the cells of rows j0 <= j < j1."""
+        return np.broadcast_to(self.hx[None, :, None],
+                               (j1 - j0, self.x.size - 1, self.n_quad)).ravel()
+
+    def separable_rows(self, fx: np.ndarray | None, fy: np.ndarray | None, j0: int,
+                       j1: int) -> np.ndarray:
+        """:meth:`separable` for the cells of rows j0 <= j < j1 only."""
+        out = np.zeros((j1 - j0, self.x.size - 1, self.n_quad))
+        if fx is not None:
+            out += fx[None, :, :]
+        if fy is not None:
+            out += fy[j0:j1, None, :]
+        return out.ravel()
+
     # -- QuadratureOperators interface ----------------------------------------------------
     @property
     def mass(self) -> np.ndarray:
         """Integrals of the basis functions int phi_i [m^2] (the load row)."""
-        return self.value.T @ self.weights
+        out = np.zeros(self.grid_shape)
+        for j0, j1 in self.chunks(2**16):
+            self.value.add_rows(self.weights_rows(j0, j1), out, j0, j1)
+        return out.ravel()
 
     def integrate(self, f_q: np.ndarray) -> float:
         """Integral of a field given at the quadrature points."""
@@ -351,29 +390,57 @@ class TensorAssembler:
         """csr matrix on the assembler's pattern with the given ``data`` (not copied)."""
         return sp.csr_matrix((data, self.indices, self.indptr), shape=(self.n_dofs,) * 2)
 
-    def _local(self, d: int, a, b) -> np.ndarray | None:
-        """Local matrices (n_cells, 16) of one term, or None if all its coefficients are 0."""
+    def _local(self, d: int, a, b, j0: int, j1: int) -> np.ndarray | None:
+        """Local matrices (n_cells, 16) of one term on the cells of rows j0 <= j < j1, or
+        None if all its coefficients are 0."""
         nq = self._ops.n_quad
+        c0, c1 = j0 * (self.grid_shape[1] - 1), j1 * (self.grid_shape[1] - 1)
         out = None
         for c, coeff in enumerate((a,) + tuple(b)):
             if coeff is None or not np.any(coeff):
                 continue
             part = np.reshape(coeff, (-1, nq)) @ self._tables[d][c]
-            part *= self._factors[d][c][:, None]
+            part *= self._factors[d][c][c0:c1, None]
             out = part if out is None else out + part
         return out
 
-    def _scatter(self, local: np.ndarray, stencil: np.ndarray,
+    def _scatter(self, local: np.ndarray, stencil: np.ndarray, j0: int, j1: int,
                  column_scale: np.ndarray | None = None) -> None:
         ny, nx = self.grid_shape
         s2 = None if column_scale is None else np.reshape(column_scale, (ny, nx))
         for al, be, slot in self._pairs:
             ba, aa = _LOCAL[al]
-            vals = local[:, 4 * al + be].reshape(ny - 1, nx - 1)
+            vals = local[:, 4 * al + be].reshape(j1 - j0, nx - 1)
             if s2 is not None:
                 bb, ab = _LOCAL[be]
-                vals = vals * s2[bb:ny - 1 + bb, ab:nx - 1 + ab]
-            stencil[slot, ba:ny - 1 + ba, aa:nx - 1 + aa] += vals
+                vals = vals * s2[j0 + bb:j1 + bb, ab:nx - 1 + ab]
+            stencil[slot, j0 + ba:j1 + ba, aa:nx - 1 + aa] += vals
+
+    def stencil(self) -> np.ndarray:
+        """Zero stencil array (9, ny, nx) for :meth:`add` and :meth:`csr`."""
+        return np.zeros((9,) + self.grid_shape)
+
+    def add(self, stencil: np.ndarray, terms, j0: int = 0, j1: int | None = None) -> None:
+        """Add the terms of :meth:`flux_jacobian_sum` with coefficients given on the cells
+        of rows j0 <= j < j1 (default all) to ``stencil`` (in place)."""
+        j1 = self.grid_shape[0] - 1 if j1 is None else j1
+        plain = None
+        for term in terms:
+            d, a, b = term[:3]
+            scale = term[3] if len(term) > 3 else None
+            local = self._local(d, a, b, j0, j1)
+            if local is None:
+                continue
+            if scale is not None:
+                self._scatter(local, stencil, j0, j1, scale)
+            else:
+                plain = local if plain is None else plain + local
+        if plain is not None:
+            self._scatter(plain, stencil, j0, j1)
+
+    def csr(self, stencil: np.ndarray) -> sp.csr_matrix:
+        """The csr matrix (on the pattern) of a stencil array."""
+        return self.matrix(stencil.reshape(-1)[self._gather])
 
     def flux_jacobian_sum(self, terms) -> sp.csr_matrix:
         """Sum over ``terms`` of ``flux_jacobian(d, a, (b_0, b_1))``, on the fixed pattern.
@@ -390,22 +457,9 @@ class TensorAssembler:
         -------
         scipy.sparse.csr_matrix, shape (n_dofs, n_dofs)
         """
-        ny, nx = self.grid_shape
-        stencil = np.zeros((9, ny, nx))
-        plain = None
-        for term in terms:
-            d, a, b = term[:3]
-            scale = term[3] if len(term) > 3 else None
-            local = self._local(d, a, b)
-            if local is None:
-                continue
-            if scale is not None:
-                self._scatter(local, stencil, scale)
-            else:
-                plain = local if plain is None else plain + local
-        if plain is not None:
-            self._scatter(plain, stencil)
-        return self.matrix(stencil.reshape(9, -1).ravel()[self._gather])
+        stencil = self.stencil()
+        self.add(stencil, terms)
+        return self.csr(stencil)
 
     def pattern_data(self, mat: sp.spmatrix) -> np.ndarray | None:
         """Values of ``mat`` at the pattern positions (zeros elsewhere), or None if ``mat``
@@ -482,6 +536,20 @@ class PointGrid:
     @property
     def assembler(self) -> TensorAssembler:
         return self.ops.assembler
+
+    def release(self) -> None:
+        """Drop the cached LU patterns (rebuilt on demand)."""
+        self.__dict__.pop("_free_patterns", None)
+
+    def free_pattern(self, free: np.ndarray) -> "FreePattern":
+        """The :class:`FreePattern` of the free nodes ``free`` (cached per grid: every
+        problem on the grid with the same free nodes shares it)."""
+        cache = self.__dict__.setdefault("_free_patterns", {})
+        key = (free.size, int(free[0]) if free.size else -1, int(free[-1]) if free.size else -1)
+        pat = cache.get(key)
+        if pat is None or not np.array_equal(pat.free, free):
+            pat = cache[key] = FreePattern(self, free)
+        return pat
 
     @cached_property
     def mesh(self) -> MeshQuad:
@@ -606,12 +674,20 @@ class FreePattern:
 
     def __init__(self, grid: PointGrid, free: np.ndarray) -> None:
         ny, nx = grid.shape
-        interior = np.zeros(grid.size, dtype=bool)
-        interior.reshape(ny, nx)[1:-1, 1:-1] = True
-        self.dissected = bool(np.array_equal(np.nonzero(interior)[0], free))
+        free = np.asarray(free)
+        self.free = free
+        # a rectangular block of nodes (the interior; on a mirrored half grid the interior
+        # plus the symmetry row) in its natural order: nested dissection of that block
+        jj, ii = np.divmod(free, nx)
+        self.dissected = False
+        if free.size:
+            j0, i0 = int(jj.min()), int(ii.min())
+            nj, ni = int(jj.max()) + 1 - j0, int(ii.max()) + 1 - i0
+            block = (np.arange(j0, j0 + nj)[:, None] * nx + np.arange(i0, i0 + ni)).ravel()
+            self.dissected = bool(np.array_equal(block, free))
         if self.dissected:
-            self.perm = nested_dissection(nx - 2, ny - 2)
-        else:  # not the interior block of the grid: SuperLU orders it (MMD on A^T + A)
+            self.perm = nested_dissection(ni, nj)
+        else:  # not a rectangular block: SuperLU orders it (MMD on A^T + A)
             self.perm = np.arange(free.size)
         self.inverse = np.empty_like(self.perm)
         self.inverse[self.perm] = np.arange(self.perm.size)
@@ -624,8 +700,9 @@ class FreePattern:
         keep = np.nonzero((r >= 0) & (c >= 0))[0]
         r, c = r[keep], c[keep]
         order = np.lexsort((r, c))  # csc: by column, then row
-        self._select = keep[order]
-        self._row = r[order]
+        idx = np.int32 if asm.nnz < 2**31 - 1 else np.int64
+        self._select = keep[order].astype(idx)
+        self._row = r[order].astype(idx)
         self.indices = r[order].astype(np.int32)
         self.indptr = np.searchsorted(c[order], np.arange(free.size + 1)).astype(np.int32)
         diag_entries = np.nonzero(self._row == c[order])[0]
@@ -634,13 +711,17 @@ class FreePattern:
         self._diag = diag_entries[np.argsort(self._row[diag_entries])]
         self.size = free.size
 
-    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray) -> spla.SuperLU:
+    def factor(self, m: np.ndarray, scale: np.ndarray, diag: np.ndarray, *,
+               single: bool = False) -> spla.SuperLU:
         """splu of diag(scale) M[free, free] + diag(diag) in the permuted order.
 
         ``scale`` and ``diag`` are free-node vectors in the original (free) order.
+        ``single``: factor in single precision (half the memory; solve float32 vectors).
         """
         data = m[self._select] * np.asarray(scale)[self.perm][self._row]
         data[self._diag] += np.asarray(diag)[self.perm]
+        if single:
+            data = data.astype(np.float32)
         a = sp.csc_matrix((data, self.indices, self.indptr), shape=(self.size, self.size))
         return spla.splu(a, permc_spec="NATURAL" if self.dissected else "MMD_AT_PLUS_A",
                          diag_pivot_thresh=LU_PIVOT_THRESHOLD, options={"SymmetricMode": True})

@@ -342,13 +342,18 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
 
 def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
                 precond: Callable[[np.ndarray], np.ndarray], b: np.ndarray, *,
-                rtol: float = 1e-9, max_iterations: int = 150
-                ) -> tuple[np.ndarray, int, float]:
-    """Right-preconditioned GMRES (no restart) from x0 = M^-1 b.
+                rtol: float = 1e-9, max_iterations: int = 150,
+                restart: int | None = None) -> tuple[np.ndarray, int, float]:
+    """Right-preconditioned GMRES from x0 = M^-1 b.
 
-    Arnoldi with classical Gram-Schmidt applied twice (numpy matrix products), the
-    small least-squares problem solved each iteration. Stops when the true-residual
-    estimate |b - A x| <= rtol |b| or after ``max_iterations``.
+    Arnoldi with classical Gram-Schmidt applied twice (numpy matrix products), the small
+    least-squares problem solved each iteration. Stops when the true-residual estimate
+    |b - A x| <= rtol |b| or after ``max_iterations`` in all. The preconditioner must be
+    a fixed linear map: the update M^-1 (V y) is formed once per cycle from the Krylov
+    basis V (one more preconditioner solve) instead of storing M^-1 V, which halves the
+    memory (one vector of b's length per iteration). ``restart``: the basis is restarted
+    from the current iterate after that many iterations (None: no restart), capping the
+    memory at restart + 1 vectors.
 
     Returns
     -------
@@ -357,33 +362,40 @@ def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
     bnorm = float(np.linalg.norm(b))
     if bnorm == 0.0:
         return np.zeros_like(b), 0, 0.0
-    x0 = precond(b)
-    r0 = b - matvec(x0)
-    beta = float(np.linalg.norm(r0))
-    if beta <= rtol * bnorm:
-        return x0, 0, beta / bnorm
-    m = max_iterations
-    V = np.zeros((m + 1, b.size))
-    Z = np.zeros((m, b.size))
-    H = np.zeros((m + 1, m))
-    V[0] = r0 / beta
-    e1 = np.zeros(m + 1)
-    e1[0] = beta
-    y = np.zeros(0)
+    x = precond(b)
+    total = 0
     rel = 1.0
-    k = 0
-    for k in range(m):
-        Z[k] = precond(V[k])
-        w = matvec(Z[k])
-        for _ in range(2):  # CGS2
-            h = V[:k + 1] @ w
-            w = w - V[:k + 1].T @ h
-            H[:k + 1, k] += h
-        H[k + 1, k] = np.linalg.norm(w)
-        if H[k + 1, k] > 0.0:
-            V[k + 1] = w / H[k + 1, k]
-        y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
-        rel = float(np.linalg.norm(e1[:k + 2] - H[:k + 2, :k + 1] @ y)) / bnorm
-        if rel <= rtol or H[k + 1, k] == 0.0:
-            break
-    return x0 + Z[:k + 1].T @ y, k + 1, rel
+    while True:
+        r0 = b - matvec(x)
+        beta = float(np.linalg.norm(r0))
+        rel = beta / bnorm
+        if rel <= rtol or total >= max_iterations:
+            return x, total, rel
+        m = max_iterations - total
+        if restart is not None:
+            m = min(m, max(int(restart), 1))
+        V = np.zeros((m + 1, b.size))
+        H = np.zeros((m + 1, m))
+        V[0] = r0 / beta
+        e1 = np.zeros(m + 1)
+        e1[0] = beta
+        y = np.zeros(0)
+        k = 0
+        for k in range(m):
+            w = matvec(precond(V[k]))
+            for _ in range(2):  # CGS2
+                h = V[:k + 1] @ w
+                w = w - V[:k + 1].T @ h
+                H[:k + 1, k] += h
+            H[k + 1, k] = np.linalg.norm(w)
+            if H[k + 1, k] > 0.0:
+                V[k + 1] = w / H[k + 1, k]
+            y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
+            rel = float(np.linalg.norm(e1[:k + 2] - H[:k + 2, :k + 1] @ y)) / bnorm
+            if rel <= rtol or H[k + 1, k] == 0.0:
+                break
+        x = x + precond(V[:k + 1].T @ y)
+        total += k + 1
+        del V
+        if rel <= rtol or H[k + 1, k] == 0.0 or total >= max_iterations:
+            return x, total, rel
