@@ -59,7 +59,7 @@ from .. import units
 from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import point_central_film_nvm
-from ..numerics.newton import blas_threads, gmres_right
+from ..numerics.newton import ForcingTerm, blas_threads, gmres_right
 from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat
@@ -163,8 +163,6 @@ PRECONDITIONER_DROP_TOL = 1e-3
 GMRES_FORCING_MAX = 1e-1
 PRECONDITIONER_KEEP_ITERATIONS = 6
 GMRES_FORCING = "eisenstat-walker"
-EW_GAMMA = 0.9
-EW_ALPHA = 2.0
 #: The linear solve need not be more accurate than the Newton test can see: eta_k is also
 #: allowed up to GMRES_TOLERANCE_FRACTION tol / |F_k|_2, so the linear residual left in the
 #: step (<= eta_k |F_k|_2, which bounds its max norm) stays below this fraction of the
@@ -460,7 +458,7 @@ class PointProblem(ScaledResidual):
         self._row_scale = None
         self._pattern = None
         self._displacement_cache = None
-        self._forcing_state = None
+        self._forcing_term = None
         self._kept = None
         self.factorizations = 0
         self.linear_iterations = 0
@@ -792,18 +790,9 @@ class PointProblem(ScaledResidual):
             return GMRES_RTOL
         norm2 = float(np.linalg.norm(f))
         if GMRES_FORCING == "eisenstat-walker":
-            prev = self._forcing_state
-            if prev is None:
-                eta = GMRES_FORCING_MAX
-            elif norm2 >= prev[0]:  # a repeated or non-decreasing step: keep the last eta
-                eta = prev[1]
-            else:
-                eta = EW_GAMMA * (norm2 / prev[0]) ** EW_ALPHA
-                guard = EW_GAMMA * prev[1] ** EW_ALPHA
-                if guard > 0.1:
-                    eta = max(eta, guard)
-            eta = min(eta, GMRES_FORCING_MAX)
-            self._forcing_state = (norm2, eta)
+            if self._forcing_term is None:
+                self._forcing_term = ForcingTerm(GMRES_FORCING_MAX)
+            eta = self._forcing_term(norm2)
         else:
             eta = float(np.max(np.abs(f)))
         floor = max(GMRES_RTOL, eta)
@@ -907,7 +896,7 @@ POINT_DRIVER = DriverSettings(transfer_iterations=TRANSFER_DIRECT_ITERATIONS,
                               start_shift=START_SHIFT, transfer_shift=TRANSFER_SHIFT,
                               coarse_tolerance=COARSE_TOLERANCE,
                               intermediate_tolerance=COARSE_TOLERANCE,
-                              warm_start=WARM_START_ALPHA)
+                              warm_start=WARM_START_ALPHA, blas_threads=BLAS_THREADS)
 #: Rigid Newton scenes (loaded, or non-Barus laws): plain Newton as validated.
 RIGID_POINT_DRIVER = replace(POINT_DRIVER, start_shift=0.0, transfer_shift=0.0)
 

@@ -340,6 +340,46 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
             "last admissible iterate.")
 
 
+class ForcingTerm:
+    """Relative tolerance of the linear solves of an inexact Newton iteration:
+    Eisenstat & Walker (1996), choice 2.
+
+    eta_k = gamma (|F_k| / |F_k-1|)^alpha, safeguarded by gamma eta_k-1^alpha when that
+    exceeds 0.1, capped at ``eta_max``; the first step gets ``eta_max``. Where Newton
+    converges slowly (far from the solution, |F| falling by small factors) the linear
+    solves stay loose; in the quadratic phase they tighten with |F|^2. A step whose
+    residual did not fall (a repeated attempt at the same iterate) keeps the last eta.
+    One instance per sequence of Newton steps (per problem).
+
+    Parameters
+    ----------
+    eta_max : float
+        Upper bound of eta (and its first value) [-].
+    gamma, alpha : float
+        Eisenstat-Walker parameters [-] (0.9 and 2 as recommended there).
+    """
+
+    def __init__(self, eta_max: float = 0.1, gamma: float = 0.9, alpha: float = 2.0) -> None:
+        self.eta_max, self.gamma, self.alpha = float(eta_max), float(gamma), float(alpha)
+        self._last: tuple[float, float] | None = None
+
+    def __call__(self, norm: float) -> float:
+        """eta for a Newton step at residual norm ``norm`` (2-norm, any scale)."""
+        last = self._last
+        if last is None:
+            eta = self.eta_max
+        elif norm >= last[0]:
+            eta = last[1]
+        else:
+            eta = self.gamma * (norm / last[0]) ** self.alpha
+            guard = self.gamma * last[1] ** self.alpha
+            if guard > 0.1:
+                eta = max(eta, guard)
+        eta = min(eta, self.eta_max)
+        self._last = (float(norm), eta)
+        return eta
+
+
 def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
                 precond: Callable[[np.ndarray], np.ndarray], b: np.ndarray, *,
                 rtol: float = 1e-9, max_iterations: int = 150,

