@@ -335,7 +335,7 @@ def test_hamrock_dowson_study_domain_scale(tmp_path, load_study):
 
 
 def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
-    out = load_study("point_benchmark").main(tmp_path, quick=True)
+    out = load_study("point_benchmark").main(tmp_path, quick=True, whole=True)
     rows = out["rows"]
     assert [r["nodes"] for r in rows] == [65, 129, 257]
     assert all(r["status"] == "converged" for r in rows)
@@ -352,6 +352,10 @@ def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
                                    err_msg="half and whole grid solve the same equations "
                                            "(Newton tolerance 1e-8 scaled)")
     assert "h_c err" in (tmp_path / "point_benchmark.txt").read_text()
+    for r in rows + whole:  # every solve in its own process reports its own peak
+        assert r["peak_rss_mb"] > r["import_rss_mb"] > 0.0
+        assert r["newton_iterations_finest"] >= 1 and r["time_per_iteration_s"] > 0.0
+    assert rows[-1]["peak_rss_mb"] > rows[0]["peak_rss_mb"], "257^2 needs more than 65^2"
 
 
 def test_point_map_hamrock_groups(load_study):
