@@ -125,6 +125,12 @@ TRANSFER_SHIFT = 1e-2
 #: direct iterations. With the reduced-pressure Poiseuille term the direct attempts of
 #: the circular map need 6-12 iterations per finer level.
 TRANSFER_DIRECT_ITERATIONS = 20
+#: Line search on finer levels (from an interpolated solution): monotone (window 1), as
+#: for line contacts. Measured on 257^2 (Newton iterations of the whole sequence, window 5
+#: -> 1): (M, L) = (100, 10) 27 -> 26, (50, 20) 43 -> 39, (100, 20) 46 -> 39, (500, 10)
+#: 24 -> 23, (20, 20), (1000, 10), (200, 5) unchanged; on 513^2: (100, 10) 36 -> 33,
+#: (50, 20) 58 -> 52, (20, 20) 50 -> 51.
+TRANSFER_MEMORY = 1
 WARM_START_ALPHA = 0.8
 #: Newton tolerance of the coarser levels of the grid sequence (the finest level uses
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
@@ -896,7 +902,8 @@ POINT_DRIVER = DriverSettings(transfer_iterations=TRANSFER_DIRECT_ITERATIONS,
                               start_shift=START_SHIFT, transfer_shift=TRANSFER_SHIFT,
                               coarse_tolerance=COARSE_TOLERANCE,
                               intermediate_tolerance=COARSE_TOLERANCE,
-                              warm_start=WARM_START_ALPHA, blas_threads=BLAS_THREADS)
+                              warm_start=WARM_START_ALPHA, transfer_memory=TRANSFER_MEMORY,
+                              blas_threads=BLAS_THREADS)
 #: Rigid Newton scenes (loaded, or non-Barus laws): plain Newton as validated.
 RIGID_POINT_DRIVER = replace(POINT_DRIVER, start_shift=0.0, transfer_shift=0.0)
 
