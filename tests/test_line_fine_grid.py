@@ -80,8 +80,11 @@ def test_fine_grid_converges_with_sequencing_and_reuse(monkeypatch):
                                err_msg="load row solved")
 
 
-def test_reused_step_equals_direct_step():
-    """The GMRES step preconditioned by stale factors equals the direct LU step."""
+def test_reused_step_equals_direct_step(monkeypatch):
+    """The GMRES step preconditioned by stale factors equals the direct LU step (with the
+    exact linear solves: double-precision factors, GMRES to 1e-10)."""
+    monkeypatch.setattr(line, "DENSE_LU_SINGLE", False)
+    monkeypatch.setattr(line, "REUSE_GMRES_FORCING", False)
     scene = scene_for(100, 10, 401)
     model = line.LineModel(scene)
     setup = model.setup
@@ -189,3 +192,23 @@ def test_m5_l15_converges_on_8001_nodes():
     coarse = bf.solve(scene_for(5, 15, 4001))
     np.testing.assert_allclose(fine.quantities["h_central"], coarse.quantities["h_central"],
                                rtol=1e-5, err_msg="h_central 4001 -> 8001 (measured 1.4e-6)")
+
+
+def test_inexact_newton_step_meets_its_forcing_tolerance():
+    """With the defaults (single-precision factors, Eisenstat-Walker tolerance) a Newton
+    step solves J dz = -F to the relative residual the forcing term allows."""
+    scene = scene_for(100, 10, 401)
+    model = line.LineModel(scene)
+    setup = model.setup
+    prob = model.problem(setup)
+    z0 = model.initial_guess(setup, prob)
+    prob.prepare(z0)
+    f = prob.residual(z0)
+    dz = prob.newton_step(z0)
+    assert prob.factorisations == 1 and prob._lu[0].dtype == np.float32, \
+        "single-precision factors, then GMRES on the exact Jacobian"
+    j = prob.jacobian(z0)
+    rel = np.linalg.norm(j @ dz + f) / np.linalg.norm(f)
+    assert rel <= line.REUSE_GMRES_FORCING_MAX * (1 + 1e-6), (
+        f"linear residual {rel:.3g} within the first step's forcing tolerance "
+        f"{line.REUSE_GMRES_FORCING_MAX}")

@@ -223,8 +223,9 @@ def test_fine_level_never_restarts_alpha_continuation_from_scratch():
 @pytest.mark.parametrize("ry_over_rx", [1.0, 3.0])
 def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
     # The y-symmetric scene is solved on its half y >= 0 and mirrored; the same scene on
-    # the whole grid must give the same Newton history and fields, and the reported
-    # residual is the whole grid's.
+    # the whole grid must give the same fields, and the reported residual is the whole
+    # grid's. (The Newton paths differ slightly: the incomplete single-precision
+    # preconditioner is ordered differently on the two grids and GMRES stops early.)
     import bearing_fem.contacts.point as pt
 
     scene = _moes_scene(100, 10, 65, ry_over_rx)
@@ -233,8 +234,8 @@ def test_half_grid_solve_equals_whole_grid_solve(monkeypatch, ry_over_rx):
     whole = solve_point(scene)
     assert half.status == whole.status == "converged", half.message
     assert "by symmetry" in half.message and "by symmetry" not in whole.message
-    assert half.newton_iterations == whole.newton_iterations, (half.continuation,
-                                                               whole.continuation)
+    assert abs(half.newton_iterations - whole.newton_iterations) <= 3, (half.continuation,
+                                                                        whole.continuation)
     assert half.pressure.shape == whole.pressure.shape == (65, 65)
     np.testing.assert_allclose(half.pressure, whole.pressure, rtol=0,
                                atol=1e-7 * whole.quantities["p_max"],
@@ -334,7 +335,7 @@ def test_hamrock_dowson_study_domain_scale(tmp_path, load_study):
 
 
 def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
-    out = load_study("point_benchmark").main(tmp_path, quick=True)
+    out = load_study("point_benchmark").main(tmp_path, quick=True, whole=True)
     rows = out["rows"]
     assert [r["nodes"] for r in rows] == [65, 129, 257]
     assert all(r["status"] == "converged" for r in rows)
@@ -351,6 +352,10 @@ def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
                                    err_msg="half and whole grid solve the same equations "
                                            "(Newton tolerance 1e-8 scaled)")
     assert "h_c err" in (tmp_path / "point_benchmark.txt").read_text()
+    for r in rows + whole:  # every solve in its own process reports its own peak
+        assert r["peak_rss_mb"] > r["import_rss_mb"] > 0.0
+        assert r["newton_iterations_finest"] >= 1 and r["time_per_iteration_s"] > 0.0
+    assert rows[-1]["peak_rss_mb"] > rows[0]["peak_rss_mb"], "257^2 needs more than 65^2"
 
 
 def test_point_map_hamrock_groups(load_study):
@@ -447,11 +452,13 @@ def test_nested_dissection_is_a_separator_order(nx, ny):
     assert np.array_equal(np.sort(perm), np.arange(nx * ny))
 
 
-def test_preconditioner_fast_path_equals_sparse_products():
+def test_preconditioner_fast_path_equals_sparse_products(monkeypatch):
     # the gathered, dissected LU solves the same matrix as the sparse-product fallback
     scene = _moes_scene(100, 10, 17)
     import bearing_fem.contacts.point as bp
 
+    monkeypatch.setattr(bp, "PRECONDITIONER_SINGLE", False)
+    monkeypatch.setattr(bp, "PRECONDITIONER_DROP_TOL", 0.0)
     model = bp.PointModel(scene)
     level = model.level(model.fine_nodes, half=False)
     prob = model.problem(level)
@@ -465,6 +472,19 @@ def test_preconditioner_fast_path_equals_sparse_products():
     r = np.random.default_rng(0).standard_normal(prob.free.size)
     np.testing.assert_allclose(fast(r), slow(r), rtol=1e-9, atol=1e-12,
                                err_msg="two orderings of one sparse LU: rounding only")
+    monkeypatch.setattr(bp, "PRECONDITIONER_SINGLE", True)
+    single = prob._preconditioner_lu(a_p, a_h, scale, diag)
+    ref = slow(r)
+    assert single(r).dtype == np.float64
+    np.testing.assert_allclose(single(r), ref, rtol=0, atol=1e-4 * np.abs(ref).max(),
+                               err_msg="the single-precision factors solve the same matrix "
+                               "to float32 rounding times its modest condition number")
+    monkeypatch.setattr(bp, "PRECONDITIONER_DROP_TOL", 1e-3)
+    incomplete = prob._preconditioner_lu(a_p, a_h, scale, diag)
+    err = np.linalg.norm(incomplete(r) - ref) / np.linalg.norm(ref)
+    print("incomplete factors: relative error", err)
+    assert err < 0.05, ("incomplete factors (drop 1e-3) approximate the solve to a few "
+                        f"percent (a preconditioner), got {err:.3g}")
 
 
 def _flux_inputs(seed: int, n: int = 500):

@@ -36,8 +36,8 @@ from typing import Any, Callable, Protocol, Sequence
 import numpy as np
 
 from .. import post
-from ..numerics.newton import (BUDGET_STATUSES, Budget, NonlinearProblem, continuation,
-                               damped_newton, outcome_message)
+from ..numerics.newton import (BUDGET_STATUSES, Budget, NonlinearProblem, blas_threads,
+                               continuation, damped_newton, outcome_message)
 from ..result import SUCCESS_STATUSES, Result
 
 log = logging.getLogger(__name__)
@@ -74,6 +74,10 @@ class DriverSettings:
         warm start).
     first_step : float
         First continuation increment from s = 0.
+    blas_threads : int or None
+        BLAS threads of numpy/scipy during the solve (restored afterwards): 1 for solvers
+        whose dense work is small vectors and products, where threads cost more than they
+        save (more so on a busy machine); None: the process setting.
     """
 
     direct_iterations: int | None = None
@@ -87,6 +91,7 @@ class DriverSettings:
     intermediate_tolerance: float | None = None
     warm_start: float | None = None
     first_step: float = 0.25
+    blas_threads: int | None = None
 
 
 class Level(Protocol):
@@ -479,7 +484,13 @@ def estimate_levels(model: Any, outcome: DriverOutcome, solver: Any,
 def solve_newton_model(model: Any, scene: Any, t0: float, *,
                        progress: Progress | None = None, prefix: str = "") -> Result:
     """Newton solve of a model by :func:`solve_levels`, finished into a Result with an
-    error estimate from the coarser levels."""
+    error estimate from the coarser levels (BLAS threads as ``model.settings``)."""
+    with blas_threads(getattr(model.settings, "blas_threads", None)):
+        return _solve_newton_model(model, scene, t0, progress=progress, prefix=prefix)
+
+
+def _solve_newton_model(model: Any, scene: Any, t0: float, *,
+                        progress: Progress | None = None, prefix: str = "") -> Result:
     budget = make_budget(scene.solver)
     outcome = solve_levels(model, scene.solver, budget=budget, progress=progress)
     problem, z = model.whole(outcome.problem, outcome.z)

@@ -47,6 +47,7 @@ from __future__ import annotations
 import logging
 import math
 import time
+import weakref
 from dataclasses import dataclass, replace
 from typing import Callable
 
@@ -59,7 +60,7 @@ from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import point_central_film_nvm
 from ..mesh import every_other
-from ..numerics.newton import gmres_right
+from ..numerics.newton import ForcingTerm, blas_threads, gmres_right
 from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat
@@ -125,6 +126,12 @@ TRANSFER_SHIFT = 1e-2
 #: direct iterations. With the reduced-pressure Poiseuille term the direct attempts of
 #: the circular map need 6-12 iterations per finer level.
 TRANSFER_DIRECT_ITERATIONS = 20
+#: Line search on finer levels (from an interpolated solution): monotone (window 1), as
+#: for line contacts. Measured on 257^2 (Newton iterations of the whole sequence, window 5
+#: -> 1): (M, L) = (100, 10) 27 -> 26, (50, 20) 43 -> 39, (100, 20) 46 -> 39, (500, 10)
+#: 24 -> 23, (20, 20), (1000, 10), (200, 5) unchanged; on 513^2: (100, 10) 36 -> 33,
+#: (50, 20) 58 -> 52, (20, 20) 50 -> 51.
+TRANSFER_MEMORY = 1
 WARM_START_ALPHA = 0.8
 #: Newton tolerance of the coarser levels of the grid sequence (the finest level uses
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
@@ -134,19 +141,48 @@ COARSE_TOLERANCE = 1e-5
 #: GMRES relative tolerance (floor) and iteration cap of the elastic Newton steps.
 GMRES_RTOL = 1e-9
 GMRES_MAX_ITERATIONS = 150
+#: Residual and Jacobian are evaluated on blocks of cell rows of about this many
+#: quadrature points (the same sums as on whole arrays): the temporaries of the flux and
+#: its derivatives (some 40 arrays) stay small, e.g. ~25 MB instead of ~500 MB on the
+#: 513 x 257 half grid, and fit the processor caches.
+CHUNK_POINTS = 2**16
+#: The near-field LU of elastic problems (a GMRES preconditioner) in single precision:
+#: measured on the 513 x 257 half grid (M = 100, L = 10, a mid-level Newton iterate,
+#: GMRES to 1e-6): 34 GMRES iterations with the float64 and with the float32 factors,
+#: factorisation 0.38 -> 0.28 s, solve 22 -> 16 ms, factors 134 -> 82 MB. The
+#: preconditioner's error is dominated by the truncated compliance (near field C_00
+#: only), not by the factorisation: an incomplete LU with half the fill (drop 1e-3)
+#: also needed 34 iterations. GMRES stores the Krylov basis and forms M^-1 (V y) in
+#: float64; the Newton residual is always evaluated in float64.
+PRECONDITIONER_SINGLE = True
+#: ... and incomplete: entries below this fraction of their column's norm are dropped
+#: (SuperLU ILU; 0: complete LU). Measured on the same iterate: 35 GMRES iterations with
+#: the complete and the incomplete float32 factors (drop 1e-3: 5.8e6 instead of 1.02e7
+#: nonzeros, solve 11.5 instead of 18 ms, peak memory of the step 366 instead of 454 MB);
+#: drop 1e-2 needed 52.
+PRECONDITIONER_DROP_TOL = 1e-3
 #: Inexact Newton (Dembo, Eisenstat & Steihaug 1982): GMRES stops at the relative
 #: residual eta_k = min(GMRES_FORCING_MAX, max(GMRES_RTOL, |F_k|_inf)). eta_k = O(|F_k|)
 #: keeps the local quadratic convergence, and the Newton stopping test (|F| <= tol) is
 #: untouched. GMRES gains about one decade per 5 iterations here, so the early steps
 #: save ~25 of ~40 iterations. Measured M = 100, L = 10, 257^2: Newton iterations 25 ->
 #: 25, GMRES 701 -> 302, h_c/h_min equal to 11 digits, p_max to 10. 0 disables.
-GMRES_FORCING_MAX = 1e-3
+GMRES_FORCING_MAX = 1e-1
+PRECONDITIONER_KEEP_ITERATIONS = 6
+GMRES_FORCING = "eisenstat-walker"
 #: The linear solve need not be more accurate than the Newton test can see: eta_k is also
 #: allowed up to GMRES_TOLERANCE_FRACTION tol / |F_k|_2, so the linear residual left in the
 #: step (<= eta_k |F_k|_2, which bounds its max norm) stays below this fraction of the
 #: Newton tolerance. Only the last one or two steps are affected (where |F_k| is within a
 #: few decades of tol); there GMRES stops after ~10 instead of 30-40 iterations.
 GMRES_TOLERANCE_FRACTION = 0.1
+
+#: BLAS threads inside a point solve (restored afterwards). Its dense work is small
+#: (vectors of one grid, (cells x 9) by (9 x 16) products), where the threads' start-up
+#: and synchronisation cost more than they save, and far more on a busy machine: measured
+#: on 2 cores with two other jobs, (131072 x 4) @ (4 x 9) took 57 ms with the default
+#: threads and 0.85 ms with one. None: leave the process setting alone.
+BLAS_THREADS = 1
 
 # ---------------------------------------------------------------------------------------
 # setup
@@ -365,11 +401,11 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
     q : ndarray (flat, Pa); linear_solves : int; active : bool ndarray (cavitated nodes)
     """
     ops = grid.ops
-    xq, yq = ops.points
-    h = h0 + xq**2 / (2 * rx) + yq**2 / (2 * ry)
+    xq, yq = ops.coordinate_x(), ops.coordinate_y()
+    h = h0 + ops.separable(xq**2 / (2 * rx), yq**2 / (2 * ry))
     eps = h**3 / (12.0 * viscosity)
     zero = np.zeros_like(h)
-    a = (ops.flux_jacobian(0, zero, (eps, zero)) + ops.flux_jacobian(1, zero, (zero, eps))).tocsr()
+    a = ops.assembler.flux_jacobian_sum([(0, zero, (eps, zero)), (1, zero, (zero, eps))])
     f = ops.weak_divergence(mean_speed * h, zero)
     if squeeze_velocity:
         f = f - ops.value.T @ (ops.weights * squeeze_velocity)
@@ -437,10 +473,10 @@ class PointProblem(ScaledResidual):
         self.free = np.nonzero(~grid.boundary_mask())[0]
         self.p_bc = np.zeros(n) if p_bc is None else np.asarray(p_bc, dtype=float).ravel()
         ops = grid.ops
-        xq, yq = ops.points
-        self.g_q = xq**2 / (2 * rx) + yq**2 / (2 * ry)
-        self.gx_q = xq / rx
-        self.gy_q = yq / ry
+        # the gap geometry at the quadrature points is separable, g = gx(x) + gy(y): kept
+        # per cell column / row ((nx - 1, n_quad), (ny - 1, n_quad)), never as full arrays
+        xq, yq = ops.coordinate_x(), ops.coordinate_y()
+        self._geometry = ((xq**2 / (2 * rx), yq**2 / (2 * ry)), xq / rx, yq / ry)
         X, Y = grid.node_coordinates()
         self.g_nodes = X**2 / (2 * rx) + Y**2 / (2 * ry)
         # a mirrored half grid stands for the whole one: the load integral counts both
@@ -461,8 +497,14 @@ class PointProblem(ScaledResidual):
         self.near_field_cells = near_field_cells
         self._row_scale = None
         self._pattern = None
-        self._fields_cache = None
+        self._displacement_cache = None
+        self._forcing_term = None
+        self._kept = None
+        self.factorizations = 0
         self.linear_iterations = 0
+        #: optional one-element list that also receives the GMRES iteration counts (a
+        #: model's total over all its problems, without keeping the problems alive)
+        self.iteration_sink: list[int] | None = None
 
     # -- unknowns <-> fields -------------------------------------------------------------
     def unpack(self, z: np.ndarray) -> tuple[np.ndarray, float]:
@@ -476,34 +518,99 @@ class PointProblem(ScaledResidual):
         return np.append(z, h0 / self.h_ref) if self.has_h0 else z
 
     def displacement(self, p: np.ndarray) -> np.ndarray:
+        """Nodal elastic displacement v = C p [m] (0 when rigid). The last product is
+        kept: a Newton iteration needs the same iterate's v for the admissibility test, the
+        residual, the row scaling and the Jacobian. The returned array is shared with the
+        cache and must not be modified."""
         if self.compliance is None:
             return np.zeros_like(p)
-        return self.compliance.apply(p)
+        cached = self._displacement_cache
+        if cached is not None and np.array_equal(cached[0], p):
+            return cached[1]
+        v = self.compliance.apply(p)
+        self._displacement_cache = (np.array(p, dtype=float, copy=True), v)
+        return v
+
+    # gap geometry at the quadrature points (whole arrays, built on each access)
+    @property
+    def g_q(self) -> np.ndarray:
+        """x^2/(2 rx) + y^2/(2 ry) at the quadrature points [m]."""
+        return self.ops.separable(*self._geometry[0])
+
+    @property
+    def gx_q(self) -> np.ndarray:
+        """x/rx at the quadrature points [-]."""
+        return self.ops.separable(self._geometry[1], None)
+
+    @property
+    def gy_q(self) -> np.ndarray:
+        """y/ry at the quadrature points [-]."""
+        return self.ops.separable(None, self._geometry[2])
+
+    def _rows_fields(self, p2: np.ndarray, v2: np.ndarray, h0: float, j0: int, j1: int):
+        """p, h, (px, py), (hx, hy) at the quadrature points of the cell rows
+        j0 <= j < j1 (nodal p2, v2 of shape (ny, nx))."""
+        ops = self.ops
+        (gx2, gy2), gx1, gy1 = self._geometry
+        value, (dx, dy) = ops.value, ops.grad
+        h = ops.separable_rows(gx2, gy2, j0, j1)
+        h += h0
+        h += value.rows(v2, j0, j1)
+        gh = (ops.separable_rows(gx1, None, j0, j1) + dx.rows(v2, j0, j1),
+              ops.separable_rows(None, gy1, j0, j1) + dy.rows(v2, j0, j1))
+        gp = (dx.rows(p2, j0, j1), dy.rows(p2, j0, j1))
+        return value.rows(p2, j0, j1), h, gp, gh
+
+    def post_fields(self, p: np.ndarray, h0: float):
+        """Fields at the quadrature points that post-processing integrates: p, h,
+        (px, py), eta, the reduced-pressure gradient (None without the reduced Poiseuille
+        term) and the stabilisation flux (whole arrays, filled cell row block by block so
+        that only they are held, not the temporaries of the flux)."""
+        ops = self.ops
+        shape = self.grid.shape
+        p = np.asarray(p, dtype=float)
+        p2 = p.reshape(shape)
+        v2 = self.displacement(p).reshape(shape)
+        q2 = self.flux.reduced(p).reshape(shape) if self.uses_reduced else None
+        dx, dy = ops.grad
+        size = ops.n_quad * (shape[1] - 1) * (shape[0] - 1)
+        out = {k: np.empty(size) for k in ("p", "h", "px", "py", "eta", "sx", "sy")}
+        if q2 is not None:
+            out["qx"], out["qy"] = np.empty(size), np.empty(size)
+        per_row = ops.n_quad * (shape[1] - 1)
+        for j0, j1 in self._chunks():
+            sl = slice(j0 * per_row, j1 * per_row)
+            pq, h, gp, gh = self._rows_fields(p2, v2, h0, j0, j1)
+            gq = None if q2 is None else (dx.rows(q2, j0, j1), dy.rows(q2, j0, j1))
+            stab = self.flux.stabilisation_flux(pq, h, gp, gh, ops.element_size_rows(j0, j1),
+                                                gq)
+            out["p"][sl], out["h"][sl] = pq, h
+            out["px"][sl], out["py"][sl] = gp
+            out["eta"][sl] = self.flux.viscosity(pq)
+            out["sx"][sl], out["sy"][sl] = stab
+            if gq is not None:
+                out["qx"][sl], out["qy"][sl] = gq
+        gq_all = (out["qx"], out["qy"]) if q2 is not None else None
+        return (out["p"], out["h"], (out["px"], out["py"]), out["eta"], gq_all,
+                (out["sx"], out["sy"]))
+
+    def _chunks(self) -> list[tuple[int, int]]:
+        return self.ops.chunks(CHUNK_POINTS)
 
     def film_nodes(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal film [m] (flat)."""
         return h0 + self.g_nodes + self.displacement(p)
 
     def fields_q(self, p: np.ndarray, h0: float, v: np.ndarray | None = None):
-        """p, h, (px, py), (hx, hy) at the quadrature points.
-
-        Without ``v`` the fields of the last (p, h0) are kept: a Newton iteration asks for
-        the same iterate's fields in the admissibility test, the residual and the
-        Jacobian (each costs an FFT product and five sparse interpolations). The
-        returned arrays are shared with the cache and must not be modified.
-        """
-        cached = self._fields_cache if v is None else None
-        if cached is not None and cached[1] == h0 and np.array_equal(cached[0], p):
-            return cached[2]
-        ops = self.grid.ops
+        """p, h, (px, py), (hx, hy) at the quadrature points (whole arrays; ``v`` the nodal
+        displacement, default C p). The Newton iteration itself works on cell row blocks
+        (:meth:`reynolds_residual`); this is for post-processing and subclasses."""
+        ops = self.ops
         displacement = self.displacement(p) if v is None else v
         h = h0 + self.g_q + ops.value @ displacement
         gh = (self.gx_q + ops.grad[0] @ displacement, self.gy_q + ops.grad[1] @ displacement)
         gp = (ops.grad[0] @ p, ops.grad[1] @ p)
-        out = (ops.value @ p, h, gp, gh)
-        if v is None:
-            self._fields_cache = (np.array(p, dtype=float, copy=True), float(h0), out)
-        return out
+        return ops.value @ p, h, gp, gh
 
     # -- NonlinearProblem ------------------------------------------------------------------
     def prepare(self, z: np.ndarray) -> None:
@@ -513,48 +620,96 @@ class PointProblem(ScaledResidual):
         self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free] \
             * self._row_weight
 
+    def admissible(self, z: np.ndarray) -> bool:
+        """Finite unknowns and a positive film at every quadrature point."""
+        if not np.all(np.isfinite(z)):
+            return False
+        p, h0 = self.unpack(z)
+        shape = self.grid.shape
+        v2 = self.displacement(p).reshape(shape)
+        ops = self.ops
+        (gx2, gy2), _, _ = self._geometry
+        for j0, j1 in self._chunks():
+            h = ops.separable_rows(gx2, gy2, j0, j1) + ops.value.rows(v2, j0, j1)
+            if not np.min(h) + h0 > 0.0:
+                return False
+        return True
+
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
-        """Nodal weak residual R_i [m^3/s] (all nodes)."""
-        pq, h, gp, gh = self.fields_q(p, h0)
-        ops = self.grid.ops
-        if self.uses_reduced:
-            fl = self.flux.flux(pq, h, gp, gh, ops.element_size, gq=self.grad_reduced(p))
-        else:
-            fl = self.flux.flux(pq, h, gp, gh, ops.element_size)
-        r = ops.weak_divergence(*fl)
-        if self.squeeze:
-            rho = self.flux.density(pq)
-            r = r + ops.value.T @ (ops.weights * rho * self.squeeze)
-        return r
+        """Nodal weak residual R_i [m^3/s] (all nodes), evaluated cell row block by
+        block (``CHUNK_POINTS``): the same sums as on whole arrays, with bounded
+        temporaries."""
+        shape = self.grid.shape
+        p = np.asarray(p, dtype=float)
+        p2 = p.reshape(shape)
+        v2 = self.displacement(p).reshape(shape)
+        q2 = self.flux.reduced(p).reshape(shape) if self.uses_reduced else None
+        ops = self.ops
+        dx, dy = ops.grad
+        r2 = np.zeros(shape)
+        for j0, j1 in self._chunks():
+            pq, h, gp, gh = self._rows_fields(p2, v2, h0, j0, j1)
+            size = ops.element_size_rows(j0, j1)
+            if q2 is not None:
+                gq = (dx.rows(q2, j0, j1), dy.rows(q2, j0, j1))
+                fl = self.flux.flux(pq, h, gp, gh, size, gq=gq)
+            else:
+                fl = self.flux.flux(pq, h, gp, gh, size)
+            w = ops.weights_rows(j0, j1)
+            dx.add_rows(w * fl[0], r2, j0, j1)
+            dy.add_rows(w * fl[1], r2, j0, j1)
+            if self.squeeze:
+                ops.value.add_rows(w * self.flux.density(pq) * self.squeeze, r2, j0, j1)
+        return r2.ravel()
 
     def _blocks(self, z: np.ndarray):
         """Sparse A_p, A_h (all nodes), dR/dh0 (all nodes), residual, row factors."""
         p, h0 = self.unpack(z)
-        ops = self.grid.ops
-        pq, h, gp, gh = self.fields_q(p, h0)
+        ops = self.ops
         asm = ops.assembler  # element-wise assembly on one fixed pattern
-        if self.uses_reduced:
-            fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
-                pq, h, gp, gh, ops.element_size, self.grad_reduced(p))
-            zero = np.zeros_like(pq)
-            fluidity = self.flux.fluidity(p)  # d grad q_h / d p_j = q'(p_j) grad phi_j
-            extra = [(d, zero, (dgq[0][d], dgq[1][d]), fluidity) for d in range(2)]
-        else:
-            fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh,
-                                                                ops.element_size)
-            extra = []
-        a_p = asm.flux_jacobian_sum([(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)]
-                                    + extra)
-        a_h = asm.flux_jacobian_sum([(d, dh[d], (dgh[0][d], dgh[1][d])) for d in range(2)])
-        res = ops.weak_divergence(*fl)
-        drdh0 = ops.grad[0].T @ (ops.weights * dh[0]) + ops.grad[1].T @ (ops.weights * dh[1])
-        if self.squeeze:
-            res = res + ops.value.T @ (ops.weights * self.flux.density(pq) * self.squeeze)
-            if self.flux.density(np.array([1e8]))[0] != 1.0:  # compressible: d rho/dp term
-                dp_rho = np.imag(self.flux.density(pq + 1j * 1e-20 * max(self.p_ref, 1.0))) \
-                    / (1e-20 * max(self.p_ref, 1.0))
-                a_p = a_p + ops.value.T @ sp.diags(ops.weights * dp_rho * self.squeeze) \
-                    @ ops.value
+        shape = self.grid.shape
+        p2 = p.reshape(shape)
+        v2 = self.displacement(p).reshape(shape)
+        q2 = self.flux.reduced(p).reshape(shape) if self.uses_reduced else None
+        fluidity = self.flux.fluidity(p) if self.uses_reduced else None
+        dx, dy = ops.grad
+        stencil_p, stencil_h = asm.stencil(), asm.stencil()
+        res2, drdh0_2 = np.zeros(shape), np.zeros(shape)
+        compressible = bool(self.squeeze) and self.flux.density(np.array([1e8]))[0] != 1.0
+        dp_rho_terms = []
+        for j0, j1 in self._chunks():  # cell row blocks: bounded temporaries
+            pq, h, gp, gh = self._rows_fields(p2, v2, h0, j0, j1)
+            size = ops.element_size_rows(j0, j1)
+            if q2 is not None:
+                gq = (dx.rows(q2, j0, j1), dy.rows(q2, j0, j1))
+                fl, dp, dh, dgp, dgh, dgq = self.flux.flux_and_derivatives_reduced(
+                    pq, h, gp, gh, size, gq)
+                zero = np.zeros_like(pq)
+                # d grad q_h / d p_j = q'(p_j) grad phi_j: columns scaled by the fluidity
+                extra = [(d, zero, (dgq[0][d], dgq[1][d]), fluidity) for d in range(2)]
+            else:
+                fl, dp, dh, dgp, dgh = self.flux.flux_and_derivatives(pq, h, gp, gh, size)
+                extra = []
+            asm.add(stencil_p, [(d, dp[d], (dgp[0][d], dgp[1][d])) for d in range(2)]
+                    + extra, j0, j1)
+            asm.add(stencil_h, [(d, dh[d], (dgh[0][d], dgh[1][d])) for d in range(2)],
+                    j0, j1)
+            w = ops.weights_rows(j0, j1)
+            dx.add_rows(w * fl[0], res2, j0, j1)
+            dy.add_rows(w * fl[1], res2, j0, j1)
+            dx.add_rows(w * dh[0], drdh0_2, j0, j1)
+            dy.add_rows(w * dh[1], drdh0_2, j0, j1)
+            if self.squeeze:
+                ops.value.add_rows(w * self.flux.density(pq) * self.squeeze, res2, j0, j1)
+                if compressible:  # d rho/dp term, assembled below on whole arrays
+                    step = 1e-20 * max(self.p_ref, 1.0)
+                    dp_rho_terms.append(np.imag(self.flux.density(pq + 1j * step)) / step)
+        a_p, a_h = asm.csr(stencil_p), asm.csr(stencil_h)
+        res, drdh0 = res2.ravel(), drdh0_2.ravel()
+        if dp_rho_terms:
+            dp_rho = np.concatenate(dp_rho_terms)
+            a_p = a_p + ops.value.T @ sp.diags(ops.weights * dp_rho * self.squeeze) \
+                @ ops.value
         rows = self.free
         s = self._row_scale
         if self.cavitation == "reynolds":
@@ -588,8 +743,16 @@ class PointProblem(ScaledResidual):
     def _free_pattern(self) -> FreePattern:
         """Free-node block of the assembler pattern in nested-dissection order (cached)."""
         if self._pattern is None:
-            self._pattern = FreePattern(self.grid, self.free)
+            self._pattern = self.grid.free_pattern(self.free)
         return self._pattern
+
+    def release(self) -> None:
+        """Drop what only further Newton steps need (the kept LU, cached products); the
+        problem stays usable (they are rebuilt on demand)."""
+        self._pattern = None
+        self._kept = None
+        self._displacement_cache = None
+        self._nodal_cache = None
 
     def _preconditioner_lu(self, a_p: sp.spmatrix, a_h: sp.spmatrix, scale: np.ndarray,
                            diag: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
@@ -609,11 +772,22 @@ class PointProblem(ScaledResidual):
         if ap is not None and (self.compliance is None or ah is not None):
             m = ap if self.compliance is None else ap + self.compliance.kernel()[0, 0] * ah
             pat = self._free_pattern()
-            lu = pat.factor(m, scale, diag)
+            # a preconditioner (elastic) in single precision; a direct solve (rigid) not
+            elastic = self.compliance is not None
+            single = elastic and PRECONDITIONER_SINGLE
+            drop = PRECONDITIONER_DROP_TOL if elastic else 0.0
+            try:
+                lu = pat.factor(m, scale, diag, single=single, drop_tol=drop)
+            except RuntimeError:  # singular incomplete or single-precision factors
+                if not (single or drop):
+                    raise
+                single = False
+                lu = pat.factor(m, scale, diag)
             perm, inv = pat.perm, pat.inverse
+            dtype = np.float32 if single else float
 
             def solve(r: np.ndarray) -> np.ndarray:
-                return lu.solve(np.ascontiguousarray(r[perm]))[inv]
+                return lu.solve(np.ascontiguousarray(r[perm], dtype=dtype))[inv].astype(float)
 
             return solve
         return self._preconditioner_lu_general(a_p, a_h, scale, diag)
@@ -631,6 +805,41 @@ class PointProblem(ScaledResidual):
         return spla.splu(jpp, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=LU_PIVOT_THRESHOLD,
                          options={"SymmetricMode": True}).solve
 
+    def _preconditioner(self, a_p: sp.spmatrix, a_h: sp.spmatrix, scale: np.ndarray,
+                        diag: np.ndarray, shift: float) -> Callable[[np.ndarray], np.ndarray]:
+        """The near-field LU solve of this Newton step: the factorization of an earlier
+        step of this problem while GMRES needed at most ``PRECONDITIONER_KEEP_ITERATIONS``
+        iterations with it and the Newton shift has not grown, else a fresh one (rigid
+        problems, solved directly, always factor afresh)."""
+        kept = self._kept
+        if (self.compliance is not None and kept is not None
+                and kept["its"] <= PRECONDITIONER_KEEP_ITERATIONS
+                and shift <= 2.0 * kept["shift"] + 1e-300):
+            return kept["solve"]
+        self._kept = kept = None  # free the old factors before the new ones are made
+        solve = self._preconditioner_lu(a_p, a_h, scale, diag)
+        self.factorizations += 1
+        if self.compliance is not None and PRECONDITIONER_KEEP_ITERATIONS > 0:
+            self._kept = {"solve": solve, "shift": shift, "its": 0}
+        return solve
+
+    def _forcing(self, f: np.ndarray) -> float:
+        """Relative GMRES tolerance of a Newton step with residual ``f`` (inexact Newton,
+        see ``GMRES_FORCING``)."""
+        if GMRES_FORCING_MAX <= GMRES_RTOL:
+            return GMRES_RTOL
+        norm2 = float(np.linalg.norm(f))
+        if GMRES_FORCING == "eisenstat-walker":
+            if self._forcing_term is None:
+                self._forcing_term = ForcingTerm(GMRES_FORCING_MAX)
+            eta = self._forcing_term(norm2)
+        else:
+            eta = float(np.max(np.abs(f)))
+        floor = max(GMRES_RTOL, eta)
+        if self.tolerance is not None:
+            floor = max(floor, GMRES_TOLERANCE_FRACTION * self.tolerance / max(norm2, 1e-300))
+        return min(GMRES_FORCING_MAX, floor)
+
     def newton_step(self, z: np.ndarray, shift: float = 0.0) -> np.ndarray:
         """Solve (J + shift D) dz = -F; D = identity on the pressure unknowns.
 
@@ -647,7 +856,8 @@ class PointProblem(ScaledResidual):
         col = drdh0[rows] * row_factor * self.h_ref
         load_row = self.mass[rows] * self.p_ref / self.load if self.has_h0 else None
         diag = (da if da is not None else 0.0) + shift
-        lu_solve = self._preconditioner_lu(a_p, a_h, scale, np.broadcast_to(diag, (npf,)))
+        lu_solve = self._preconditioner(a_p, a_h, scale, np.broadcast_to(diag, (npf,)),
+                                        shift)
         if self.has_h0:  # bordered system by the Schur complement of the (h0, load) pair
             w = lu_solve(col)
             schur = float(load_row @ w)
@@ -676,16 +886,14 @@ class PointProblem(ScaledResidual):
                 return np.append(out, load_row @ u[:npf])
             return out
 
-        rtol = GMRES_RTOL
-        if GMRES_FORCING_MAX > GMRES_RTOL:  # inexact Newton, see GMRES_FORCING_MAX
-            floor = max(GMRES_RTOL, float(np.max(np.abs(f))))
-            if self.tolerance is not None:
-                floor = max(floor, GMRES_TOLERANCE_FRACTION * self.tolerance
-                            / max(float(np.linalg.norm(f)), 1e-300))
-            rtol = min(GMRES_FORCING_MAX, floor)
+        rtol = self._forcing(f)
         dz, its, rel = gmres_right(matvec, precond, -f, rtol=rtol,
                                    max_iterations=GMRES_MAX_ITERATIONS)
+        if self._kept is not None:
+            self._kept["its"] = its if rel <= rtol else GMRES_MAX_ITERATIONS
         self.linear_iterations += its
+        if self.iteration_sink is not None:
+            self.iteration_sink[0] += its
         log.debug("gmres: %d iterations, relative residual %.2e", its, rel)
         if not np.all(np.isfinite(dz)):
             raise RuntimeError("gmres produced non-finite values")
@@ -728,7 +936,8 @@ POINT_DRIVER = DriverSettings(transfer_iterations=TRANSFER_DIRECT_ITERATIONS,
                               start_shift=START_SHIFT, transfer_shift=TRANSFER_SHIFT,
                               coarse_tolerance=COARSE_TOLERANCE,
                               intermediate_tolerance=COARSE_TOLERANCE,
-                              warm_start=WARM_START_ALPHA)
+                              warm_start=WARM_START_ALPHA, transfer_memory=TRANSFER_MEMORY,
+                              blas_threads=BLAS_THREADS)
 #: Rigid Newton scenes (loaded, or non-Barus laws): plain Newton as validated.
 RIGID_POINT_DRIVER = replace(POINT_DRIVER, start_shift=0.0, transfer_shift=0.0)
 
@@ -754,6 +963,28 @@ class PointLevel:
     @property
     def label(self) -> str:
         return f"{self.nodes[0]}x{self.nodes[1]} nodes"
+
+
+class _Weighted:
+    """Quadrature operators whose weights (and integrals) are scaled by ``factor`` (a half
+    grid standing for the whole symmetric one); everything else is ``ops``'s."""
+
+    def __init__(self, ops, factor: float) -> None:
+        self._ops = ops
+        self.factor = float(factor)
+
+    @property
+    def weights(self) -> np.ndarray:
+        w = self._ops.weights
+        return w if self.factor == 1.0 else self.factor * w
+
+    def integrate(self, f_q: np.ndarray) -> float:
+        return self.factor * self._ops.integrate(f_q)
+
+    def __getattr__(self, name: str):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return getattr(self._ops, name)
 
 
 class PointModel:
@@ -793,7 +1024,8 @@ class PointModel:
         self.grid_note = ", each solved on its half y >= 0 by symmetry" if self.symmetric \
             else ""
         self._levels: dict[tuple[tuple[int, int], bool], PointLevel] = {}
-        self._problems: list[PointProblem] = []
+        self._linear_iterations = [0]  # GMRES iterations of all problems of the model
+        self._live: weakref.WeakSet[PointProblem] = weakref.WeakSet()
 
     def _symmetric(self) -> bool:
         """True if the elastic Newton solve may run on the half grid y >= 0
@@ -850,7 +1082,13 @@ class PointModel:
                                scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
                                scene.lubricant.viscosity, level.p_bc, self.squeeze,
                                tolerance=tolerance)
-        self._problems.append(problem)
+        problem.iteration_sink = self._linear_iterations
+        # a new problem means the earlier ones are done with their Newton iterations
+        # (the driver moves on to a new level, continuation step or the finish): drop their
+        # LU and cached products (they are rebuilt if an earlier problem is used again)
+        for old in self._live:
+            old.release()
+        self._live.add(problem)
         return problem
 
     def initial_guess(self, level: PointLevel, problem: PointProblem,
@@ -896,6 +1134,11 @@ class PointModel:
         p_half, h0 = problem.unpack(z)
         nodes = (problem.grid.x.size, 2 * problem.grid.y.size - 1)
         whole = self.problem(self.level(nodes, half=False), 1.0, problem.tolerance)
+        for level in self._levels.values():  # the Newton iterations are over
+            level.setup.grid.release()
+        # the solution's integrals over the quadrature points are twice those of the half
+        # grid (every cell lies in one half); :meth:`solution` takes them from there
+        whole.mirror_half = (problem, np.array(z, copy=True))
         return whole, whole.pack(problem.compliance.mirror(p_half).ravel(), h0)
 
     # -- solutions -------------------------------------------------------------------------
@@ -920,36 +1163,54 @@ class PointModel:
         if not post:
             return out
         q = out.quantities
-        pq, h_q, gp, gh = problem.fields_q(p, h0)
         o = np.array([0.0])
         v = problem.displacement(p)
         load = float(problem.mass @ p)
-        nums, notes = film_numbers(h_nodes, h_q, float(h0 + grid.interpolate(v, o, o)[0]), p,
-                                   load, grid.x, grid.y)
+        gross = float(problem.mass @ np.abs(p))
+        h_c = float(h0 + grid.interpolate(v, o, o)[0])
+        # integrals over the quadrature points: on the half grid a whole-grid solution
+        # mirrors (``whole``; every cell lies in one half, so twice its integrals, and the
+        # same extrema), with half the temporaries; otherwise on the problem's own grid
+        qp, qpress, qcav, weight = problem, p, cavitated, 1.0
+        half = getattr(problem, "mirror_half", None) if z is not None else None
+        if half is not None:
+            qp, weight = half[0], 2.0
+            qpress = qp.unpack(half[1])[0]
+            if scene.model.cavitation == "reynolds":
+                qpress = np.maximum(qpress, 0.0)
+        del v
+        qgrid = qp.grid
+        qops = qgrid.ops
+        pq, h_q, gp, eta_q, gq, stab = qp.post_fields(qpress, h0)
+        nums, notes = film_numbers(h_nodes, h_q, h_c, p, load, grid.x, grid.y)
         q.update(nums)
         if scene.model.cavitation == "reynolds":
-            full = ~cavitated if cavitated is not None else p > 1e-12 * problem.p_ref
-            full = full | grid.boundary_mask()
-            ind = (ops.value @ full.astype(float) >= 0.5).astype(float)
+            full = ~qcav if qcav is not None else qpress > 1e-12 * qp.p_ref
+            full = full | qgrid.boundary_mask()
+            ind = (qops.value @ full.astype(float) >= 0.5).astype(float)
         else:
             ind = np.ones_like(h_q)
-        eta_q = problem.flux.viscosity(pq)
-        gq = problem.grad_reduced(p) if problem.uses_reduced else None
         kin = scene.kinematics
         numbers, more, d = friction_and_heat(
-            ops, h_q, gp, eta_q, pq, mean_speed=kin.mean_speed,
+            _Weighted(qops, weight), h_q, gp, eta_q, pq, mean_speed=kin.mean_speed,
             sliding_speed=kin.sliding_speed, indicator_q=ind, load=load,
-            gross_load=float(problem.mass @ np.abs(p)), traction=scene.traction,
-            reduced=None if gq is None else (gq, problem.flux.viscosity0),
-            stabilisation=problem.flux.stabilisation_flux(pq, h_q, gp, gh, ops.element_size,
-                                                          gq))
+            gross_load=gross, traction=scene.traction,
+            reduced=None if gq is None else (gq, qp.flux.viscosity0), stabilisation=stab)
         q.update(numbers)
         out.traction_model = d.shear["model"]
         out.warnings += notes + more
         out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
         if self.elastic:
-            q["gmres_iterations"] = float(sum(pr.linear_iterations for pr in self._problems))
+            q["gmres_iterations"] = float(self.linear_iterations())
         return out
+
+    def linear_iterations(self) -> int:
+        """GMRES iterations of all problems of the model so far (a subclass that keeps its
+        problems in ``_problems`` instead of giving them the shared counter: their sum)."""
+        sink = getattr(self, "_linear_iterations", None)
+        if sink is not None:
+            return int(sink[0])
+        return int(sum(pr.linear_iterations for pr in getattr(self, "_problems", ())))
 
     def linear(self, level: PointLevel) -> tuple[str, Solution, str, int]:
         """Linear (reduced-pressure) solve on ``level``: status, solution, message and the
@@ -1017,7 +1278,8 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
     if max_iterations is not None:
         scene = replace(scene, solver=replace(scene.solver, max_iterations=int(max_iterations)))
     t0 = time.perf_counter()
-    model = PointModel(scene, boundary_pressure, sq)
-    if is_linear(scene):
-        return solve_linear_model(model, scene, t0)
-    return solve_newton_model(model, scene, t0, progress=progress)
+    with blas_threads(BLAS_THREADS):
+        model = PointModel(scene, boundary_pressure, sq)
+        if is_linear(scene):
+            return solve_linear_model(model, scene, t0)
+        return solve_newton_model(model, scene, t0, progress=progress)

@@ -14,12 +14,14 @@ interface, :class:`NonlinearProblem`; this module knows nothing of the physics.
 """
 from __future__ import annotations
 
+import contextlib
 import logging
 import time
 from dataclasses import dataclass, field
-from typing import Callable, Protocol
+from typing import Callable, Iterator, Protocol
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 log = logging.getLogger(__name__)
 
@@ -38,6 +40,18 @@ class NonlinearProblem(Protocol):
 
     def admissible(self, z: np.ndarray) -> bool:
         """True if z is a physically admissible iterate (e.g. positive film)."""
+
+
+@contextlib.contextmanager
+def blas_threads(limit: int | None) -> Iterator[None]:
+    """Limit the BLAS threads of numpy/scipy to ``limit`` inside the block and restore
+    the previous setting on exit (None: no change). For solves whose dense work is small
+    vectors and small products, where thread start-up costs more than it saves."""
+    if limit is None:
+        yield
+        return
+    with threadpool_limits(limits=int(limit), user_api="blas"):
+        yield
 
 
 #: Statuses that end a whole solve (not just one attempt): the budget is spent.
@@ -326,15 +340,60 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
             "last admissible iterate.")
 
 
+class ForcingTerm:
+    """Relative tolerance of the linear solves of an inexact Newton iteration:
+    Eisenstat & Walker (1996), choice 2.
+
+    eta_k = gamma (|F_k| / |F_k-1|)^alpha, safeguarded by gamma eta_k-1^alpha when that
+    exceeds 0.1, capped at ``eta_max``; the first step gets ``eta_max``. Where Newton
+    converges slowly (far from the solution, |F| falling by small factors) the linear
+    solves stay loose; in the quadratic phase they tighten with |F|^2. A step whose
+    residual did not fall (a repeated attempt at the same iterate) keeps the last eta.
+    One instance per sequence of Newton steps (per problem).
+
+    Parameters
+    ----------
+    eta_max : float
+        Upper bound of eta (and its first value) [-].
+    gamma, alpha : float
+        Eisenstat-Walker parameters [-] (0.9 and 2 as recommended there).
+    """
+
+    def __init__(self, eta_max: float = 0.1, gamma: float = 0.9, alpha: float = 2.0) -> None:
+        self.eta_max, self.gamma, self.alpha = float(eta_max), float(gamma), float(alpha)
+        self._last: tuple[float, float] | None = None
+
+    def __call__(self, norm: float) -> float:
+        """eta for a Newton step at residual norm ``norm`` (2-norm, any scale)."""
+        last = self._last
+        if last is None:
+            eta = self.eta_max
+        elif norm >= last[0]:
+            eta = last[1]
+        else:
+            eta = self.gamma * (norm / last[0]) ** self.alpha
+            guard = self.gamma * last[1] ** self.alpha
+            if guard > 0.1:
+                eta = max(eta, guard)
+        eta = min(eta, self.eta_max)
+        self._last = (float(norm), eta)
+        return eta
+
+
 def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
                 precond: Callable[[np.ndarray], np.ndarray], b: np.ndarray, *,
-                rtol: float = 1e-9, max_iterations: int = 150
-                ) -> tuple[np.ndarray, int, float]:
-    """Right-preconditioned GMRES (no restart) from x0 = M^-1 b.
+                rtol: float = 1e-9, max_iterations: int = 150,
+                restart: int | None = None) -> tuple[np.ndarray, int, float]:
+    """Right-preconditioned GMRES from x0 = M^-1 b.
 
-    Arnoldi with classical Gram-Schmidt applied twice (numpy matrix products), the
-    small least-squares problem solved each iteration. Stops when the true-residual
-    estimate |b - A x| <= rtol |b| or after ``max_iterations``.
+    Arnoldi with classical Gram-Schmidt applied twice (numpy matrix products), the small
+    least-squares problem solved each iteration. Stops when the true-residual estimate
+    |b - A x| <= rtol |b| or after ``max_iterations`` in all. The preconditioner must be
+    a fixed linear map: the update M^-1 (V y) is formed once per cycle from the Krylov
+    basis V (one more preconditioner solve) instead of storing M^-1 V, which halves the
+    memory (one vector of b's length per iteration). ``restart``: the basis is restarted
+    from the current iterate after that many iterations (None: no restart), capping the
+    memory at restart + 1 vectors.
 
     Returns
     -------
@@ -343,33 +402,40 @@ def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
     bnorm = float(np.linalg.norm(b))
     if bnorm == 0.0:
         return np.zeros_like(b), 0, 0.0
-    x0 = precond(b)
-    r0 = b - matvec(x0)
-    beta = float(np.linalg.norm(r0))
-    if beta <= rtol * bnorm:
-        return x0, 0, beta / bnorm
-    m = max_iterations
-    V = np.zeros((m + 1, b.size))
-    Z = np.zeros((m, b.size))
-    H = np.zeros((m + 1, m))
-    V[0] = r0 / beta
-    e1 = np.zeros(m + 1)
-    e1[0] = beta
-    y = np.zeros(0)
+    x = precond(b)
+    total = 0
     rel = 1.0
-    k = 0
-    for k in range(m):
-        Z[k] = precond(V[k])
-        w = matvec(Z[k])
-        for _ in range(2):  # CGS2
-            h = V[:k + 1] @ w
-            w = w - V[:k + 1].T @ h
-            H[:k + 1, k] += h
-        H[k + 1, k] = np.linalg.norm(w)
-        if H[k + 1, k] > 0.0:
-            V[k + 1] = w / H[k + 1, k]
-        y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
-        rel = float(np.linalg.norm(e1[:k + 2] - H[:k + 2, :k + 1] @ y)) / bnorm
-        if rel <= rtol or H[k + 1, k] == 0.0:
-            break
-    return x0 + Z[:k + 1].T @ y, k + 1, rel
+    while True:
+        r0 = b - matvec(x)
+        beta = float(np.linalg.norm(r0))
+        rel = beta / bnorm
+        if rel <= rtol or total >= max_iterations:
+            return x, total, rel
+        m = max_iterations - total
+        if restart is not None:
+            m = min(m, max(int(restart), 1))
+        V = np.zeros((m + 1, b.size))
+        H = np.zeros((m + 1, m))
+        V[0] = r0 / beta
+        e1 = np.zeros(m + 1)
+        e1[0] = beta
+        y = np.zeros(0)
+        k = 0
+        for k in range(m):
+            w = matvec(precond(V[k]))
+            for _ in range(2):  # CGS2
+                h = V[:k + 1] @ w
+                w = w - V[:k + 1].T @ h
+                H[:k + 1, k] += h
+            H[k + 1, k] = np.linalg.norm(w)
+            if H[k + 1, k] > 0.0:
+                V[k + 1] = w / H[k + 1, k]
+            y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
+            rel = float(np.linalg.norm(e1[:k + 2] - H[:k + 2, :k + 1] @ y)) / bnorm
+            if rel <= rtol or H[k + 1, k] == 0.0:
+                break
+        x = x + precond(V[:k + 1].T @ y)
+        total += k + 1
+        del V
+        if rel <= rtol or H[k + 1, k] == 0.0 or total >= max_iterations:
+            return x, total, rel

@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
+from functools import cached_property
 from typing import Literal
 
 import numpy as np
@@ -417,6 +418,12 @@ class LocalCompliance(Compliance):
         return f"LocalCompliance(coefficient={self.coefficient!r} m/Pa, shape={self.shape})"
 
 
+#: HalfSpaceLine.apply uses the FFT product from this many nodes on, even when the dense
+#: matrix exists (O(N log N) instead of N^2: at 2001 nodes about 40 us instead of 0.4 ms);
+#: the two agree to rounding.
+LINE_FFT_APPLY_MIN = 512
+
+
 class HalfSpaceLine(Compliance):
     """Plane-strain elastic half-spaces, line contact: v = -(4/(pi E')) int p ln|x - s| ds.
 
@@ -487,9 +494,9 @@ class HalfSpaceLine(Compliance):
 
     def apply(self, p: np.ndarray) -> np.ndarray:
         p = self._check_p(p)
-        if self._matrix is not None:
-            return self._matrix @ p
         n = self.x.size
+        if self._matrix is not None and (n < LINE_FFT_APPLY_MIN or p.ndim != 1):
+            return self._matrix @ p
         spec = self._build_spectrum()
         length = self._padded_length
         return scipy.fft.irfft(spec * scipy.fft.rfft(p, length), length)[:n]
@@ -636,9 +643,15 @@ class MirroredHalfSpacePoint(Compliance):
 
         v_(j, i) = sum_(l, k) (K[|j - l|, |i - k|] + [l > 0] K[j + l, |i - k|]) p_(l, k),
 
-    the second term being the image node (-y_l). ``apply`` mirrors the field and uses the
-    full grid's FFT product, so the result equals the full operator's on the half grid
-    (to rounding).
+    the second term being the image node (-y_l). ``apply`` is the whole grid's product
+    restricted to the half grid (equal to rounding) at about a third of its cost: the
+    mirrored field and the kernel are even in y, so their zero-padded circular
+    convolution along y is a product of type-I discrete cosine transforms of the half
+    length (the DFT of an even sequence), and along x an rfft of the padded rows
+    (DC-FFT); only the ny half-grid rows are transformed and the kernel's transform is
+    real (the kernel is even in x too): (N, Lx//2 + 1) reals with N = Ly/2 + 1,
+    Ly >= 4 ny - 3 (every offset |j - l| <= 2 (ny - 1) of the whole grid has its own
+    place on the circle of length Ly).
 
     Parameters
     ----------
@@ -652,7 +665,8 @@ class MirroredHalfSpacePoint(Compliance):
     Attributes
     ----------
     full : HalfSpacePoint
-        The operator on the whole grid, y from -y[-1] to y[-1] (2 ny - 1 rows).
+        The operator on the whole grid, y from -y[-1] to y[-1] (2 ny - 1 rows), built on
+        first use.
     """
 
     kind = "half-space"
@@ -660,15 +674,35 @@ class MirroredHalfSpacePoint(Compliance):
     is_symmetric = False
 
     def __init__(self, x: np.ndarray, y: np.ndarray, e_prime: float) -> None:
-        ys, _ = _check_grid("y", y)
+        ys, dy = _check_grid("y", y)
         if ys[0] != 0.0:
             raise ValueError(f"y must start at the symmetry line y = 0 m, got y[0] = {ys[0]!r} m")
-        self.full = HalfSpacePoint(x, np.concatenate([-ys[:0:-1], ys]), e_prime)
-        self.x, self.dx = self.full.x, self.full.dx
-        self.y, self.dy = ys, self.full.dy
-        self.e_prime = self.full.e_prime
-        self.shape = (ys.size, self.x.size)
-        self._kernel = self.full.kernel()  # offsets up to 2 (ny - 1): direct and image
+        self.x, self.dx = _check_grid("x", x)
+        self._y_full = np.concatenate([-ys[:0:-1], ys])
+        self._y_full_spacing = _check_grid("y", self._y_full)[1]
+        self.y, self.dy = ys, self._y_full_spacing
+        self.e_prime = _check_positive("e_prime", e_prime, "Pa")
+        ny, nx = ys.size, self.x.size
+        self.shape = (ny, nx)
+        scale = 2.0 / (math.pi * self.e_prime)
+        # offsets (j Dy, i Dx) of the whole grid, j <= 2 (ny - 1): direct and image
+        self._kernel = scale * _point_kernel_grid(nx, 2 * ny - 1, self.dx,
+                                                  self._y_full_spacing)
+        self._kernel.setflags(write=False)
+        lx = _padded_length(nx)
+        half = scipy.fft.next_fast_len(2 * ny - 1)   # Ly / 2: Ly >= 4 ny - 2
+        self._nd = half + 1                          # DCT-I length
+        self._lx = lx
+        wrapped = np.zeros((self._nd, lx))
+        wrapped[:2 * ny - 1, :nx] = self._kernel
+        wrapped[:2 * ny - 1, lx - nx + 1:] = self._kernel[:, :0:-1]
+        spectrum = scipy.fft.rfft(scipy.fft.dct(wrapped, type=1, axis=0), axis=1)
+        # even in x: the transform is real (its imaginary part is rounding)
+        self._spectrum = np.ascontiguousarray(spectrum.real) / (2.0 * half)
+
+    @cached_property
+    def full(self) -> HalfSpacePoint:
+        return HalfSpacePoint(self.x, self._y_full, self.e_prime)
 
     def mirror(self, p: np.ndarray) -> np.ndarray:
         """The even extension of a half-grid field to the full grid, shape (2 ny - 1, nx)."""
@@ -677,10 +711,17 @@ class MirroredHalfSpacePoint(Compliance):
 
     def kernel(self) -> np.ndarray:
         """The full grid's influence coefficients (see :meth:`HalfSpacePoint.kernel`)."""
-        return self.full.kernel()
+        return self._kernel
 
     def apply(self, p: np.ndarray) -> np.ndarray:
-        v = self.full.apply(self.mirror(p))[self.shape[0] - 1:]
+        half = self._check_p(p).reshape(self.shape)
+        ny, nx = self.shape
+        padded = np.zeros((self._nd, nx))
+        padded[:ny] = half
+        t = scipy.fft.rfft(scipy.fft.dct(padded, type=1, axis=0), n=self._lx, axis=1)
+        t *= self._spectrum
+        u = scipy.fft.irfft(t, n=self._lx, axis=1)[:, :nx]
+        v = scipy.fft.dct(u, type=1, axis=0)[:ny]
         return v.reshape(np.shape(p)) if np.ndim(p) == 1 else np.ascontiguousarray(v)
 
     def diagonal(self, n: int | None = None) -> np.ndarray:
@@ -721,7 +762,7 @@ class MirroredHalfSpacePoint(Compliance):
 
     def __repr__(self) -> str:
         return (f"MirroredHalfSpacePoint(ny x nx = {self.shape[0]} x {self.shape[1]} of "
-                f"{self.full.shape[0]} x {self.full.shape[1]}, e_prime={self.e_prime:.4g} Pa)")
+                f"{2 * self.shape[0] - 1} x {self.shape[1]}, e_prime={self.e_prime:.4g} Pa)")
 
 
 _KINDS = ("rigid", "local", "half-space")
