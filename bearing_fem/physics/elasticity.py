@@ -681,7 +681,7 @@ class MirroredHalfSpacePoint(Compliance):
         self._y_full = np.concatenate([-ys[:0:-1], ys])
         self._y_full_spacing = _check_grid("y", self._y_full)[1]
         self.y, self.dy = ys, self._y_full_spacing
-        self.e_prime = _check_positive("e_prime", e_prime, "Pa")
+        self.e_prime = require_positive("e_prime", e_prime, "Pa")
         ny, nx = ys.size, self.x.size
         self.shape = (ny, nx)
         scale = 2.0 / (math.pi * self.e_prime)
