@@ -1,4 +1,4 @@
-"""Closed-form oracles (PHYSICS.md section 5), used by the tests and the studies.
+"""Closed-form oracles (docs/theory.md section 14), used by the tests and the studies.
 
 Every oracle here is evaluated from its closed form; nothing is tabulated.
 SI units unless a docstring says otherwise.
@@ -26,7 +26,7 @@ from .validation import require_finite, require_nonnegative, require_positive
 
 
 def barus_from_reduced(q: _Any, piezo: _Any) -> np.ndarray:
-    """Pressure from the Barus (Kapitsa) reduced pressure, PHYSICS.md 5.1.
+    """Pressure from the Barus (Kapitsa) reduced pressure, docs/theory.md section 14.1.
 
     p = -ln(1 - alpha q)/alpha  (p = q when alpha = 0). Where alpha q >= 1 no pressure
     exists (the piezo-viscous solution has blown up) and ``inf`` is returned.
@@ -56,7 +56,7 @@ def barus_from_reduced(q: _Any, piezo: _Any) -> np.ndarray:
 
 
 def reduced_from_barus(p: _Any, piezo: _Any) -> np.ndarray:
-    """Barus (Kapitsa) reduced pressure q = (1 - exp(-alpha p))/alpha [Pa], PHYSICS.md 5.1.
+    """Barus (Kapitsa) reduced pressure q = (1 - exp(-alpha p))/alpha [Pa], docs/theory.md section 14.1.
 
     q = p when alpha = 0; q -> 1/alpha as p -> inf.
 
@@ -123,7 +123,7 @@ def kapitsa_point_coefficients(viscosity: _Any, mean_speed: _Any, a: _Any, b: _A
 def kapitsa_point_pressure(x: _Any, y: _Any, h0: float, a: float, b: float,
                            viscosity: float, mean_speed: float, dh0dt: float = 0.0,
                            piezo: float = 0.0) -> np.ndarray:
-    """Kapitsa rigid point-contact pressure, full-Sommerfeld (PHYSICS.md 5.1).
+    """Kapitsa rigid point-contact pressure, full-Sommerfeld (docs/theory.md section 14.1).
 
     q = (A x + B)/h^2 with h = h0 + a x^2 + b y^2 solves the isoviscous Reynolds equation
     div(h^3/(12 eta0) grad q) = u_m dh/dx + dh0/dt exactly; then p = -ln(1 - alpha q)/alpha
@@ -169,7 +169,7 @@ def kapitsa_point_max_reduced(h0: _Any, a: _Any, b: _Any, viscosity: _Any,
     everywhere. f'(x) = 0 reduces to the quadratic 3 a A x^2 + 4 a B x - A h0 = 0, with
     real roots x = (-4 a B -+ sqrt(16 a^2 B^2 + 12 a A^2 h0))/(6 a A); f is evaluated at
     both (closed form, any mix of wedge and squeeze). For A = 0 (pure squeeze) the maximum
-    is B/h0^2 at x = 0 if B > 0. Pure wedge: (9|A|/16)(3a)^(-1/2) h0^(-3/2) (PHYSICS.md 5.1).
+    is B/h0^2 at x = 0 if B > 0. Pure wedge: (9|A|/16)(3a)^(-1/2) h0^(-3/2) (docs/theory.md section 14.1).
 
     Parameters
     ----------
@@ -198,7 +198,7 @@ def kapitsa_point_max_reduced(h0: _Any, a: _Any, b: _Any, viscosity: _Any,
 
 def kapitsa_existence_ratio(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_speed: _Any,
                             dh0dt: _Any = 0.0, *, piezo: _Any) -> np.ndarray:
-    """alpha q_max of Kapitsa's rigid solution [-] (PHYSICS.md 5.1).
+    """alpha q_max of Kapitsa's rigid solution [-] (docs/theory.md section 14.1).
 
     A rigid piezo-viscous (Barus) full-Sommerfeld solution exists iff this is < 1; as it
     tends to 1 the peak pressure tends to infinity. Arguments as
@@ -212,7 +212,7 @@ def kapitsa_existence_ratio(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_sp
 def kapitsa_line_pressure(x: _Any, h0: float, radius: float, viscosity: float,
                           mean_speed: float, dh0dt: float = 0.0,
                           piezo: float = 0.0) -> np.ndarray:
-    """Rigid cylinder, full-Sommerfeld (PHYSICS.md 5.1 line limit b = 0, and 5.2).
+    """Rigid cylinder, full-Sommerfeld (docs/theory.md section 14.1 line limit b = 0, and 14.2).
 
     q = (A x + B)/h^2, h = h0 + x^2/(2R), A = -4 eta0 u_m, B = -6 eta0 R dh0/dt; solves
     d/dx(h^3/(12 eta0) dq/dx) = u_m dh/dx + dh0/dt; p = Barus transform of q.
@@ -253,7 +253,7 @@ def kapitsa_line_max_reduced(h0: _Any, radius: _Any, viscosity: _Any, mean_speed
                                      0.0, viscosity, mean_speed, dh0dt)
 
 
-# --- Martin: rigid cylinder with the Reynolds outlet condition (PHYSICS.md 5.2) ---------
+# --- Martin: rigid cylinder with the Reynolds outlet condition (docs/theory.md section 14.2) ---------
 def _martin_shape(g: _Any, h_star_ratio: float) -> np.ndarray:
     """p/P0 of Martin's solution as a function of g = arctan(x/sqrt(2 R h0)) (5.2)."""
     g = np.asarray(g, dtype=float)
@@ -362,7 +362,7 @@ def martin_existence_ratio(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: 
                                                                mean_speed)
 
 
-# --- Hertz dry limits (PHYSICS.md 5.3) ---------------------------------------------------
+# --- Hertz dry limits (docs/theory.md section 14.3) ---------------------------------------------------
 def hertz_line_pressure(x: _Any, b: float, p_h: float) -> np.ndarray:
     """Hertz line pressure p = p_h sqrt(1 - (x/b)^2) for |x| <= b, else 0 [Pa] (5.3).
 
@@ -403,7 +403,7 @@ def hertz_point_pressure(x: _Any, y: _Any, a: float, p_h: float) -> np.ndarray:
 def hertz_point_displacement(r: _Any, a: float, p_h: float, e_prime: float) -> np.ndarray:
     """Combined surface displacement v(r) of the circular Hertz pressure [m] (5.3).
 
-    v = (2/(pi E')) double-integral p/dist (Boussinesq, PHYSICS.md 2):
+    v = (2/(pi E')) double-integral p/dist (Boussinesq, docs/theory.md section 11):
     r <= a: v = (pi p_h/(2 a E'))(2a^2 - r^2)  (= delta - r^2/(2R) with Hertz values);
     r >= a: v = (p_h/(a E'))[(2a^2 - r^2) arcsin(a/r) + a sqrt(r^2 - a^2)].
 
@@ -422,12 +422,12 @@ def hertz_point_displacement(r: _Any, a: float, p_h: float, e_prime: float) -> n
 
 
 # ----------------------------------------------------------------------------------------
-# Section B: Korovchinsky half-plane thermal contact (PHYSICS.md 5.4), Jaeger/Blok.
+# Section B: Korovchinsky half-plane thermal contact (docs/theory.md section 14.4), Jaeger/Blok.
 # ----------------------------------------------------------------------------------------
 
 
 def korovchinsky_root(x_over_a: np.ndarray | float, y_over_a: np.ndarray | float) -> np.ndarray:
-    """Parameter t >= 0 of the confocal ellipse through (x', y') (PHYSICS.md 5.4).
+    """Parameter t >= 0 of the confocal ellipse through (x', y') (docs/theory.md section 14.4).
 
     t is the non-negative root of ``1 - x'^2/(1+t) - y'^2/t = 0``, i.e. of
     ``t^2 + (1 - x'^2 - y'^2) t - y'^2 = 0``; t = 0 on the strip |x'| <= 1, y' = 0.
@@ -458,7 +458,7 @@ def korovchinsky_shape(x_over_a: np.ndarray | float, y_over_a: np.ndarray | floa
     """C-free part f of the corrected Korovchinsky field, T/T_n = C + f(x', y').
 
     ``f = -(1/2) ln[(sqrt(1+t) + sqrt t)/2] - (1/2)(1 - sqrt(t/(1+t))) x'^2
-    - (1/2)(sqrt((1+t)/t) - 1) y'^2`` (PHYSICS.md 5.4; seed 004 prints the quadratic
+    - (1/2)(sqrt((1+t)/t) - 1) y'^2`` (docs/theory.md section 14.4; Sanko prints the quadratic
     coefficients as 1 instead of 1/2). On the strip (t = 0) f = ln sqrt 2 - x'^2/2.
 
     Parameters
@@ -505,7 +505,7 @@ def korovchinsky_temperature(x: np.ndarray | float, y: np.ndarray | float, half_
     """Corrected Korovchinsky temperature T = T_n (C + f(x/a, y/a)) [K].
 
     Steady conduction in the half-plane y >= 0 with adiabatic surface except the
-    semi-elliptic strip flux q = q_max sqrt(1 - x^2/a^2), |x| <= a (PHYSICS.md 5.4).
+    semi-elliptic strip flux q = q_max sqrt(1 - x^2/a^2), |x| <= a (docs/theory.md section 14.4).
 
     Parameters
     ----------
@@ -544,7 +544,7 @@ def korovchinsky_log_potential_constant() -> float:
 
 
 def korovchinsky_surface(x_over_a: np.ndarray | float, C: float = 0.0) -> np.ndarray:
-    """Surface temperature T(x, 0)/T_n (PHYSICS.md 5.4 special forms), dimensionless.
+    """Surface temperature T(x, 0)/T_n (docs/theory.md section 14.4 special forms), dimensionless.
 
     On the strip: C + ln sqrt 2 - x'^2/2. Outside: C - {(1/2) ln[(x' + sqrt(x'^2-1))/2]
     - (1/2) x' sqrt(x'^2-1) + x'^2/2}, with x' -> |x'|.
@@ -557,7 +557,7 @@ def korovchinsky_surface(x_over_a: np.ndarray | float, C: float = 0.0) -> np.nda
 
 
 def korovchinsky_depth(y_over_a: np.ndarray | float, C: float = 0.0) -> np.ndarray:
-    """Temperature below the centre T(0, y)/T_n, dimensionless (PHYSICS.md 5.4).
+    """Temperature below the centre T(0, y)/T_n, dimensionless (docs/theory.md section 14.4).
 
     C - {(1/2) ln[(y' + sqrt(y'^2+1))/2] + (1/2) y' sqrt(y'^2+1) - y'^2/2}.
     """
@@ -572,14 +572,14 @@ def korovchinsky_max(C: float = 0.0) -> float:
 
 
 def korovchinsky_edge(C: float = 0.0) -> float:
-    """Strip-edge temperature T(a, 0)/T_n = C + ln sqrt 2 - 1/2 (seed 004 prints -1)."""
+    """Strip-edge temperature T(a, 0)/T_n = C + ln sqrt 2 - 1/2 (Sanko prints -1)."""
     return C + float(np.log(np.sqrt(2.0))) - 0.5
 
 
 def korovchinsky_strip_average(C: float = 0.0) -> float:
     """Strip-average temperature (1/2a) int T dx / T_n = C + ln sqrt 2 - 1/6.
 
-    Average of -x'^2/2 over [-1, 1] is -1/6 (seed 004 prints -1/3).
+    Average of -x'^2/2 over [-1, 1] is -1/6 (Sanko prints -1/3).
     """
     return C + float(np.log(np.sqrt(2.0))) - 1.0 / 6.0
 
@@ -602,7 +602,7 @@ def jaeger_surface_temperature(x: np.ndarray | float, flux_fn, b: float, conduct
     """High-Peclet surface temperature under a band source fixed on a moving body [K].
 
     ``T(x) = (1/sqrt(pi K rho c V)) int_{-b}^{min(x, b)} q(s) (x - s)^(-1/2) ds``
-    (PHYSICS.md 5.4), valid for Pe = V b/(2 kappa) >~ 5. The body material moves along
+    (docs/theory.md section 14.4), valid for Pe = V b/(2 kappa) >~ 5. The body material moves along
     +x and enters the band at x = -b. The 1/sqrt singularity is removed by the
     substitution s = x - u^2 (ds/sqrt(x - s) = -2 du), leaving a smooth integrand.
 
@@ -674,8 +674,8 @@ def uniform_band_max_coefficient() -> float:
     """Jaeger coefficient c_u in T_max = c_u q sqrt(b)/sqrt(K rho c V), uniform band.
 
     Band of half-length b (length 2b): T(x) = 2 q sqrt(x + b)/sqrt(pi K rho c V), largest
-    at the trailing edge x = b, so c_u = 2 sqrt(2)/sqrt(pi) = 1.5958 (PHYSICS.md's
-    1.596 refers to the HALF-length b).
+    at the trailing edge x = b, so c_u = 2 sqrt(2)/sqrt(pi) = 1.5958 (the 1.596 of docs/theory.md
+    section 14.4 refers to the HALF-length b).
     """
     return 2.0 * np.sqrt(2.0) / np.sqrt(np.pi)
 

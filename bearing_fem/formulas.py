@@ -1,4 +1,4 @@
-"""Film-thickness fits from the literature (PHYSICS.md section 7).
+"""Film-thickness fits from the literature (docs/theory.md section 16).
 
 These are regression formulas (bands of 5-20%), not oracles: studies set solver results
 beside them and report the comparison. Each function states its velocity convention:
@@ -28,8 +28,8 @@ __all__ = [
     "moes_line_asymptotes",
     "nijenbanning_central",
     "nijenbanning_asymptotes",
-    "SEED002_FITS",
-    "SEED002_CONVENTIONS",
+    "ZHIRKIN_FITS",
+    "ZHIRKIN_CONVENTIONS",
     "power_law_film",
     "line_central_film_moes",
     "point_central_film_nvm",
@@ -48,7 +48,7 @@ def _pos(name: str, value: Any) -> np.ndarray:
 # Hamrock-style fits (mean speed)
 # ----------------------------------------------------------------------------------------
 def hamrock_dowson_point(U: Any, G: Any, W: Any, k: Any) -> tuple[Any, Any]:
-    """Hamrock-Dowson (1977) point-contact films, MEAN speed (PHYSICS.md 7).
+    """Hamrock-Dowson (1977) point-contact films, MEAN speed (docs/theory.md section 16).
 
     H_min = 3.63 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.68 k)),
     H_c   = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k)).
@@ -76,17 +76,17 @@ def hamrock_dowson_point(U: Any, G: Any, W: Any, k: Any) -> tuple[Any, Any]:
 
 
 def dowson_higginson_line_min(U: Any, G: Any, W: Any) -> Any:
-    """Dowson-Higginson line-contact minimum film, MEAN speed (PHYSICS.md 7).
+    """Dowson-Higginson line-contact minimum film, MEAN speed (docs/theory.md section 16).
 
     H_min = h_min/R = 2.65 U^0.70 G^0.54 W'^-0.13, with U = eta0 u_m/(E'R), G = alpha E',
-    W' = w/(E'R) (all [-]). Identical to the ``"Dowson"`` set of :data:`SEED002_FITS`.
+    W' = w/(E'R) (all [-]). Identical to the ``"Dowson"`` set of :data:`ZHIRKIN_FITS`.
     """
     U, G, W = _pos("U", U), _pos("G", G), _pos("W", W)
     return 2.65 * U**0.70 * G**0.54 * W**-0.13
 
 
 def pan_hamrock_line(U: Any, G: Any, W: Any) -> tuple[Any, Any]:
-    """Pan-Hamrock (1989) line-contact films, MEAN speed (PHYSICS.md 7).
+    """Pan-Hamrock (1989) line-contact films, MEAN speed (docs/theory.md section 16).
 
     H_min = 1.714 W'^-0.128 U^0.694 G^0.568,  H_c = 2.922 W'^-0.166 U^0.692 G^0.470,
     films h/R [-]; U, G, W' as in :func:`dowson_higginson_line_min`.
@@ -121,7 +121,7 @@ def moes_line_asymptotes(M: Any, L: Any) -> dict[str, Any]:
 
 
 def moes_line_central(M: Any, L: Any) -> Any:
-    """Moes line-contact central film H_Moes = (h_c/R) U_sum^(-1/2), SUM speed (PHYSICS.md 7).
+    """Moes line-contact central film H_Moes = (h_c/R) U_sum^(-1/2), SUM speed (docs/theory.md section 16).
 
     H_c = [(H_RI^(7/3) + H_EI^(7/3))^(3s/7) + (H_RP^(-7/2) + H_EP^(-7/2))^(-2s/7)]^(1/s),
     asymptotes from :func:`moes_line_asymptotes`. L = 0 (isoviscous) is allowed.
@@ -170,7 +170,7 @@ def nijenbanning_asymptotes(M: Any, L: Any, lam: Any = 1.0) -> dict[str, Any]:
 
 
 def nijenbanning_central(M: Any, L: Any, lam: Any = 1.0) -> Any:
-    """Nijenbanning-Venner-Moes point-contact central film H_Moes, SUM speed (PHYSICS.md 7).
+    """Nijenbanning-Venner-Moes point-contact central film H_Moes, SUM speed (docs/theory.md section 16).
 
     H_c = [(H_RI^(3/2) + (H_EI^-4 + 0.1^4)^(-3/8))^(2s/3) + (H_RP^-8 + H_EP^-8)^(-s/8)]^(1/s)
     with the asymptotes of :func:`nijenbanning_asymptotes`; H_Moes = (h_c/rx) U_sum^(-1/2),
@@ -198,13 +198,13 @@ def nijenbanning_central(M: Any, L: Any, lam: Any = 1.0) -> Any:
 
 
 # ----------------------------------------------------------------------------------------
-# seed 002 (Zhirkin et al., table 1): H = K U^a G^b W^c
+# Zhirkin et al. (cold-mill bearings, table 1): H = K U^a G^b W^c
 # ----------------------------------------------------------------------------------------
-#: Seed 002's five coefficient sets (K, a, b, c) of H = K U^a G^b W^c (line contacts).
+#: Zhirkin et al.'s five coefficient sets (K, a, b, c) of H = K U^a G^b W^c (line contacts).
 #: Ratner's b is printed as 0.6 in the table; the text also quotes 0.4 (ambiguous: the
 #: table value is used here; pass your own tuple to :func:`power_law_film` to test 0.4).
 #: Ertel-Grubin's exponents are 8/11 and -1/11 rounded.
-SEED002_FITS: dict[str, tuple[float, float, float, float]] = {
+ZHIRKIN_FITS: dict[str, tuple[float, float, float, float]] = {
     "Ertel-Grubin": (1.95, 0.727, 0.727, -0.091),
     "Higginson": (1.6, 0.7, 0.6, -0.13),
     "Hamrock-Jacobson": (3.07, 0.71, 0.57, -0.11),
@@ -212,12 +212,12 @@ SEED002_FITS: dict[str, tuple[float, float, float, float]] = {
     "Ratner": (3.17, 0.75, 0.6, -0.15),
 }
 
-#: Velocity convention we adopt for each seed-002 set. The seed's text calls U the "sum
+#: Velocity convention we adopt for each set of Zhirkin et al. The paper calls U the "sum
 #: rolling speed" but states no definition; the originals of Grubin (1949),
 #: Dowson-Higginson (1959, 1966) and Hamrock-Jacobson (1984) use the MEAN speed in
 #: U = eta0 u/(E'R), H = h_min/R, W = w/(E'R), and we follow them. Ratner's source is
 #: not available; the mean speed is assumed (flagged). A study must say which it uses.
-SEED002_CONVENTIONS: dict[str, str] = {
+ZHIRKIN_CONVENTIONS: dict[str, str] = {
     "Ertel-Grubin": "mean speed (Grubin 1949)",
     "Higginson": "mean speed (Dowson-Higginson 1959)",
     "Hamrock-Jacobson": "mean speed (Hamrock-Jacobson 1984)",
@@ -228,16 +228,16 @@ SEED002_CONVENTIONS: dict[str, str] = {
 
 def power_law_film(U: Any, G: Any, W: Any,
                    coeffs: tuple[float, float, float, float]) -> Any:
-    """Generic film fit H = K U^a G^b W^c (seed 002, eq. 2).
+    """Generic film fit H = K U^a G^b W^c (Zhirkin et al., eq. 2).
 
     Parameters
     ----------
     U, G, W : float or array
         Speed, material and load groups [-] in the convention of the coefficient set
-        (for :data:`SEED002_FITS`: Hamrock line groups, mean speed; see
-        :data:`SEED002_CONVENTIONS`).
+        (for :data:`ZHIRKIN_FITS`: Hamrock line groups, mean speed; see
+        :data:`ZHIRKIN_CONVENTIONS`).
     coeffs : tuple
-        (K, a, b, c), e.g. ``SEED002_FITS["Dowson"]``.
+        (K, a, b, c), e.g. ``ZHIRKIN_FITS["Dowson"]``.
 
     Returns
     -------

@@ -1,4 +1,4 @@
-"""Hertz, Hamrock and Moes scalings of line and point contacts (PHYSICS.md sections 1, 4).
+"""Hertz, Hamrock and Moes scalings of line and point contacts (docs/theory.md sections 1, 13).
 
 Symbols and units (SI throughout):
 
@@ -17,7 +17,7 @@ p_h            maximum Hertz pressure                                 Pa
 =============  =====================================================  =========
 
 Velocity convention: the Hamrock groups ``U`` use the MEAN speed u_m; the Moes groups
-``M``, ``L`` and ``H_Moes`` use the SUM speed through ``U_sum = 2 U`` (PHYSICS.md 4).
+``M``, ``L`` and ``H_Moes`` use the SUM speed through ``U_sum = 2 U`` (docs/theory.md section 13).
 Both are returned by :func:`moes_line` and :func:`moes_point`, with names saying which.
 
 This module imports numpy and scipy only.
@@ -61,7 +61,7 @@ DEFAULT_VISCOSITY = 0.01
 # materials and geometry
 # ----------------------------------------------------------------------------------------
 def reduced_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
-    """Reduced (Hamrock) modulus E' of two elastic bodies, PHYSICS.md 1.
+    """Reduced (Hamrock) modulus E' of two elastic bodies, docs/theory.md section 1.
 
     E' = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2). Johnson's E* is E'/2.
 
@@ -89,7 +89,7 @@ def reduced_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
 
 
 def reduced_radius(r1: float, r2: float) -> float:
-    """Reduced radius of curvature, 1/R = 1/r1 + 1/r2 (PHYSICS.md 1).
+    """Reduced radius of curvature, 1/R = 1/r1 + 1/r2 (docs/theory.md section 1).
 
     Parameters
     ----------
@@ -123,7 +123,7 @@ def reduced_radius(r1: float, r2: float) -> float:
 # Hertz
 # ----------------------------------------------------------------------------------------
 def hertz_line(load_per_length: float, radius: float, e_prime: float) -> tuple[float, float]:
-    """Hertz line contact (PHYSICS.md 4): b = sqrt(8 w R/(pi E')), p_h = 2 w/(pi b).
+    """Hertz line contact (docs/theory.md section 13): b = sqrt(8 w R/(pi E')), p_h = 2 w/(pi b).
 
     Parameters
     ----------
@@ -207,7 +207,7 @@ def hertz_point(force: float, rx: float, ry: float, e_prime: float) -> HertzPoin
     - p_h = 3 F / (2 pi a_x a_y),  delta = 2 p_h a_minor K / E'.
 
     The circular case rx == ry is exact: a = (3 F R/(2 E'))^(1/3), p_h = 3F/(2 pi a^2),
-    delta = a^2/R (PHYSICS.md 4). For |ratio - 1| < 1e-6 the series m = (4/3)(ratio - 1)
+    delta = a^2/R (docs/theory.md section 13). For |ratio - 1| < 1e-6 the series m = (4/3)(ratio - 1)
     is used (relative error of a, p_h below 1e-12).
 
     Parameters
@@ -260,7 +260,7 @@ def hertz_point(force: float, rx: float, ry: float, e_prime: float) -> HertzPoin
 
 
 def hamrock_ellipticity(rx: float, ry: float) -> float:
-    """Hamrock-Brewe approximate ellipticity k = 1.03 (ry/rx)^0.64 [-] (PHYSICS.md 7).
+    """Hamrock-Brewe approximate ellipticity k = 1.03 (ry/rx)^0.64 [-] (docs/theory.md section 16).
 
     This is the k used in the Hamrock-Dowson fits; :func:`hertz_point` gives the exact one
     (they agree within 3% for 1 <= ry/rx <= 30; the fit is 8% high at ry/rx = 100).
@@ -281,7 +281,7 @@ def _check_lubricant(viscosity: float, mean_speed: float, piezo: float) -> None:
 
 def moes_line(load_per_length: float, radius: float, e_prime: float, viscosity: float,
               mean_speed: float, piezo: float) -> dict[str, float]:
-    """Dimensionless groups of a line contact (PHYSICS.md 4).
+    """Dimensionless groups of a line contact (docs/theory.md section 13).
 
     Parameters
     ----------
@@ -330,13 +330,13 @@ def venner_to_moes_line(H: Any, M: Any) -> Any:
 
 
 def moes_to_venner_line(H_moes: Any, M: Any) -> Any:
-    """Moes film -> Venner film for a line contact: H = pi H_Moes / (8 M) (PHYSICS.md 4)."""
+    """Moes film -> Venner film for a line contact: H = pi H_Moes / (8 M) (docs/theory.md section 13)."""
     return np.pi * np.asarray(H_moes) / (8.0 * np.asarray(M))
 
 
 def moes_point(force: float, rx: float, ry: float, e_prime: float, viscosity: float,
                mean_speed: float, piezo: float) -> dict[str, float]:
-    """Dimensionless groups of a point contact (PHYSICS.md 4), Hertz from :func:`hertz_point`.
+    """Dimensionless groups of a point contact (docs/theory.md section 13), Hertz from :func:`hertz_point`.
 
     Parameters
     ----------
@@ -375,12 +375,12 @@ def moes_point(force: float, rx: float, ry: float, e_prime: float, viscosity: fl
 
 
 def venner_to_moes_point(H: Any, M: Any) -> Any:
-    """Circular contact: Venner H = h R/a^2 -> H_Moes = H (3M/2)^(2/3) (PHYSICS.md 4)."""
+    """Circular contact: Venner H = h R/a^2 -> H_Moes = H (3M/2)^(2/3) (docs/theory.md section 13)."""
     return np.asarray(H) * (1.5 * np.asarray(M)) ** (2.0 / 3.0)
 
 
 def moes_to_venner_point(H_moes: Any, M: Any) -> Any:
-    """Circular contact: H_Moes -> Venner H = H_Moes (3M/2)^(-2/3) (PHYSICS.md 4)."""
+    """Circular contact: H_Moes -> Venner H = H_Moes (3M/2)^(-2/3) (docs/theory.md section 13)."""
     return np.asarray(H_moes) * (1.5 * np.asarray(M)) ** (-2.0 / 3.0)
 
 

@@ -3,7 +3,7 @@
 Question
 --------
 How close do the discrete compliance operators of ``bearing_fem.physics.elasticity`` come to the
-Hertz closed forms (PHYSICS.md 5.3), how fast does the error fall with the grid, and what
+Hertz closed forms (docs/theory.md section 14.3), how fast does the error fall with the grid, and what
 do building and applying them cost?
 
 Scene

@@ -1,9 +1,9 @@
-"""Seed 000's friction and heat formulas against the general solver and post-processor.
+"""Yachikov & Vostrikov's (2015) friction and heat formulas against the general solver and post-processor.
 
 Question
-    Do seed 000's formulas (7)-(9) evaluated on a :func:`bearing_fem.contacts.kodnir.solve`
+    Do Yachikov & Vostrikov's (2015) formulas (7)-(9) evaluated on a :func:`bearing_fem.contacts.kodnir.solve`
     result (rolling friction w_k = (B h*/2) I, heat Q = U_sum (w_k + (U_s/U_sum)^2
-    (B h*/6) J)) equal the general post-processor (PHYSICS.md section 6) applied to the
+    (B h*/6) J)) equal the general post-processor (docs/theory.md section 8.2) applied to the
     equivalent dimensional problem solved independently by the general line solver?
 
 Scene
@@ -48,7 +48,7 @@ R, E, ETA0, U_SUM, U_S, H_STAR = 0.01, 2.1e11, 0.1, 2.0, 0.2, 1e-6
 
 
 def crosscheck(C: float, b_alpha: float, nodes: int = 2001, z_b: float = 20.0) -> dict:
-    """Compare seed 000's friction/heat with the general solver for one case."""
+    """Compare Yachikov & Vostrikov's (2015) friction/heat with the general solver for one case."""
     k_res = kodnir.solve(C, b_alpha, z_b=z_b, nodes=nodes)
     out = {"C": C, "b_alpha": b_alpha, "kodnir_status": k_res.status}
     if not k_res.success:
@@ -84,16 +84,16 @@ def crosscheck(C: float, b_alpha: float, nodes: int = 2001, z_b: float = 20.0) -
                                        indicator_q=ind, load=load, gross_load=load,
                                        traction=Traction(model="newtonian"))
     k_load = B * B1 * float(np.trapezoid(k_res.k, k_res.z))
-    seed = kodnir.kodnir_friction_heat(k_res, H_STAR, B, k_load, U_SUM, U_S)
+    kod = kodnir.kodnir_friction_heat(k_res, H_STAR, B, k_load, U_SUM, U_S)
     out.update({
-        "rolling_friction_seed": seed.rolling_force,
+        "rolling_friction_kodnir": kod.rolling_force,
         "rolling_friction_general": gen["rolling_resistance"],
-        "heat_seed": seed.heat_power, "heat_general": gen["heat_power"],
-        "f_seed": seed.friction_coefficient, "f_general": 2 * gen["rolling_resistance"] / load,
-        "load_seed": k_load, "load_general": load,
+        "heat_kodnir": kod.heat_power, "heat_general": gen["heat_power"],
+        "f_kodnir": kod.friction_coefficient, "f_general": 2 * gen["rolling_resistance"] / load,
+        "load_kodnir": k_load, "load_general": load,
     })
     for key in ("rolling_friction", "heat", "f"):
-        out[f"{key}_deviation"] = out[f"{key}_general"] / out[f"{key}_seed"] - 1.0
+        out[f"{key}_deviation"] = out[f"{key}_general"] / out[f"{key}_kodnir"] - 1.0
     return out
 
 

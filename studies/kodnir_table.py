@@ -1,9 +1,9 @@
-"""Study: seed 000's dimensionless boundary problem over the Ratner range, by FE.
+"""Study: the dimensionless Kodnir boundary problem over the Ratner range, by FE.
 
 Question
     Does the FE solver (``bearing_fem.contacts.kodnir.solve``: P1, SUPG, Fischer-Burmeister
     cavitation, flux condition, continuation) solve every case of the grid
-    C in {0.6, 1, 5, 10, 40} x B alpha in {0, 4.5, 7, 12} at z_b = 20, where the seed's
+    C in {0.6, 1, 5, 10, 40} x B alpha in {0, 4.5, 7, 12} at z_b = 20, where the paper's
     shooting method failed for many (B alpha, C)? What are z_a, k_max, H_min, I and J, and
     how grid-converged are they (relative change from ``n`` nodes to ``2n - 1`` nodes)?
 

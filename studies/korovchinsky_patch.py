@@ -2,7 +2,7 @@
 
 Question
     How accurately does ``bearing_fem.physics.thermal.strip_source`` reproduce the corrected
-    Korovchinsky half-plane field (PHYSICS.md 5.4), how large is the error caused by
+    Korovchinsky half-plane field (docs/theory.md section 14.4), how large is the error caused by
     truncating the half-plane at radius R under each far-field condition, and what does a
     solve cost?
 

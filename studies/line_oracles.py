@@ -2,7 +2,7 @@
 
 Question
     How close are the rigid line-contact solutions to Martin's and Kapitsa's closed forms
-    (PHYSICS.md 5.1-5.2), what L2 order does P1 reach, and what does each solve cost?
+    (docs/theory.md sections 14.1-14.2), what L2 order does P1 reach, and what does each solve cost?
 
 Scene
     Rigid cylinder R = 10 mm, eta0 = 0.05 Pa s, u1 = u2 = 1 m/s, gap h0 = 1 um; default

@@ -27,7 +27,7 @@ Scene (the paper's table 2; assumptions stated)
 * Mill speeds 100, 300 and 756 rpm (stand 3 of the paper's mill runs at 0-756 rpm); quick:
   756 rpm with VG 220.
 * Film formulas at the most loaded roller's inner contact (the thinnest film), with the
-  mean speed in U = eta0 u_m/(E' R) (:data:`bearing_fem.formulas.SEED002_CONVENTIONS`: the
+  mean speed in U = eta0 u_m/(E' R) (:data:`bearing_fem.formulas.ZHIRKIN_CONVENTIONS`: the
   paper does not define its speed; the originals use the mean speed).
 
 Similarity arithmetic reproduced (``similarity``): the paper prints m_z = 2.05, m_i = 2,

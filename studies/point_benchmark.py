@@ -17,8 +17,8 @@ multigrid program's domain). Each grid n is solved from scratch with the solver'
 defaults: grid sequencing 65 -> ... -> n on the half grid y >= 0 (the scene is symmetric),
 then the error estimate from the two coarser levels and the whole-grid residual and
 post-processing. The multigrid program solves 512 x 512 intervals (6 levels, the node
-spacing of 513^2 here), start level 1, 3 W cycles: the setting of the timings in the
-issue that asked for this comparison.
+spacing of 513^2 here), start level 1, 3 W cycles: the reference setting of the multigrid
+timings.
 
 Method
 ------

@@ -1,8 +1,8 @@
-"""Seed 001 with elasticity: transient squeeze of an elastic ball, h0(t) = h0 (1 + eps cos wt).
+"""Kadochnikova's (2018) ball with elasticity: transient squeeze of an elastic ball, h0(t) = h0 (1 + eps cos wt).
 
 Question
 --------
-Seed 001 (Kadochnikova, after Kapitsa) computes the maximum film pressure of a ball whose
+Kadochnikova (2018 thesis, 209 ball bearing vibration, after Kapitsa) computes the maximum film pressure of a ball whose
 gap vibrates as h0(t) = h0 (1 + eps cos(omega t)) for RIGID bodies, where every instant
 is a quasi-steady wedge + squeeze problem without memory. How do elastic (half-space)
 bodies change p_max(t): its level, its phase relative to the gap, and the energy the film
@@ -16,10 +16,10 @@ Scene (stated, since the thesis is rigid)
 * Oil I-40A: eta0 = 68 mm^2/s * 900 kg/m^3 = 0.0612 Pa s, isoviscous (the rigid Barus
   solution of this case does not exist: alpha q_max > 1 for alpha = 2.2e-8 1/Pa, see
   ``bearing209.py``), incompressible, Reynolds cavitation.
-* Mean gap h0 = 0.1 um (the seed's middle gap), eps = 0.3 (seed value), u_m = 1 m/s (the
-  seed's sum speed 2 m/s).
+* Mean gap h0 = 0.1 um (the paper's middle gap), eps = 0.3 (the paper's value), u_m = 1 m/s (the
+  paper's sum speed 2 m/s).
 * omega = u_m / sqrt(2 rx h0) (printed; kHz range): one hydrodynamic length of rolling
-  per radian, where squeeze and wedge pressures are comparable. At the seed's own
+  per radian, where squeeze and wedge pressures are comparable. At the paper's own
   frequency (shaft rotation 2 v/d_i, v the sum speed, d_i = d_m - D_w) the squeeze term
   is a few hundred times weaker and the response should be quasi-static; the study
   checks that too (``slow`` case).
@@ -39,7 +39,7 @@ Expected outcome
 Elasticity lowers p_max substantially (the deformation is a sizeable fraction of the
 film at this gap); the transient lags the quasi-steady elastic response by a few degrees
 (memory); the second period repeats the first once the start-up has decayed; halving
-dt changes p_max by well under 1% (BDF2); at the seed's shaft frequency transient and
+dt changes p_max by well under 1% (BDF2); at the paper's shaft frequency transient and
 quasi-steady agree.
 
 Run ``python studies/point_elastic_squeeze.py [outdir] [--quick]``.
@@ -67,7 +67,7 @@ INNER_RACE_DIAMETER = 65e-3 - 12.7e-3    # m, d_i = d_m - D_w (bearing209.py)
 VISCOSITY = 68e-6 * 900.0                # Pa s, I-40A
 GAP = 0.1e-6                             # m, mean h0
 EPS = 0.3
-MEAN_SPEED = 1.0                         # m/s (seed sum speed 2 m/s)
+MEAN_SPEED = 1.0                         # m/s (the paper's sum speed 2 m/s)
 YOUNG, POISSON = 2.1e11, 0.3             # Pa, -
 
 
@@ -119,7 +119,7 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
     nodes, n_steps, periods : int, optional
         Override the grid (nodes per direction), steps per period and periods (2).
     slow : bool
-        Also run the seed's shaft frequency (one period, n_steps/4 steps).
+        Also run the paper's shaft frequency (one period, n_steps/4 steps).
     grid_check : bool, optional
         Steady elastic solves at the smallest gap on 65^2, 97^2, 129^2 (default: full
         run only).
@@ -212,14 +212,14 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
     slow_out = None
     if slow:
         v_sum = 2.0 * MEAN_SPEED
-        omega_seed = 2.0 * v_sum / INNER_RACE_DIAMETER
+        omega_shaft = 2.0 * v_sum / INNER_RACE_DIAMETER
         m = max(4, n_steps // 4)
         clock = time.perf_counter()
-        s_tr = solve_elastic_squeeze_series(elastic, eps=EPS, omega=omega_seed, n_steps=m)
-        s_qs = solve_elastic_squeeze_series(elastic, eps=EPS, omega=omega_seed, n_steps=m,
+        s_tr = solve_elastic_squeeze_series(elastic, eps=EPS, omega=omega_shaft, n_steps=m)
+        s_qs = solve_elastic_squeeze_series(elastic, eps=EPS, omega=omega_shaft, n_steps=m,
                                             scheme="quasi-steady")
-        slow_out = {"omega_rad_s": omega_seed, "steps": m,
-                    "omega_ratio": omega / omega_seed,
+        slow_out = {"omega_rad_s": omega_shaft, "steps": m,
+                    "omega_ratio": omega / omega_shaft,
                     "status": [s_tr.status, s_qs.status],
                     "max_rel_diff_transient_vs_quasi_steady":
                         float(np.max(np.abs(s_tr.p_max - s_qs.p_max)) / np.max(s_qs.p_max)),
@@ -266,7 +266,7 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
                               "transient_2dt": int(half.newton_iterations.sum())},
         "seconds": {"transient": t_transient, "quasi_steady": t_quasi,
                     "transient_2dt": t_half, "rigid": t_rigid},
-        "slow_seed_frequency": slow_out,
+        "slow_shaft_frequency": slow_out,
         "status": tr.status, "message": tr.message, "files": paths,
     }
     h = harmonics
@@ -291,7 +291,7 @@ def main(outdir, quick: bool = False, *, nodes: int | None = None,
     lines.append(f"time step: dt vs 2 dt differ by {100 * dt_change:.2f}% of max p_max "
                  f"(BDF2 error at dt ~ 1/3 of that)")
     if slow_out:
-        lines.append(f"seed frequency omega = {slow_out['omega_rad_s']:.1f} rad/s "
+        lines.append(f"shaft frequency omega = {slow_out['omega_rad_s']:.1f} rad/s "
                      f"({slow_out['omega_ratio']:.0f} times lower): transient vs "
                      f"quasi-steady elastic p_max differ by "
                      f"{100 * slow_out['max_rel_diff_transient_vs_quasi_steady']:.3f}%")

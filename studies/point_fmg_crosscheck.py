@@ -29,7 +29,7 @@ Scene
 -----
 :func:`point_ehl_map.moes_scene` (the map's scenes: Barus, incompressible, Reynolds
 cavitation, half-space, pure rolling) on the multigrid domain and grid; the films compared in
-Moes units H = h / (rx sqrt(U_sum)) (PHYSICS.md 4): H_min (minimum over the grid) and
+Moes units H = h / (rx sqrt(U_sum)) (docs/theory.md section 13): H_min (minimum over the grid) and
 H_c (at the contact centre), with Hamrock-Dowson (mean speed) in the same units.
 
 Expected outcome

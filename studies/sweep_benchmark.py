@@ -43,7 +43,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bearing_fem as bf  # noqa: E402
 from point_ehl_map import GRIDS, map_cases, moes_scene  # noqa: E402
 
-#: Target of the issue: sweep wall time / serial wall time on 2 workers.
+#: Design target: sweep wall time / serial wall time on 2 workers.
 TARGET_RATIO = 0.6
 WORKERS = 2
 

@@ -1,4 +1,4 @@
-"""Closed-form oracles of bearing_fem.analytic, Section A (PHYSICS.md 5.1-5.3).
+"""Closed-form oracles of bearing_fem.analytic, Section A (docs/theory.md sections 14.1-14.3).
 
 Each closed form is checked against independent numerical evidence: finite-difference
 residuals of the Reynolds equation it claims to solve, quadrature of loads, direct
@@ -155,7 +155,7 @@ def test_kapitsa_line_solves_reynolds_and_limits(dh0dt):
 
 
 def test_kapitsa_line_full_sommerfeld_forms():
-    """PHYSICS.md 5.2: p = -4 P0 sin(g) cos^3(g), dp/dx = 0 at h = 4 h0/3, zero load."""
+    """docs/theory.md section 14.2: p = -4 P0 sin(g) cos^3(g), dp/dx = 0 at h = 4 h0/3, zero load."""
     radius = RX
     length = np.sqrt(2 * radius * H0)
     p0 = ETA * U_M * length / H0**2
@@ -201,7 +201,7 @@ def test_kapitsa_wedge_closed_forms_and_squeeze_load():
     a_coef, b_coef = analytic.kapitsa_point_coefficients(ETA, U_M, A_CURV, B_CURV, -1e-6)
     q_max = analytic.kapitsa_point_max_reduced(H0, A_CURV, B_CURV, ETA, U_M)
     assert_allclose(q_max, 9 * abs(a_coef) / 16 / np.sqrt(3 * A_CURV) * H0**-1.5, rtol=1e-13,
-                    err_msg="PHYSICS.md 5.1 wedge maximum, round-off")
+                    err_msg="docs/theory.md section 14.1 wedge maximum, round-off")
     # squeeze load B pi/(sqrt(ab) h0) against quadrature in elliptic polar coordinates
     # x = r cos(t)/sqrt(a), y = r sin(t)/sqrt(b) (Jacobian r/sqrt(ab)); the pressure is
     # evaluated by the oracle itself along two different rays t
@@ -306,7 +306,7 @@ def test_martin_outlet_angle_is_a_root():
 # ----------------------------------------------------------------------------- Hertz
 def test_hertz_line_gap_against_plane_strain_quadrature():
     """x^2/(2R) + v(x), v = -(4/(pi E')) int p ln|x - s| ds, is flat inside and equals
-    hertz_line_gap_outside outside (PHYSICS.md 2 and 5.3)."""
+    hertz_line_gap_outside outside (docs/theory.md sections 11 and 14.3)."""
     w, radius, e_prime = 2e5, RX, 2.2e11
     b, p_h = units.hertz_line(w, radius, e_prime)
 

@@ -112,6 +112,6 @@ def test_film_formulas_table():
     np.testing.assert_allclose(f["Dowson (Zhirkin et al.)"]["h_min"],
                                f["Dowson-Higginson"]["h_min"], rtol=1e-12,
                                err_msg="Zhirkin's 'Dowson' set is Dowson-Higginson")
-    assert len([k for k in f if "Zhirkin" in k]) == len(formulas.SEED002_FITS)
+    assert len([k for k in f if "Zhirkin" in k]) == len(formulas.ZHIRKIN_FITS)
     p = film_formulas("point", 2000.0, 0.005, 2.3e11, 0.03, 5.0, 2e-8, ry=0.16)
     assert set(p) == {"Nijenbanning-Venner-Moes", "Hamrock-Dowson"}

@@ -12,7 +12,7 @@ from bearing_fem import formulas
 from bearing_fem.bearing import Bearing, load_example, solve_bearing
 from bearing_fem.errors import SceneError
 
-#: Keys of bearing_summary.json required by the interface (issue 14, item 7).
+#: Keys of bearing_summary.json that the bearing interface promises (docs/bearing.md).
 REQUIRED_KEYS = ("status", "success", "message", "warnings", "wall_time_s", "friction_torque",
                  "heat_power", "h_min", "p_max", "radial_load", "axial_load", "inner_rpm",
                  "elements", "empirical")

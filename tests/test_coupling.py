@@ -79,7 +79,7 @@ def test_jaeger_uniform_band_maximum():
     expected = 2.0 * math.sqrt(2.0 / math.pi) * q * math.sqrt(b) / math.sqrt(lam * rho * c * V)
     np.testing.assert_allclose(T.max(), expected, rtol=1e-12,
                                err_msg="uniform band: T_max = 2 sqrt(2/pi) q sqrt(b)/sqrt(K rho c V)"
-                                       " (= 1.596..., PHYSICS.md 5.4) at the trailing edge")
+                                       " (= 1.596..., docs/theory.md section 14.4) at the trailing edge")
     assert np.argmax(T) == x.size - 1
 
 

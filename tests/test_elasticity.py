@@ -1,6 +1,6 @@
 """Tests of the compliance operators (bearing_fem.physics.elasticity).
 
-Oracles: the Hertz dry limits of PHYSICS.md 5.3 (closed forms evaluated here, nothing
+Oracles: the Hertz dry limits of docs/theory.md section 14.3 (closed forms evaluated here, nothing
 tabulated), independent quadrature of the influence integrals, a direct O(N^2) double
 sum against the FFT product, and the observed convergence order of the point-contact
 Hertz error.
@@ -29,7 +29,7 @@ from bearing_fem.physics.elasticity import (
 )
 
 # ----------------------------------------------------------------------------------------
-# Hertz reference formulas (PHYSICS.md 4 and 5.3). Taken from bearing_fem.analytic when
+# Hertz reference formulas (docs/theory.md sections 13 and 14.3). Taken from bearing_fem.analytic when
 # that module provides them, otherwise evaluated from the closed forms here.
 # ----------------------------------------------------------------------------------------
 
@@ -63,13 +63,13 @@ POINT_LOAD = 50.0     # N
 
 
 def line_hertz():
-    """Hertz half-width b (m) and maximum pressure p_h (Pa), PHYSICS.md 4."""
+    """Hertz half-width b (m) and maximum pressure p_h (Pa), docs/theory.md section 13."""
     b = math.sqrt(8.0 * LINE_LOAD * RADIUS / (math.pi * E_PRIME))
     return b, E_PRIME * b / (4.0 * RADIUS)
 
 
 def point_hertz():
-    """Hertz radius a (m), maximum pressure p_h (Pa), approach delta (m), PHYSICS.md 4."""
+    """Hertz radius a (m), maximum pressure p_h (Pa), approach delta (m), docs/theory.md section 13."""
     a = (3.0 * POINT_LOAD * RADIUS / (2.0 * E_PRIME)) ** (1.0 / 3.0)
     return a, a * E_PRIME / (math.pi * RADIUS), a * a / RADIUS
 
@@ -109,7 +109,7 @@ def test_line_hertz_limit():
     inside = np.abs(X) < 1.0
     np.testing.assert_array_less(
         np.ptp(gap[inside]), 0.01 * deflection,
-        err_msg="inside the Hertz zone x^2/(2R) + v must be flat (PHYSICS.md 5.3); 1% of the "
+        err_msg="inside the Hertz zone x^2/(2R) + v must be flat (docs/theory.md section 14.3); 1% of the "
                 "central deflection allows the O(D^1.5) error of sampling the sqrt edge")
     outside = ~inside
     expected = hertz_line_gap_outside(x[outside], b, RADIUS)
@@ -176,7 +176,7 @@ def test_square_self_term():
     D = 3.7e-6
     expected = 4.0 * D * math.log(1.0 + math.sqrt(2.0))
     np.testing.assert_allclose(point_kernel(0.0, 0.0, D, D), expected, rtol=1e-14,
-                               err_msg="square self term 4 D ln(1 + sqrt 2), PHYSICS.md 3; "
+                               err_msg="square self term 4 D ln(1 + sqrt 2), docs/theory.md section 12; "
                                        "closed form, so only rounding")
     x = np.arange(7) * D
     op = HalfSpacePoint(x, x, E_PRIME)
@@ -244,7 +244,7 @@ def test_line_kernel_far_form_matches_direct_form():
                                err_msg="the cancellation-free far form must equal the "
                                        "textbook form where the latter is still accurate")
     np.testing.assert_allclose(line_kernel(0.0, D), D * (math.log(D / 2) - 1.0), rtol=1e-14,
-                               err_msg="K(0) = D (ln(D/2) - 1), PHYSICS.md 3")
+                               err_msg="K(0) = D (ln(D/2) - 1), docs/theory.md section 12")
     np.testing.assert_allclose(line_kernel(0.5, D), D * math.log(D) - D, atol=1e-15,
                                err_msg="at d = D/2 the 0 ln 0 = 0 limit must be taken")
 
@@ -413,7 +413,7 @@ def test_kodnir_local_coefficient():
     w, R, E = 4.6e5, 0.02, 2.1e11
     b_h = 1.52 * math.sqrt(w * R / E)
     np.testing.assert_allclose(kodnir_local_coefficient(w, R, E), 2.54 * b_h / E, rtol=1e-15,
-                               err_msg="A'/E with A' = 2.54 b_H, b_H = 1.52 sqrt(wR/E), seed 000")
+                               err_msg="A'/E with A' = 2.54 b_H, b_H = 1.52 sqrt(wR/E), Yachikov & Vostrikov 2015")
     ratio = kodnir_local_coefficient(4 * w, R, E) / kodnir_local_coefficient(w, R, E)
     np.testing.assert_allclose(ratio, 2.0, rtol=1e-14,
                                err_msg="A'/E grows as sqrt(load)")

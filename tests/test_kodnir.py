@@ -1,4 +1,4 @@
-"""Tests of bearing_fem.contacts.kodnir: seed 000's dimensionless problem (4)-(6) by FE.
+"""Tests of bearing_fem.contacts.kodnir: the dimensionless Kodnir problem (4)-(6) by FE.
 
 Oracles are computed here from closed forms (Martin, Kapitsa/Barus transform), never
 hard-coded. Grids are small so the whole file runs in well under a minute.
@@ -21,7 +21,7 @@ NODES, COARSE = 1201, 201
 def _martin_k(z: np.ndarray) -> np.ndarray:
     """Martin's rigid isoviscous solution in Kodnir variables.
 
-    Martin (PHYSICS 5.2): x along the motion, X = x/sqrt(2 R h0) = tan g, h* = h0/cos^2 g_c.
+    Martin (docs/theory.md section 14.2): x along the motion, X = x/sqrt(2 R h0) = tan g, h* = h0/cos^2 g_c.
     Kodnir: z = -x/B1 with B1 = sqrt(2 R h*), so tan g = -z/cos g_c; k = p/B with
     B = 12 eta0 u_m B1/h*^2 and P0 = eta0 u_m sqrt(2 R h0)/h0^2, hence
     k = (p/P0) / (12 cos^3 g_c); zero downstream of the outlet z_a = -sin g_c.
@@ -69,7 +69,7 @@ def test_martin_limit(martin):
 
 def test_barus_limit_kapitsa_transform(martin):
     """C = 0, b_alpha > 0: k = -ln(1 - b_alpha q)/b_alpha with q the isoviscous solution,
-    same outlet (PHYSICS 5.1/5.2)."""
+    same outlet (docs/theory.md sections 14.1/14.2)."""
     qmax = _martin_k(np.linspace(-0.5, 2.0, 20001)).max()
     b_alpha = 0.6 / qmax   # b_alpha q_max = 0.6 < 1: a solution exists
     r = K.solve(0.0, b_alpha, z_b=20.0, nodes=NODES, coarse_nodes=COARSE)
@@ -87,7 +87,7 @@ def test_barus_limit_kapitsa_transform(martin):
 
 
 def test_ode_satisfied_at_nodes(elastic):
-    """The seed's eq (4) in flux form, H^3 exp(-b_alpha k) dk/dz = 1 - H, at the nodes of
+    """The paper's eq (4) in flux form, H^3 exp(-b_alpha k) dk/dz = 1 - H, at the nodes of
     the pressurised zone (nodal dk/dz: average of the two element slopes)."""
     r = elastic
     assert r.success, r.message
@@ -102,10 +102,10 @@ def test_ode_satisfied_at_nodes(elastic):
     err = np.max(np.abs(lhs - rhs))
     assert err < 20 * dz**2 + 1e-6 and err < 2e-3, (
         f"flux form of eq 4 violated by {err:.2e} (dz = {dz:.2e}); expected O(dz^2)")
-    # and in the seed's own form, where (1 - H) is not tiny
+    # and in the paper's own form, where (1 - H) is not tiny
     zone = sel[np.abs(1.0 - H[sel]) > 0.05]
-    seed = (1.0 - H[zone]) / H[zone] ** 3 * np.exp(r.b_alpha * k[zone])
-    np.testing.assert_allclose(kp[zone - 1], seed, rtol=1e-2, atol=1e-3 * np.max(np.abs(seed)),
+    paper = (1.0 - H[zone]) / H[zone] ** 3 * np.exp(r.b_alpha * k[zone])
+    np.testing.assert_allclose(kp[zone - 1], paper, rtol=1e-2, atol=1e-3 * np.max(np.abs(paper)),
                                err_msg="dk/dz = (1 - H)/H^3 exp(B alpha k) at the nodes, "
                                        "central-difference accuracy")
     np.testing.assert_allclose(r.flux, 1.0, atol=1e-9, err_msg="the flux condition Q = 1")
@@ -151,12 +151,12 @@ def test_friction_heat_consistency(elastic):
     out = K.kodnir_friction_heat(r, h_star=1e-6, B=1e8, q_H=1e6, sum_speed=10.0,
                                  sliding_speed=1.0)
     np.testing.assert_allclose(out.rolling_force, 0.5 * 1e8 * 1e-6 * r.friction_integral,
-                               rtol=1e-14, err_msg="w_k = (B h*/2) I (seed eq 8)")
+                               rtol=1e-14, err_msg="w_k = (B h*/2) I (Yachikov & Vostrikov 2015, eq 8)")
     np.testing.assert_allclose(out.friction_coefficient, 2 * out.rolling_force / 1e6,
-                               rtol=1e-14, err_msg="f = 2 w_k/q_H (seed eq 7)")
+                               rtol=1e-14, err_msg="f = 2 w_k/q_H (Yachikov & Vostrikov 2015, eq 7)")
     np.testing.assert_allclose(out.heat_power, 10.0 * (out.rolling_force + 0.01 * 1e8 * 1e-6
                                                        / 6 * r.couette_integral),
-                               rtol=1e-14, err_msg="seed eq 9")
+                               rtol=1e-14, err_msg="Yachikov & Vostrikov (2015) eq 9")
     # Poiseuille energy identity in Kodnir variables: int eps k'^2 = int (1 - H) k' = I
     z, k, H = r.z, r.k, r.H
     zm = 0.5 * (z[1:] + z[:-1])
@@ -165,7 +165,7 @@ def test_friction_heat_consistency(elastic):
     s = np.diff(k) / np.diff(z)
     diss = np.sum(Hm**3 * np.exp(-r.b_alpha * km) * s**2 * np.diff(z) * (zm > r.z_a))
     np.testing.assert_allclose(diss, r.friction_integral, rtol=2e-2,
-                               err_msg="Poiseuille heat = U_sum w_k (PHYSICS 6), midpoint rule")
+                               err_msg="Poiseuille heat = U_sum w_k (docs/theory.md section 15), midpoint rule")
 
 
 def test_scales_roundtrip():

@@ -1,4 +1,4 @@
-"""Seed 000's friction/heat formulas (7)-(9) vs the general solver and post-processor."""
+"""Yachikov & Vostrikov's (2015) friction/heat formulas (7)-(9) vs the general solver and post-processor."""
 from __future__ import annotations
 
 import sys
@@ -11,10 +11,10 @@ import kodnir_crosscheck  # noqa: E402
 
 
 @pytest.mark.parametrize("C, b_alpha", [(1.0, 0.0), (5.0, 4.5), (10.0, 7.0)])
-def test_seed000_formulas_match_general_post_processor(C, b_alpha):
+def test_kodnir_formulas_match_general_post_processor(C, b_alpha):
     r = kodnir_crosscheck.crosscheck(C, b_alpha, nodes=801)
     assert r["kodnir_status"] == "converged" and r["newton_status"] == "converged", r
     for key in ("rolling_friction", "heat", "f"):
         assert abs(r[f"{key}_deviation"]) < 5e-3, (
-            f"acceptance: {key} of seed 000's formulas within 0.5% of the general "
+            f"acceptance: {key} of Yachikov & Vostrikov's (2015) formulas within 0.5% of the general "
             f"post-processor on the equivalent dimensional solve, got {r[f'{key}_deviation']:.2e}")

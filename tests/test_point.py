@@ -1,6 +1,6 @@
 """Point/elliptical contacts (bearing_fem.contacts.point): Kapitsa oracles, convergence, status.
 
-The rigid oracles (PHYSICS.md 5.1) are imposed as Dirichlet data on the finite domain,
+The rigid oracles (docs/theory.md section 14.1) are imposed as Dirichlet data on the finite domain,
 so only the discretisation error is measured.
 """
 from __future__ import annotations
@@ -60,7 +60,7 @@ def test_kapitsa_peak_default_mesh(rx, ry, dh0dt, ratio):
     p_exact = float(an.barus_from_reduced(qm, piezo))
     np.testing.assert_allclose(res.quantities["p_max"], p_exact, rtol=5e-3,
                                err_msg="p_max within 0.5% of Kapitsa on the default graded "
-                                       "161^2 mesh (issue acceptance; the Barus case at "
+                                       "161^2 mesh (design target; the Barus case at "
                                        "alpha q_max = 0.9 amplifies q errors 10x)")
     assert np.all(np.isfinite(res.pressure))
     # the rigid film is the prescribed gap plus the geometry
@@ -139,7 +139,7 @@ def test_squeeze_series_matches_kapitsa(tmp_path):
     for g, rate, pm in zip(series.gap, series.squeeze_velocity, series.p_max):
         exact = float(an.kapitsa_point_max_reduced(g, a, b, ETA0, U_M, rate))
         np.testing.assert_allclose(pm, exact, rtol=1e-2,
-                                   err_msg="each step within 1% of Kapitsa (issue acceptance; "
+                                   err_msg="each step within 1% of Kapitsa (design target; "
                                            "zero boundary data on +-30 contact lengths "
                                            "truncates the 1/r^3 far field)")
     np.testing.assert_allclose(series.gap, H0 * (1 + eps * np.cos(omega * series.times)))
@@ -186,7 +186,7 @@ def test_elastic_point_converges_near_nvm(M, L, ry_over_rx):
                                 scene.kinematics.mean_speed, lub.piezo)
     np.testing.assert_allclose(res.quantities["h_central"], hc, rtol=0.10,
                                err_msg="central film within 10% of Nijenbanning-Venner-Moes "
-                                       "(issue acceptance; 65^2 grid, first-order upwind "
+                                       "(design target; 65^2 grid, first-order upwind "
                                        "wedge in the Hertz zone, NVM itself is a fit)")
     np.testing.assert_allclose(res.quantities["load"], scene.load.force, rtol=1e-6,
                                err_msg="load row satisfied to the Newton tolerance")
@@ -291,7 +291,7 @@ def test_point_ehl_map_study(tmp_path, load_study):
 
 
 def test_point_hard_cases_study_quick(tmp_path, load_study):
-    # the three cases a classic multigrid code could not solve untuned (issue 4, Why)
+    # the three cases a classic multigrid code could not solve untuned
     out = load_study("point_hard_cases").main(tmp_path, quick=True)
     assert len(out["cases"]) == 3
     for c in out["cases"]:

@@ -1,6 +1,6 @@
 """Tests of the thermal FE patch (bearing_fem.physics.thermal) and its oracles (analytic Section B).
 
-Oracles are computed from the closed forms in PHYSICS.md 5.4 (bearing_fem.analytic);
+Oracles are computed from the closed forms in docs/theory.md section 14.4 (bearing_fem.analytic);
 no reference number is typed in. Every tolerance states its reason.
 """
 from __future__ import annotations
@@ -69,7 +69,7 @@ def test_corrected_closed_form_is_the_log_potential():
 
 
 def test_closed_form_flux_and_special_forms():
-    """-lambda dT/dy at y -> 0 reproduces q(x); the seed's coefficient-1 field does not."""
+    """-lambda dT/dy at y -> 0 reproduces q(x); Sanko's printed coefficient-1 field does not."""
     Tn = A.korovchinsky_characteristic_temperature(A_HALF, Q_MAX, LAM)
     xs = np.array([0.0, 0.4, 0.8, 0.95, 1.5])
     h = 1e-6
@@ -78,13 +78,13 @@ def test_closed_form_flux_and_special_forms():
     np.testing.assert_allclose(-LAM * dTdy, q, atol=2e-3 * Q_MAX,
                                err_msg="one-sided difference, O(h^(1/2)) near the edge")
 
-    # seed 004 eq. (7): every quadratic coefficient 1 instead of 1/2 -> wrong flux
-    def seed(xp, yp):
+    # Sanko's printed eq. (7): every quadratic coefficient 1 instead of 1/2 -> wrong flux
+    def printed(xp, yp):
         t = A.korovchinsky_root(xp, yp)
         st, s1 = np.sqrt(t), np.sqrt(1 + t)
         return -0.5 * np.log(0.5 * (s1 + st)) - (1 - st / s1) * xp**2 - (s1 - st) * yp**2 / st
-    seed_flux = -LAM * (seed(xs[:4], 2 * h) - seed(xs[:4], h)) / h * Tn / A_HALF
-    assert np.max(np.abs(seed_flux - q[:4])) > 0.1 * Q_MAX, "seed form must be detectably wrong"
+    printed_flux = -LAM * (printed(xs[:4], 2 * h) - printed(xs[:4], h)) / h * Tn / A_HALF
+    assert np.max(np.abs(printed_flux - q[:4])) > 0.1 * Q_MAX, "the printed form must be detectably wrong"
 
     s = np.linspace(0, 4, 41)
     np.testing.assert_allclose(A.korovchinsky_surface(s), A.korovchinsky_shape(s, 0 * s),
@@ -125,7 +125,7 @@ def test_moving_source_closed_forms():
 
 @pytest.mark.parametrize("far_field", ["dirichlet", "robin"])
 def test_fe_differences_match_korovchinsky(far_field):
-    """T(0,0) - T(x,y) at the acceptance points within 1 % of T_n (PHYSICS.md 5.4)."""
+    """T(0,0) - T(x,y) at the acceptance points within 1 % of T_n (docs/theory.md section 14.4)."""
     r = th.strip_source(A_HALF, Q_MAX, LAM, radius=50 * A_HALF, far_field=far_field,
                         n_across=32)
     x, y = _points()
@@ -224,7 +224,7 @@ def test_to_meshio(tmp_path):
 
 @pytest.mark.parametrize("source", ["exact", "fe"])
 def test_two_point_reconstruction(source, fe_default):
-    """Recover theta and T_max within 1 % from two temperatures (seed 004, corrected)."""
+    """Recover theta and T_max within 1 % from two temperatures (Sanko, corrected)."""
     offset = 37.0                                   # an arbitrary measured datum, K
     p = [(0.0, 2.0 * A_HALF), (1.5 * A_HALF, 0.0)]
     if source == "exact":

@@ -21,9 +21,9 @@ from bearing_fem.contacts.transient import (BDF_COEFFICIENTS, solve_elastic_gap,
 
 U_M = 1.0                 # m/s
 H0 = 1e-7                 # m, mean gap
-R_BALL = 6.35e-3          # m, ball of bearing 209 on a plane (seed 001)
+R_BALL = 6.35e-3          # m, ball of bearing 209 on a plane (Kadochnikova 2018)
 E_STEEL = 2.26e11         # Pa, E' of two steel bodies
-ETA_I40A = 0.0612         # Pa s, oil I-40A (seed 001): strongly elastic at this gap
+ETA_I40A = 0.0612         # Pa s, oil I-40A (Kadochnikova 2018): strongly elastic at this gap
 
 
 def scene(*, rx=R_BALL, ry=R_BALL, e_prime=E_STEEL, viscosity=ETA_I40A,
@@ -72,7 +72,7 @@ def test_stiff_transient_reproduces_kapitsa_each_step(tmp_path):
                     for g, r in zip(series.gap, series.squeeze_velocity)])
     np.testing.assert_allclose(series.p_max, kap, rtol=1e-2,
                                err_msg="each step's p_max within 1% of Kapitsa with the "
-                                       "exact dh0/dt (issue acceptance): measured 0.71% "
+                                       "exact dh0/dt (design target): measured 0.71% "
                                        "= nodal sampling of the peak on 57^2 over +-3 "
                                        "lengths (~0.4%) + BDF2 rate error (omega dt)^2/3 "
                                        "of the squeeze part")

@@ -1,6 +1,6 @@
-"""Scalings (bearing_fem.units) and film fits (bearing_fem.formulas), PHYSICS.md 1, 4, 7.
+"""Scalings (bearing_fem.units) and film fits (bearing_fem.formulas), docs/theory.md sections 1, 13, 16.
 
-Every check compares against an independent route (a different formula of PHYSICS.md,
+Every check compares against an independent route (a different formula of docs/theory.md,
 quadrature, an analytic oracle, a round trip), never against pasted numbers.
 """
 from __future__ import annotations
@@ -55,7 +55,7 @@ def test_hertz_line_two_forms_and_load_integral():
     w, radius, e_prime = 2.0e5, 0.012, 2.2e11
     b, p_h = units.hertz_line(w, radius, e_prime)
     assert_allclose(p_h, e_prime * b / (4 * radius), rtol=1e-13,
-                    err_msg="PHYSICS.md 4 gives p_h both as 2w/(pi b) and E' b/(4R)")
+                    err_msg="docs/theory.md section 13 gives p_h both as 2w/(pi b) and E' b/(4R)")
     load, _ = quad(lambda x: analytic.hertz_line_pressure(x, b, p_h), -b, b,
                    epsabs=0, epsrel=1e-12)
     assert_allclose(load, w, rtol=1e-9, err_msg="quadrature of the semi-ellipse, 1e-12 asked")
@@ -68,9 +68,9 @@ def test_hertz_point_circular_exact_forms():
     assert_allclose(hp.a_x**3, 1.5 * force * radius / e_prime, rtol=1e-13,
                     err_msg="circular Hertz radius, round-off only")
     assert_allclose(hp.p_h, hp.a_x * e_prime / (np.pi * radius), rtol=1e-13,
-                    err_msg="PHYSICS.md 4: p_h = 3F/(2 pi a^2) = a E'/(pi R)")
+                    err_msg="docs/theory.md section 13: p_h = 3F/(2 pi a^2) = a E'/(pi R)")
     assert_allclose(hp.delta, hp.a_x**2 / radius, rtol=1e-13,
-                    err_msg="PHYSICS.md 4: delta = a^2/R; delta comes from the elliptic "
+                    err_msg="docs/theory.md section 13: delta = a^2/R; delta comes from the elliptic "
                             "branch formula 2 p_h a K(0)/E', so this cross-checks it")
 
 
@@ -101,7 +101,7 @@ def test_hertz_point_axis_swap_and_hamrock_k():
 
 # --------------------------------------------------------------------------- Moes groups
 def _raw_line_groups(w, radius, e_prime, eta, u_m, alpha):
-    """Moes groups written out from PHYSICS.md 4 (independent of units.moes_line)."""
+    """Moes groups written out from docs/theory.md section 13 (independent of units.moes_line)."""
     u_sum = 2 * eta * u_m / (e_prime * radius)
     return w / (e_prime * radius) / np.sqrt(u_sum), alpha * e_prime * u_sum**0.25, u_sum
 
@@ -113,7 +113,7 @@ def test_moes_line_groups_and_alpha_ph():
     assert_allclose([g["M"], g["L"], g["U_sum"]], [m_ref, l_ref, u_sum], rtol=1e-13,
                     err_msg="same definitions, round-off only")
     assert_allclose(g["alpha_ph"], g["L"] * np.sqrt(g["M"] / (2 * np.pi)), rtol=1e-12,
-                    err_msg="PHYSICS.md 4 identity alpha p_h = L sqrt(M/(2 pi))")
+                    err_msg="docs/theory.md section 13 identity alpha p_h = L sqrt(M/(2 pi))")
 
 
 def test_venner_moes_line_conversion_from_a_film():
@@ -139,7 +139,7 @@ def test_venner_moes_point_conversion_from_a_film():
     assert_allclose(units.moes_to_venner_point(h_moes, g["M"]), h_venner, rtol=1e-12,
                     err_msg="inverse conversion, round-off only")
     assert_allclose(g["alpha_ph"], g["L"] / np.pi * (1.5 * g["M"]) ** (1 / 3), rtol=1e-12,
-                    err_msg="PHYSICS.md 4 identity alpha p_h = (L/pi)(3M/2)^(1/3)")
+                    err_msg="docs/theory.md section 13 identity alpha p_h = (L/pi)(3M/2)^(1/3)")
 
 
 @pytest.mark.parametrize("fix", [{}, {"viscosity": 0.08}, {"mean_speed": 3.0}])
@@ -228,15 +228,15 @@ def test_nijenbanning_elliptic_reduces_and_is_vectorised():
                   > formulas.nijenbanning_central(m, 10.0, 1.0))
 
 
-def test_seed002_fits():
+def test_zhirkin_fits():
     u, g, w = 1e-11, 4500.0, 5e-5
-    assert_allclose(formulas.power_law_film(u, g, w, formulas.SEED002_FITS["Dowson"]),
+    assert_allclose(formulas.power_law_film(u, g, w, formulas.ZHIRKIN_FITS["Dowson"]),
                     formulas.dowson_higginson_line_min(u, g, w), rtol=1e-14,
-                    err_msg="seed 002's Dowson row is the Dowson-Higginson formula")
-    k, a, b, c = formulas.SEED002_FITS["Ertel-Grubin"]
+                    err_msg="the Dowson row of Zhirkin et al. is the Dowson-Higginson formula")
+    k, a, b, c = formulas.ZHIRKIN_FITS["Ertel-Grubin"]
     assert_allclose([a, b, c], [8 / 11, 8 / 11, -1 / 11], atol=5e-4,
                     err_msg="Grubin's exponents 8/11, -1/11 printed to 3 decimals")
-    assert set(formulas.SEED002_FITS) == set(formulas.SEED002_CONVENTIONS)
+    assert set(formulas.ZHIRKIN_FITS) == set(formulas.ZHIRKIN_CONVENTIONS)
     with pytest.raises(ValueError, match="coeffs"):
         formulas.power_law_film(u, g, w, (1.0, 2.0))
 

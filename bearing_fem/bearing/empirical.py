@@ -400,7 +400,7 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
     Line contacts (``load`` in N/m): Moes central, Pan-Hamrock (minimum and central),
     Dowson-Higginson minimum and the five sets quoted by Zhirkin et al. (minimum films
     H = K U^a G^b W^c in Hamrock's mean-speed groups; see
-    :data:`bearing_fem.formulas.SEED002_CONVENTIONS`). Point contacts (``load`` in N):
+    :data:`bearing_fem.formulas.ZHIRKIN_CONVENTIONS`). Point contacts (``load`` in N):
     Nijenbanning-Venner-Moes central and Hamrock-Dowson (minimum and central). An
     isoviscous contact (alpha = 0) gets only the Moes-type fits (the others need alpha E' > 0).
 
@@ -426,10 +426,10 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
         u = viscosity * mean_speed / (e_prime * rx)
         g = piezo * e_prime
         w = load / (e_prime * rx)
-        for name, coeffs in formulas.SEED002_FITS.items():
+        for name, coeffs in formulas.ZHIRKIN_FITS.items():
             out[f"{name} (Zhirkin et al.)"] = {
                 "h_min": float(formulas.power_law_film(u, g, w, coeffs)) * rx,
-                "h_central": None, "convention": formulas.SEED002_CONVENTIONS[name]}
+                "h_central": None, "convention": formulas.ZHIRKIN_CONVENTIONS[name]}
         return out
     if ry is None:
         raise ValueError("ry (m) is required for a point contact")

@@ -1,6 +1,7 @@
-"""Seed 000's dimensionless EHL boundary problem (Kodnir), solved by finite elements.
+"""Kodnir's dimensionless EHL boundary problem (Yachikov & Vostrikov 2015), solved by finite elements.
 
-Seed 000 (Yachikov & Vostrikov 2015, eqs 4-6) writes the isothermal, Newtonian, Barus,
+Yachikov & Vostrikov (2015, heat power of the SKF NNCF 5040 CV roller bearing, eqs 4-6)
+write the isothermal, Newtonian, Barus,
 locally compliant line contact as
 
     dk/dz = (1 - H)/H^3 exp(B alpha k),     H = 1 - z_a^2 + z^2 + C k,           (4), (5)
@@ -9,7 +10,7 @@ locally compliant line contact as
 and solves it by shooting on z_a. Here the same problem is solved by P1 finite elements
 (scikit-fem), semismooth Newton and continuation, with no shooting.
 
-Symbols (all DIMENSIONLESS; PHYSICS.md section 4, "Seed 000 (Kodnir) variables"):
+Symbols (all DIMENSIONLESS; docs/theory.md section 13, "Kodnir variables"):
 
 =========  =====================================================================
 z          x/B1, x AGAINST the motion (inlet at z_b = +20, outlet z_a < 0)
@@ -39,7 +40,7 @@ of F), so the Galerkin equations make the element-mean flux the same constant Q 
 pressurised element (discrete mass conservation), and Q is the reaction (weak residual)
 at the Dirichlet inlet node z_b. The extra scalar equation that determines the extra
 unknown H_off is Q = R_N = 1: the film at the outlet, where dk/dz = 0, equals h*
-(H = 1) -- exactly the seed's condition H(z_a) = 1 of eq (6). Then z_a = -sqrt(1 - H_off)
+(H = 1) -- exactly the paper's condition H(z_a) = 1 of eq (6). Then z_a = -sqrt(1 - H_off)
 by eq (5): the outlet position is a continuous function of the unknowns (sub-grid).
 The free-boundary position (where k drops to 0) is reported separately, from a linear
 extrapolation of sqrt(k) (k ~ (z - z_a)^2 near a Reynolds outlet) through the two first
@@ -55,7 +56,7 @@ element strong residual S = -d(eps)/dz dk/dz - dH/dz); consistent (S = 0 for the
 solution) and absent when C = 0. The derivatives of the pointwise flux are taken by the
 complex-step method.
 
-Post-processing (seed 000 eqs 8-9): I = int_{z_a}^{z_b} (1 - H) dk/dz dz and
+Post-processing (Yachikov & Vostrikov 2015, eqs 8-9): I = int_{z_a}^{z_b} (1 - H) dk/dz dz and
 J = int_{z_a}^{z_b} exp(b_alpha k)/H dz; dimensional friction and heat by
 :func:`kodnir_friction_heat`.
 """
@@ -200,7 +201,7 @@ def _flux_derivatives(k, H, kp, Hp, dz, b_alpha, C):
 # Nonlinear problem (implements newton.NonlinearProblem)
 # ----------------------------------------------------------------------------------------
 class KodnirProblem:
-    """Discrete system of seed 000's problem on a fixed grid.
+    """Discrete system of the Kodnir problem on a fixed grid.
 
     Unknowns: k at the interior nodes (k = 0 at z_min and z_b) and H_off.
     Rows: Fischer-Burmeister(k_i, R_i s_i) at interior nodes, s_i a frozen row scale
@@ -310,7 +311,7 @@ class KodnirProblem:
 # ----------------------------------------------------------------------------------------
 @dataclass
 class KodnirResult:
-    """Solution of seed 000's problem (4)-(6). Everything is dimensionless.
+    """Solution of the Kodnir problem (4)-(6). Everything is dimensionless.
 
     Attributes
     ----------
@@ -322,7 +323,7 @@ class KodnirResult:
     C, b_alpha, z_b : float
         Parameters.
     z_a : float
-        Outlet position -sqrt(1 - H_off) (seed's z_a, eq 5); NaN only when unsuccessful.
+        Outlet position -sqrt(1 - H_off) (the paper's z_a, eq 5); NaN only when unsuccessful.
     z_a_free_boundary : float
         Where k drops to 0, from sqrt(k) extrapolation (agrees with z_a to discretisation
         accuracy).
@@ -335,9 +336,9 @@ class KodnirResult:
     h_offset : float
         H_off = 1 - z_a^2.
     friction_integral : float
-        I = int_{z_a}^{z_b} (1 - H) dk/dz dz (seed eq 8).
+        I = int_{z_a}^{z_b} (1 - H) dk/dz dz (Yachikov & Vostrikov 2015, eq 8).
     couette_integral : float
-        J = int_{z_a}^{z_b} exp(b_alpha k)/H dz (seed eq 9).
+        J = int_{z_a}^{z_b} exp(b_alpha k)/H dz (Yachikov & Vostrikov 2015, eq 9).
     flux : float
         Discrete mass flux Q (1 when converged).
     z, k, H : ndarray
@@ -562,7 +563,7 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
 def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
           coarse_nodes: int = 401, z_min: float | None = None, tol: float = 1e-10,
           max_iterations: int = 60) -> KodnirResult:
-    """Solve seed 000's dimensionless problem (4)-(6) by P1 finite elements.
+    """Solve the dimensionless Kodnir problem (4)-(6) by P1 finite elements.
 
     Parameters
     ----------
@@ -576,7 +577,7 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
         Nodes of the final grid (80 % of them over the contact and the outlet zone
         [z_min, z_fine], uniform except for refined outlet and inlet bands when C is
         large, the rest graded geometrically up to z_b). The default 2001 solves all 20
-        cases of seed 000's table with z_a and k_max within 0.05 % of a 4001-node solve
+        cases of the table of Yachikov & Vostrikov (2015) with z_a and k_max within 0.05 % of a 4001-node solve
         (docs/kodnir.md).
     coarse_nodes : int
         Nodes of the first (continuation) grid.
@@ -615,7 +616,7 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
     if C == 0.0 and b_alpha > 0.0:
         # rigid piezo-viscous: by the Barus (Kapitsa) transform the reduced pressure
         # q = (1 - exp(-b_alpha k))/b_alpha is the isoviscous solution (same outlet), so a
-        # solution exists only while b_alpha q_max < 1 (PHYSICS.md 5.1)
+        # solution exists only while b_alpha q_max < 1 (docs/theory.md section 14.1)
         iso = solve(0.0, 0.0, z_b, nodes=coarse_nodes, coarse_nodes=coarse_nodes,
                     z_min=z_min, tol=tol, max_iterations=max_iterations)
         if iso.success and b_alpha * iso.k_max >= 1.0:
@@ -623,7 +624,7 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
             res.iterations = iso.iterations
             res.message = (f"no solution: rigid (C = 0) piezo-viscous problem needs "
                            f"b_alpha * q_max < 1, here {b_alpha} * {iso.k_max:.6g} = "
-                           f"{b_alpha * iso.k_max:.4g} (Kapitsa transform, PHYSICS.md 5.1)")
+                           f"{b_alpha * iso.k_max:.4g} (Kapitsa transform, docs/theory.md section 14.1)")
             return res
     # heuristic first left end (widened below if the outlet comes close to it)
     zlo = -(2.0 + 0.1 * C + 0.2 * b_alpha) if z_min is None else float(z_min)
@@ -722,11 +723,11 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
 
 
 # ----------------------------------------------------------------------------------------
-# Dimensional conversions (seed 000)
+# Dimensional conversions (Yachikov & Vostrikov 2015)
 # ----------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class KodnirScales:
-    """Seed 000's scales. SI where stated.
+    """Scales of the Kodnir problem. SI where stated.
 
     Attributes
     ----------
@@ -748,12 +749,12 @@ class KodnirScales:
 
 def kodnir_scales(h_star: float, radius: float, viscosity: float, sum_speed: float,
                   youngs_modulus: float, load_per_length: float, piezo: float) -> KodnirScales:
-    """Seed 000's scales and parameters from a dimensional line contact.
+    """Scales and parameters of the Kodnir problem from a dimensional line contact.
 
     Parameters
     ----------
-    h_star : film h* where dp/dx = 0 [m] (seed's h0)
-    radius : reduced radius R (seed's rho_pr) [m]
+    h_star : film h* where dp/dx = 0 [m] (the paper's h0)
+    radius : reduced radius R (the paper's rho_pr) [m]
     viscosity : eta0 [Pa s]
     sum_speed : U_sum = U1 + U2 [m/s]
     youngs_modulus : E of the two equal bodies [Pa] (not E')
@@ -792,7 +793,7 @@ def to_dimensional(result: KodnirResult, scales: KodnirScales) -> dict[str, np.n
 
 @dataclass(frozen=True)
 class KodnirFrictionHeat:
-    """Seed 000 eqs 7-9. rolling_force w_k [N/m], friction_coefficient f [-],
+    """Yachikov & Vostrikov (2015) eqs 7-9: rolling_force w_k [N/m], friction_coefficient f [-],
     heat_power Q [W/m] and its two parts [W/m]."""
 
     rolling_force: float
@@ -804,7 +805,7 @@ class KodnirFrictionHeat:
 
 def kodnir_friction_heat(result: KodnirResult, h_star: float, B: float, q_H: float,
                          sum_speed: float, sliding_speed: float) -> KodnirFrictionHeat:
-    """Seed 000's friction coefficient and heat power per length (eqs 7-9).
+    """Friction coefficient and heat power per length in Kodnir form (Yachikov & Vostrikov 2015, eqs 7-9).
 
     w_k = (B h*/2) I,  f = 2 w_k / q_H,  Q = U_sum (w_k + (U_s/U_sum)^2 (B h*/6) J).
 

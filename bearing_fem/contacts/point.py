@@ -13,7 +13,7 @@ numbering ``j*nx + i`` (x fastest), the layout of
 Film: h = h0 + x^2/(2 rx) + y^2/(2 ry) + v(x, y) (geometry exact at the quadrature
 points, v interpolated from the nodes).
 
-Reynolds (PHYSICS.md 2): div(eps grad p) = u_m d(rho h)/dx + rho dh0/dt. Weak form,
+Reynolds (docs/theory.md section 11): div(eps grad p) = u_m d(rho h)/dx + rho dh0/dt. Weak form,
 for every test function phi vanishing on the boundary,
 
     R(phi) = int F . grad phi + int rho (dh0/dt) phi = 0,   F = eps grad p - u_m rho h e_x
@@ -74,7 +74,7 @@ from .problem import ScaledResidual, fischer_burmeister
 log = logging.getLogger(__name__)
 
 #: Default rigid-scene domain, in units of sqrt(2 rx h0) (x) and sqrt(2 ry h0) (y).
-#: PHYSICS.md 5.2: a free inlet needs X <= -30 in 2D for the load within ~0.3%.
+#: docs/theory.md section 14.2: a free inlet needs X <= -30 in 2D for the load within ~0.3%.
 RIGID_RANGE_FS = ((-30.0, 30.0), (-30.0, 30.0))
 RIGID_RANGE_REYNOLDS = ((-30.0, 8.0), (-30.0, 30.0))
 #: Default rigid grid (sinh-graded, nodes per direction).

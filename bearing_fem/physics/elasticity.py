@@ -1,4 +1,4 @@
-"""Elastic compliance operators: pressure p -> elastic displacement v (PHYSICS.md 2, 3).
+"""Elastic compliance operators: pressure p -> elastic displacement v (docs/theory.md sections 11, 12).
 
 The film is ``h = h0 + x^2/(2 Rx) + y^2/(2 Ry) + v``; ``v > 0`` pushes the surfaces apart.
 Four operators share one interface so the Newton solver can take any of them:
@@ -7,14 +7,14 @@ Four operators share one interface so the Newton solver can take any of them:
 class               kind     model
 ==================  =======  ==========================================================
 RigidCompliance     rigid    v = 0
-LocalCompliance     local    v = c p, c = A'/E (Kodnir, seed 000), m/Pa
+LocalCompliance     local    v = c p, c = A'/E (Kodnir; Yachikov & Vostrikov 2015), m/Pa
 HalfSpaceLine       half-    plane strain: v(x) = -(4/(pi E')) int p(s) ln|x - s| ds
                     space    (+ const, absorbed in h0); dense symmetric Toeplitz matrix
 HalfSpacePoint      half-    Boussinesq: v = (2/(pi E')) iint p / |r - r'| dA;
                     space    applied by zero-padded FFT (DC-FFT), never dense unless asked
 ==================  =======  ==========================================================
 
-Discretisation (PHYSICS.md 3): the grid is uniform and the pressure is piecewise constant
+Discretisation (docs/theory.md section 12): the grid is uniform and the pressure is piecewise constant
 on the cell of width D (or Dx x Dy) centred at each node; the influence coefficient of
 cell j on node i is the exact integral of the kernel over cell j, so ``v = C p`` with
 
@@ -138,7 +138,7 @@ def _padded_length(n: int) -> int:
 
 
 # ----------------------------------------------------------------------------------------
-# Geometric influence integrals (PHYSICS.md 3)
+# Geometric influence integrals (docs/theory.md section 12)
 # ----------------------------------------------------------------------------------------
 
 def _xlogx(t: np.ndarray) -> np.ndarray:
@@ -153,7 +153,7 @@ def _xlogx(t: np.ndarray) -> np.ndarray:
 def line_kernel(d: np.ndarray | float, spacing: float) -> np.ndarray:
     """Integral of ln|d - s| over the cell s in [-D/2, D/2] (plane-strain log kernel).
 
-    ``K(d) = (d + D/2) ln|d + D/2| - (d - D/2) ln|d - D/2| - D`` (PHYSICS.md 3), with
+    ``K(d) = (d + D/2) ln|d + D/2| - (d - D/2) ln|d - D/2| - D`` (docs/theory.md section 12), with
     ``K(0) = D (ln(D/2) - 1)``. For ``|d| > D`` the algebraically equal form
     ``D ln|d| + |d| [(1+u) log1p(u) - (1-u) log1p(-u)] - D``, ``u = D/(2|d|)``, is used to
     avoid cancellation between the two large logarithms.
@@ -202,7 +202,7 @@ def point_kernel(X: np.ndarray | float, Y: np.ndarray | float,
     """Integral of 1/sqrt((X - x')^2 + (Y - y')^2) over the cell |x'| <= Dx/2, |y'| <= Dy/2.
 
     ``K = G(X+Dx/2, Y+Dy/2) - G(X-Dx/2, Y+Dy/2) - G(X+Dx/2, Y-Dy/2) + G(X-Dx/2, Y-Dy/2)``
-    with ``G(X, Y) = X asinh(Y/|X|) + Y asinh(X/|Y|)`` (PHYSICS.md 3). The square self
+    with ``G(X, Y) = X asinh(Y/|X|) + Y asinh(X/|Y|)`` (docs/theory.md section 12). The square self
     term is ``4 D ln(1 + sqrt 2)``.
 
     Parameters
@@ -239,7 +239,7 @@ def _point_kernel_grid(nx: int, ny: int, dx: float, dy: float) -> np.ndarray:
 
 def kodnir_local_coefficient(load_per_length: float, radius: float,
                              youngs_modulus: float) -> float:
-    """Kodnir's local compliance coefficient A'/E (seed 000, PHYSICS.md 2).
+    """Kodnir's local compliance coefficient A'/E (Yachikov & Vostrikov 2015, docs/theory.md section 11).
 
     ``A' = 2.54 b_H``, ``b_H = 1.52 sqrt(w R / E)``; the factor 1.52 already contains
     nu = 0.3 for two equal steel bodies, so E is their Young's modulus (not E').
@@ -249,7 +249,7 @@ def kodnir_local_coefficient(load_per_length: float, radius: float,
     load_per_length : float
         Load per unit length of the line contact w = q_H, N/m.
     radius : float
-        Reduced radius R (seed 000's rho), m.
+        Reduced radius R (the paper's rho), m.
     youngs_modulus : float
         Young's modulus E of the two (equal) bodies, Pa.
 
@@ -375,7 +375,7 @@ class RigidCompliance(Compliance):
 
 
 class LocalCompliance(Compliance):
-    """Local (Winkler) compliance of seed 000: v = c p with c = A'/E (m/Pa).
+    """Local (Winkler) compliance (Kodnir; Yachikov & Vostrikov 2015): v = c p with c = A'/E (m/Pa).
 
     Parameters
     ----------

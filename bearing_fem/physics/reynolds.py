@@ -1,6 +1,6 @@
 """The Reynolds equation in flux form, pointwise, with streamline-upwind stabilisation.
 
-Strong form (PHYSICS.md section 2, steady, u_m along +x):
+Strong form (docs/theory.md section 2, steady, u_m along +x):
 
     div( eps grad p ) = u_m d(rho h)/dx,      eps = rho h^3 / (12 eta)
 

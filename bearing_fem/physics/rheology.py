@@ -2,7 +2,7 @@
 
 Symbols (SI): p pressure [Pa], eta viscosity [Pa s], eta0 ambient viscosity [Pa s],
 alpha pressure-viscosity coefficient [1/Pa], rho/rho0 relative density [-],
-t temperature [deg C] (Prokofiev law, seed 000).
+t temperature [deg C] (Prokofiev law, as used by Yachikov & Vostrikov 2015).
 
 All functions accept real or complex arrays: the solver differentiates them by the
 complex-step method, so they must stay analytic (no ``abs``/``max`` on the argument).
@@ -67,7 +67,7 @@ def density_function(law: str) -> Callable[[np.ndarray], np.ndarray]:
 
 def prokofiev(t_celsius: float | np.ndarray, viscosity_ref: float, t_ref_celsius: float,
               exponent: float) -> float | np.ndarray:
-    """Prokofiev temperature law eta0(t) = eta_ref (t_ref / t)^n [Pa s], t in deg C (seed 000)."""
+    """Prokofiev temperature law eta0(t) = eta_ref (t_ref / t)^n [Pa s], t in deg C (Yachikov & Vostrikov 2015)."""
     t = np.asarray(t_celsius, dtype=float)
     if np.any(t <= 0.0):
         raise ValueError(f"Prokofiev law needs t > 0 deg C, got {t_celsius!r} deg C")

@@ -12,7 +12,7 @@ lambda   thermal conductivity [W/(m K)] (``conductivity``; K in the moving-sourc
 rho, c   density [kg/m^3], specific heat capacity [J/(kg K)]
 kappa    thermal diffusivity lambda/(rho c) [m^2/s]
 V        speed of the body under the fixed source [m/s]
-Pe       Peclet number V b/(2 kappa) [-] (PHYSICS.md 5.4)
+Pe       Peclet number V b/(2 kappa) [-] (docs/theory.md section 14.4)
 theta    total power of the strip per unit track length [W/m] (``total_heat``)
 T_n      Korovchinsky characteristic temperature a q_max/lambda [K]
 T        temperature rise [K] above the datum documented on each function
@@ -22,11 +22,11 @@ Problems
 1. :func:`strip_source` -- steady conduction ``div(lambda grad T) = 0`` in the half-plane
    y >= 0 (x across the track, y into the body), ``-lambda dT/dy = q(x)`` on the strip
    |x| <= a, adiabatic elsewhere on y = 0, truncated at r = R with a far-field
-   condition (PHYSICS.md 5.4; oracle: :mod:`bearing_fem.analytic` Section B).
+   condition (docs/theory.md section 14.4; oracle: :mod:`bearing_fem.analytic` Section B).
 2. :func:`moving_source` -- steady convection-diffusion ``rho c V dT/dx = lambda Lap T``
    in the rolling plane (x along the motion of the body, y into it), flux q on the band
    |x| <= b of the surface, Galerkin + SUPG on bilinear quadrilaterals.
-3. :func:`reconstruct_two_point` -- seed 004's two-point reconstruction with the
+3. :func:`reconstruct_two_point` -- Sanko's two-point reconstruction with the
    corrected Korovchinsky field.
 4. :func:`heat_partition` -- Blok's equal-flash-temperature split between two bodies.
 """
@@ -465,7 +465,7 @@ def strip_source(half_width: float, q_max: float | None, conductivity: float, *,
 
 
 # ----------------------------------------------------------------------------------------
-# two-point reconstruction (seed 004, corrected field)
+# two-point reconstruction (Sanko, with the corrected field)
 # ----------------------------------------------------------------------------------------
 
 @dataclass(frozen=True)
@@ -511,7 +511,7 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
 
     T_i = T_n C + T_n f(x_i/a, y_i/a) is linear in (T_n C, T_n), so
     ``T_n = (T_1 - T_2)/(f_1 - f_2)`` and ``C = T_1/T_n - f_1``; then
-    theta = pi lambda T_n / 2 (PHYSICS.md 5.4, seed 004 eqs. 9-11 corrected).
+    theta = pi lambda T_n / 2 (docs/theory.md section 14.4, Sanko's eqs. 9-11 corrected).
 
     Parameters
     ----------
@@ -772,7 +772,7 @@ def heat_partition(conductivity: Sequence[float], density: Sequence[float] | Non
     ``"blok"`` (default; Blok 1937 equal-flash-temperature postulate for two fast
     moving surfaces, Pe_i >~ 5): each body sees the same flux shape, its flash
     temperature is c q_i sqrt(b)/e_i with the speed-weighted effusivity
-    e_i = sqrt(lambda_i rho_i c_i V_i) (PHYSICS.md 5.4, high-Pe formula), so equal
+    e_i = sqrt(lambda_i rho_i c_i V_i) (docs/theory.md section 14.4, high-Pe formula), so equal
     temperatures give ``fraction_i = e_i/(e_1 + e_2)``. ``"conduction"``: both bodies
     (nearly) at rest, the same 2D conduction field shape in each: equal temperature
     differences give ``fraction_i = lambda_i/(lambda_1 + lambda_2)``.
