@@ -54,7 +54,8 @@ def show_value(value: Any) -> str:
         return f"<a deeply nested {type(value).__name__}>"
 
 
-def _section_of(obj: Any) -> str:
+def field_name_prefix(obj: Any) -> str:
+    """Section name of a scene/bearing section dataclass (its ``_section``), for messages."""
     return getattr(obj, "_section", type(obj).__name__.lower())
 
 
@@ -62,7 +63,7 @@ def _scalar(obj: Any, name: str, unit: str) -> tuple[str, Any]:
     """The field's full name and value, or SceneError unless the value is one real number
     (not a bool, a string, a list, ...)."""
     value = getattr(obj, name)
-    full = f"{_section_of(obj)}.{name}"
+    full = f"{field_name_prefix(obj)}.{name}"
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise SceneError(f"{full} must be a number in {unit}, got {show_value(value)} "
                          f"({type(value).__name__})")
@@ -72,21 +73,25 @@ def _scalar(obj: Any, name: str, unit: str) -> tuple[str, Any]:
     return full, value
 
 
-def _number(obj: Any, name: str, unit: str) -> float:
+def field_number(obj: Any, name: str, unit: str) -> float:
+    """Field ``name`` of a section dataclass as a finite float (stored back), else
+    SceneError naming the field, the value and ``unit``."""
     full, value = _scalar(obj, name, unit)
     value = require_finite(full, value, unit, error=SceneError)
     object.__setattr__(obj, name, value)
     return value
 
 
-def _positive(obj: Any, name: str, unit: str) -> float:
+def field_positive(obj: Any, name: str, unit: str) -> float:
+    """Field ``name`` as a finite float > 0 (stored back), else SceneError (with ``unit``)."""
     full, value = _scalar(obj, name, unit)
     value = require_positive(full, value, unit, error=SceneError)
     object.__setattr__(obj, name, value)
     return value
 
 
-def _nonneg(obj: Any, name: str, unit: str) -> float:
+def field_nonnegative(obj: Any, name: str, unit: str) -> float:
+    """Field ``name`` as a finite float >= 0 (stored back), else SceneError (with ``unit``)."""
     full, value = _scalar(obj, name, unit)
     value = require_nonnegative(full, value, unit, error=SceneError)
     object.__setattr__(obj, name, value)
@@ -100,28 +105,60 @@ def _bounded(obj: Any, name: str, unit: str, lo: float, hi: float, *,
     The bounds are those documented in ``docs/scenes.md`` ("Ranges"); ``why`` is a short
     reason appended to the message.
     """
-    value = _number(obj, name, unit)
+    value = field_number(obj, name, unit)
     low_ok = value > lo if open_low else value >= lo
     if not (low_ok and value <= hi):
         bracket = "(" if open_low else "["
-        raise SceneError(f"{_section_of(obj)}.{name} must lie in {bracket}{lo:g}, {hi:g}] "
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must lie in {bracket}{lo:g}, {hi:g}] "
                          f"{unit}, got {value!r}" + (f" ({why})" if why else ""))
     return value
 
 
-def _integer(obj: Any, name: str, lo: int, hi: int, what: str) -> int:
-    value = require_int(f"{_section_of(obj)}.{name}", getattr(obj, name), lo, hi, what=what,
+def field_integer(obj: Any, name: str, lo: int, hi: int, what: str) -> int:
+    """Field ``name`` as an integer in [lo, hi] (``what`` says what it counts), else SceneError."""
+    value = require_int(f"{field_name_prefix(obj)}.{name}", getattr(obj, name), lo, hi, what=what,
                         error=SceneError)
     object.__setattr__(obj, name, value)
     return value
 
 
-def _choice(obj: Any, name: str, allowed: tuple[str, ...]) -> str:
+def field_choice(obj: Any, name: str, allowed: tuple[str, ...]) -> str:
+    """Field ``name`` as one of the strings ``allowed``, else SceneError."""
     value = getattr(obj, name)
     if not isinstance(value, str) or value not in allowed:
-        raise SceneError(f"{_section_of(obj)}.{name} must be one of "
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must be one of "
                          f"{', '.join(map(repr, allowed))}, got {show_value(value)}")
     return value
+
+
+def field_bool(obj: Any, name: str) -> bool:
+    """Field ``name`` as a bool (TOML true/false), else SceneError."""
+    value = getattr(obj, name)
+    if not isinstance(value, bool):
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must be true or false, got "
+                         f"{show_value(value)}")
+    return value
+
+
+def section_from_table(table: str, klass: type, section: Any) -> Any:
+    """Build the section dataclass ``klass`` from the TOML table ``[table]``.
+
+    Raises SceneError when the table is not a mapping, names a key ``klass`` does not
+    have (the message lists the known keys) or lacks a key without a default.
+    """
+    if not isinstance(section, Mapping):
+        raise SceneError(f"[{table}] must be a table, got {show_value(section)}")
+    names = [f.name for f in fields(klass) if not f.name.startswith("_")]
+    bad = [k for k in section if k not in names]
+    if bad:
+        raise SceneError(f"unknown key(s) {_names(bad, prefix=table + '.')}; "
+                         f"known keys of [{table}]: {', '.join(names)}")
+    required = [f.name for f in fields(klass) if not f.name.startswith("_")
+                and f.default is MISSING and f.default_factory is MISSING]
+    missing = [k for k in required if k not in section]
+    if missing:
+        raise SceneError(f"missing key(s) {', '.join(f'{table}.{k}' for k in missing)}")
+    return klass(**dict(section))
 
 
 def _float_list(values: Any) -> tuple[float, ...] | None:
@@ -235,7 +272,7 @@ class Contact:
     length: float | None = None
 
     def __post_init__(self) -> None:
-        _choice(self, "kind", ("line", "point"))
+        field_choice(self, "kind", ("line", "point"))
         _bounded(self, "rx", "m", *LENGTH_RANGE)
         if self.kind == "point":
             if self.ry is None:
@@ -295,7 +332,7 @@ class Materials:
         for name in ("e1", "e2"):
             _bounded(self, name, "Pa", *MODULUS_RANGE)
         for name in ("nu1", "nu2"):
-            v = _number(self, name, "(dimensionless)")
+            v = field_number(self, name, "(dimensionless)")
             if not -1.0 < v <= 0.5:
                 raise SceneError(f"materials.{name} must lie in (-1, 0.5] (dimensionless), got {v!r}")
         e_prime = self.e_prime
@@ -335,12 +372,12 @@ class Lubricant:
 
     def __post_init__(self) -> None:
         _bounded(self, "viscosity", "Pa s", *VISCOSITY_RANGE)
-        _nonneg(self, "piezo", "1/Pa")
+        field_nonnegative(self, "piezo", "1/Pa")
         if self.piezo > 1e-6:
             raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils 1e-8..3e-8), "
                              f"got {self.piezo!r}")
-        _choice(self, "viscosity_law", ("barus", "roelands", "constant"))
-        _choice(self, "density", ("incompressible", "dowson-higginson"))
+        field_choice(self, "viscosity_law", ("barus", "roelands", "constant"))
+        field_choice(self, "density", ("incompressible", "dowson-higginson"))
         if self.viscosity_law == "roelands" and not ROELANDS_VISCOSITY[0] <= self.viscosity \
                 <= ROELANDS_VISCOSITY[1]:
             raise SceneError(f"lubricant.viscosity = {self.viscosity!r} Pa s is outside the "
@@ -435,9 +472,9 @@ class Model:
     thermal: Literal["none", "patch"] = "none"
 
     def __post_init__(self) -> None:
-        _choice(self, "elasticity", ("half-space", "local", "rigid"))
-        _choice(self, "cavitation", ("reynolds", "none"))
-        _choice(self, "thermal", ("none", "patch"))
+        field_choice(self, "elasticity", ("half-space", "local", "rigid"))
+        field_choice(self, "cavitation", ("reynolds", "none"))
+        field_choice(self, "thermal", ("none", "patch"))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -561,14 +598,12 @@ class SolverSpec:
     time_limit: float | None = None
 
     def __post_init__(self) -> None:
-        _positive(self, "tolerance", "(dimensionless)")
+        field_positive(self, "tolerance", "(dimensionless)")
         if self.tolerance >= 1e-1:
             raise SceneError(f"solver.tolerance must be < 0.1 (dimensionless), got {self.tolerance!r}")
-        _integer(self, "max_iterations", 1, 10000, "Newton iterations")
-        if not isinstance(self.continuation, bool):
-            raise SceneError(f"solver.continuation must be true or false, got "
-                             f"{show_value(self.continuation)}")
-        _integer(self, "iteration_budget", 1, 100000, "Newton iterations")
+        field_integer(self, "max_iterations", 1, 10000, "Newton iterations")
+        field_bool(self, "continuation")
+        field_integer(self, "iteration_budget", 1, 100000, "Newton iterations")
         if self.time_limit is not None:
             _bounded(self, "time_limit", "s", 0.0, 1e6, open_low=True)
 
@@ -639,7 +674,7 @@ class Thermal:
                  why="the Prokofiev law needs t > 0 deg C")
         _bounded(self, "exponent", "(dimensionless)", 0.0, 20.0, open_low=True,
                  why="oils have 2..4")
-        _choice(self, "temperature_law", ("prokofiev",))
+        field_choice(self, "temperature_law", ("prokofiev",))
         _bounded(self, "reference_temperature", "deg C", t_lo, t_hi, open_low=True)
         if self.reference_viscosity is not None:
             _bounded(self, "reference_viscosity", "Pa s", *VISCOSITY_RANGE)
@@ -649,8 +684,8 @@ class Thermal:
             _bounded(self, name, unit, lo, hi)
             if getattr(self, name + "2") is not None:
                 _bounded(self, name + "2", unit, lo, hi)
-        _choice(self, "source_model", ("jaeger", "fe"))
-        _choice(self, "contact_temperature", ("mean", "max"))
+        field_choice(self, "source_model", ("jaeger", "fe"))
+        field_choice(self, "contact_temperature", ("mean", "max"))
         ts, vs = self.piezo_temperatures, self.piezo_values
         if (ts is None) != (vs is None):
             raise SceneError("thermal: give both thermal.piezo_temperatures (deg C) and "
@@ -674,7 +709,7 @@ class Thermal:
                                  f"{show_value(vs)}")
             object.__setattr__(self, "piezo_temperatures", ts)
             object.__setattr__(self, "piezo_values", vs)
-        _integer(self, "max_iterations", 1, 1000, "fixed-point iterations")
+        field_integer(self, "max_iterations", 1, 1000, "fixed-point iterations")
         _bounded(self, "tolerance", "K", 0.0, 100.0, open_low=True)
         _bounded(self, "relaxation", "(dimensionless)", 0.0, 1.0, open_low=True)
         _bounded(self, "max_temperature_rise", "K", 0.0, 1e4, open_low=True)
@@ -713,7 +748,7 @@ class Traction:
     limiting_slope: float = GENERIC_MINERAL_OIL["limiting_slope"]
 
     def __post_init__(self) -> None:
-        _choice(self, "model", TRACTION_MODELS)
+        field_choice(self, "model", TRACTION_MODELS)
         _bounded(self, "eyring_stress", "Pa", 1e3, 1e10, why="oils have 2e6..1e7 Pa")
         _bounded(self, "limiting_shear_stress", "Pa", 0.0, 1e10)
         _bounded(self, "limiting_slope", "(dimensionless)", 0.0, 1.0,
@@ -757,16 +792,16 @@ class Transient:
     scheme: Literal["bdf2", "euler", "quasi-steady"] = "bdf2"
 
     def __post_init__(self) -> None:
-        _choice(self, "kind", ("squeeze",))
-        amp = _number(self, "amplitude", "(dimensionless)")
+        field_choice(self, "kind", ("squeeze",))
+        amp = field_number(self, "amplitude", "(dimensionless)")
         if not 0.0 <= amp < 1.0:
             raise SceneError(f"transient.amplitude must lie in [0, 1) (dimensionless: the gap "
                              f"would close), got {amp!r}")
         if self.angular_frequency is not None:
             _bounded(self, "angular_frequency", "rad/s", 0.0, 1e9, open_low=True)
-        _integer(self, "steps", 2, 10000, "time steps per period")
-        _integer(self, "periods", 1, 100, "periods")
-        _choice(self, "scheme", ("bdf2", "euler", "quasi-steady"))
+        field_integer(self, "steps", 2, 10000, "time steps per period")
+        field_integer(self, "periods", 1, 100, "periods")
+        field_choice(self, "scheme", ("bdf2", "euler", "quasi-steady"))
 
 
 _SECTIONS: dict[str, type] = {
@@ -960,20 +995,7 @@ class Scene:
         for name, klass in _SECTIONS.items():
             if name not in data:
                 continue
-            section = data[name]
-            if not isinstance(section, Mapping):
-                raise SceneError(f"[{name}] must be a table, got {show_value(section)}")
-            names = [f.name for f in fields(klass) if not f.name.startswith("_")]
-            bad = [k for k in section if k not in names]
-            if bad:
-                raise SceneError(f"unknown key(s) {_names(bad, prefix=name + '.')}; "
-                                 f"known keys of [{name}]: {', '.join(names)}")
-            required = [f.name for f in fields(klass) if not f.name.startswith("_")
-                        and f.default is MISSING and f.default_factory is MISSING]
-            missing = [k for k in required if k not in section]
-            if missing:
-                raise SceneError(f"missing key(s) {', '.join(f'{name}.{k}' for k in missing)}")
-            kwargs[name] = klass(**dict(section))
+            kwargs[name] = section_from_table(name, klass, data[name])
         return cls(**kwargs)
 
     @classmethod

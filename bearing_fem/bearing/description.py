@@ -15,12 +15,14 @@ temperatures in deg C (the Prokofiev law of Yachikov & Vostrikov 2015 is written
 from __future__ import annotations
 
 import math
-from dataclasses import MISSING, dataclass, field, fields, replace
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import SolverSpec, Traction
+from ..scene import (SolverSpec, Traction, field_bool, field_choice, field_integer,
+                     field_name_prefix, field_nonnegative, field_number, field_positive,
+                     section_from_table)
 
 try:  # Python >= 3.11
     import tomllib
@@ -48,64 +50,11 @@ MATERIAL_PRESETS: dict[str, tuple[float, float, float]] = {
 
 
 # ---------------------------------------------------------------------------------------
-# validation helpers (module-local; same messages as the scene validators)
+# validation helpers: the scene's field validators (bearing_fem.scene), and the ranges
 # ---------------------------------------------------------------------------------------
-def _where(obj: Any, name: str) -> str:
-    return f"{getattr(obj, '_section', type(obj).__name__.lower())}.{name}"
-
-
-def _number(obj: Any, name: str, unit: str) -> float:
-    value = getattr(obj, name)
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"{_where(obj, name)} must be a number in {unit}, got {value!r} "
-                         f"({type(value).__name__})")
-    value = float(value)
-    if not math.isfinite(value):
-        raise SceneError(f"{_where(obj, name)} must be finite ({unit}), got {value!r}")
-    object.__setattr__(obj, name, value)
-    return value
-
-
-def _positive(obj: Any, name: str, unit: str) -> float:
-    value = _number(obj, name, unit)
-    if value <= 0.0:
-        raise SceneError(f"{_where(obj, name)} must be > 0 {unit}, got {value!r}")
-    return value
-
-
-def _nonneg(obj: Any, name: str, unit: str) -> float:
-    value = _number(obj, name, unit)
-    if value < 0.0:
-        raise SceneError(f"{_where(obj, name)} must be >= 0 {unit}, got {value!r}")
-    return value
-
-
 def _optional_positive(obj: Any, name: str, unit: str) -> None:
     if getattr(obj, name) is not None:
-        _positive(obj, name, unit)
-
-
-def _integer(obj: Any, name: str, lo: int, hi: int, what: str) -> int:
-    value = getattr(obj, name)
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise SceneError(f"{_where(obj, name)} must be an integer in [{lo}, {hi}] ({what}), "
-                         f"got {value!r}")
-    return value
-
-
-def _choice(obj: Any, name: str, allowed: tuple[str, ...]) -> str:
-    value = getattr(obj, name)
-    if not isinstance(value, str) or value not in allowed:
-        raise SceneError(f"{_where(obj, name)} must be one of "
-                         f"{', '.join(map(repr, allowed))}, got {value!r}")
-    return value
-
-
-def _bool(obj: Any, name: str) -> bool:
-    value = getattr(obj, name)
-    if not isinstance(value, bool):
-        raise SceneError(f"{_where(obj, name)} must be true or false, got {value!r}")
-    return value
+        field_positive(obj, name, unit)
 
 
 def _range(obj: Any, name: str) -> None:
@@ -114,12 +63,12 @@ def _range(obj: Any, name: str) -> None:
         return
     if (not isinstance(r, (list, tuple)) or len(r) != 2
             or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
-        raise SceneError(f"{_where(obj, name)} must be two numbers [start, end] (in Hertz "
-                         f"half-widths), got {r!r}")
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must be two numbers [start, end] "
+                         f"(in Hertz half-widths), got {r!r}")
     lo, hi = float(r[0]), float(r[1])
     if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
-        raise SceneError(f"{_where(obj, name)} must satisfy start < 0 < end (in Hertz "
-                         f"half-widths), got {r!r}")
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must satisfy start < 0 < end "
+                         f"(in Hertz half-widths), got {r!r}")
     object.__setattr__(obj, name, (lo, hi))
 
 
@@ -198,17 +147,17 @@ class Geometry:
     static_load_rating: float | None = None
 
     def __post_init__(self) -> None:
-        _choice(self, "type", BEARING_TYPES)
-        d = _positive(self, "bore", "m")
-        big_d = _positive(self, "outside_diameter", "m")
+        field_choice(self, "type", BEARING_TYPES)
+        d = field_positive(self, "bore", "m")
+        big_d = field_positive(self, "outside_diameter", "m")
         if big_d <= d:
             raise SceneError(f"bearing.outside_diameter = {big_d!r} m must exceed "
                              f"bearing.bore = {d!r} m")
-        dw = _positive(self, "element_diameter", "m")
-        _integer(self, "elements", 3, 500, "rolling elements per row")
-        _integer(self, "rows", 1, 8, "rows")
+        dw = field_positive(self, "element_diameter", "m")
+        field_integer(self, "elements", 3, 500, "rolling elements per row")
+        field_integer(self, "rows", 1, 8, "rows")
         if self.pitch_diameter is not None:
-            dm = _positive(self, "pitch_diameter", "m")
+            dm = field_positive(self, "pitch_diameter", "m")
             if not d < dm < big_d:
                 raise SceneError(f"bearing.pitch_diameter = {dm!r} m must lie between the "
                                  f"bore {d!r} m and the outside diameter {big_d!r} m")
@@ -221,9 +170,9 @@ class Geometry:
             raise SceneError(f"bearing.elements = {z} elements of {dw!r} m do not fit on "
                              f"the pitch circle pi d_m = {math.pi * dm!r} m")
         _optional_positive(self, "width", "m")
-        alpha = _number(self, "contact_angle", "deg")
-        _nonneg(self, "radial_clearance", "m")
-        _number(self, "first_element_azimuth", "deg")
+        alpha = field_number(self, "contact_angle", "deg")
+        field_nonnegative(self, "radial_clearance", "m")
+        field_number(self, "first_element_azimuth", "deg")
         _optional_positive(self, "static_load_rating", "N")
         if self.type in BALL_TYPES:
             self._check_ball()
@@ -243,7 +192,7 @@ class Geometry:
         for name, default in (("inner_conformity", 0.52), ("outer_conformity", 0.53)):
             if getattr(self, name) is None:
                 object.__setattr__(self, name, default)
-            f = _number(self, name, "(dimensionless)")
+            f = field_number(self, name, "(dimensionless)")
             if not 0.5 < f <= 0.6:
                 raise SceneError(f"bearing.{name} = r/D_w must lie in (0.5, 0.6] "
                                  f"(dimensionless), got {f!r}")
@@ -267,16 +216,16 @@ class Geometry:
         if self.effective_length is None:
             raise SceneError(f"bearing.effective_length (m) is required for a {self.type} "
                              "bearing")
-        lw = _positive(self, "effective_length", "m")
-        _choice(self, "profile", ("straight", "crowned", "logarithmic"))
-        flat = _nonneg(self, "flat_length", "m")
+        lw = field_positive(self, "effective_length", "m")
+        field_choice(self, "profile", ("straight", "crowned", "logarithmic"))
+        flat = field_nonnegative(self, "flat_length", "m")
         if flat >= lw and self.profile == "crowned":
             raise SceneError(f"bearing.flat_length = {flat!r} m must be shorter than "
                              f"bearing.effective_length = {lw!r} m")
         if self.profile == "crowned":
             if self.crown_drop is None:
                 raise SceneError("bearing.crown_drop (m) is required for profile = 'crowned'")
-            _positive(self, "crown_drop", "m")
+            field_positive(self, "crown_drop", "m")
         elif self.crown_drop is not None:
             raise SceneError(f"bearing.crown_drop applies to profile = 'crowned', got "
                              f"{self.crown_drop!r} m with profile {self.profile!r}")
@@ -284,7 +233,7 @@ class Geometry:
             if self.design_load is None:
                 raise SceneError("bearing.design_load (N) is required for profile = "
                                  "'logarithmic' (Johns-Gohar)")
-            _positive(self, "design_load", "N")
+            field_positive(self, "design_load", "N")
         elif self.design_load is not None:
             raise SceneError(f"bearing.design_load applies to profile = 'logarithmic', got "
                              f"{self.design_load!r} N")
@@ -292,7 +241,7 @@ class Geometry:
             raise SceneError("bearing.flat_length applies to profile = 'crowned'")
         if self.slices is None:
             return
-        n = _integer(self, "slices", 1, 101, "slices along the roller")
+        n = field_integer(self, "slices", 1, 101, "slices along the roller")
         if self.profile == "straight" and n != 1:
             raise SceneError(f"bearing.slices = {n} needs a roller profile ('crowned' or "
                              "'logarithmic'); a straight roller is one line contact")
@@ -343,14 +292,14 @@ class BearingMaterials:
     element_density: float | None = None
 
     def __post_init__(self) -> None:
-        _choice(self, "rings", tuple(MATERIAL_PRESETS))
-        _choice(self, "elements", tuple(MATERIAL_PRESETS))
+        field_choice(self, "rings", tuple(MATERIAL_PRESETS))
+        field_choice(self, "elements", tuple(MATERIAL_PRESETS))
         for name in ("ring_modulus", "element_modulus"):
             _optional_positive(self, name, "Pa")
         _optional_positive(self, "element_density", "kg/m^3")
         for name in ("ring_poisson", "element_poisson"):
             if getattr(self, name) is not None:
-                v = _number(self, name, "(dimensionless)")
+                v = field_number(self, name, "(dimensionless)")
                 if not -1.0 < v <= 0.5:
                     raise SceneError(f"materials.{name} must lie in (-1, 0.5] "
                                      f"(dimensionless), got {v!r}")
@@ -426,22 +375,22 @@ class BearingLubricant:
     specific_heat: float = 2000.0
 
     def __post_init__(self) -> None:
-        _nonneg(self, "piezo", "1/Pa")
+        field_nonnegative(self, "piezo", "1/Pa")
         if self.piezo > 1e-6:
             raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils "
                              f"1e-8..3e-8), got {self.piezo!r}")
-        _choice(self, "viscosity_law", ("barus", "roelands", "constant"))
-        _choice(self, "compressibility", ("incompressible", "dowson-higginson"))
-        _positive(self, "density", "kg/m^3")
-        _choice(self, "temperature_law", ("none", "prokofiev"))
-        _positive(self, "reference_temperature", "deg C")
-        _positive(self, "thermal_conductivity", "W/(m K)")
-        _positive(self, "specific_heat", "J/(kg K)")
+        field_choice(self, "viscosity_law", ("barus", "roelands", "constant"))
+        field_choice(self, "compressibility", ("incompressible", "dowson-higginson"))
+        field_positive(self, "density", "kg/m^3")
+        field_choice(self, "temperature_law", ("none", "prokofiev"))
+        field_positive(self, "reference_temperature", "deg C")
+        field_positive(self, "thermal_conductivity", "W/(m K)")
+        field_positive(self, "specific_heat", "J/(kg K)")
         if self.temperature_law == "none":
             if self.viscosity is None:
                 raise SceneError("lubricant.viscosity (Pa s at the oil temperature) is "
                                  "required unless lubricant.temperature_law = 'prokofiev'")
-            _positive(self, "viscosity", "Pa s")
+            field_positive(self, "viscosity", "Pa s")
             for name in ("reference_viscosity", "exponent", "piezo_temperatures"):
                 if getattr(self, name) is not None:
                     raise SceneError(f"lubricant.{name} needs lubricant.temperature_law = "
@@ -454,7 +403,7 @@ class BearingLubricant:
                 if getattr(self, name) is None:
                     raise SceneError(f"lubricant.{name} ({unit}) is required for "
                                      "temperature_law = 'prokofiev'")
-                _positive(self, name, unit)
+                field_positive(self, name, unit)
         ts, vs = self.piezo_temperatures, self.piezo_values
         if (ts is None) != (vs is None):
             raise SceneError("lubricant: give both piezo_temperatures (deg C) and "
@@ -500,14 +449,14 @@ class Operation:
     oil_temperature: float | None = None
 
     def __post_init__(self) -> None:
-        _positive(self, "inner_rpm", "1/min")
-        fr = _nonneg(self, "radial_load", "N")
-        fa = _nonneg(self, "axial_load", "N")
+        field_positive(self, "inner_rpm", "1/min")
+        fr = field_nonnegative(self, "radial_load", "N")
+        fa = field_nonnegative(self, "axial_load", "N")
         if fr == 0.0 and fa == 0.0:
             raise SceneError("operation: radial_load and axial_load are both 0 N; give a "
                              "load (an unloaded bearing has no EHL contacts)")
         if self.oil_temperature is not None:
-            t = _number(self, "oil_temperature", "deg C")
+            t = field_number(self, "oil_temperature", "deg C")
             if t <= 0.0:
                 raise SceneError(f"operation.oil_temperature must be > 0 deg C (Prokofiev "
                                  f"law), got {t!r}")
@@ -550,11 +499,11 @@ class BearingModel:
     min_load_fraction: float = 1e-3
 
     def __post_init__(self) -> None:
-        _bool(self, "centrifugal")
-        _choice(self, "thermal", ("none", "patch"))
-        _choice(self, "elasticity", ("half-space", "local"))
+        field_bool(self, "centrifugal")
+        field_choice(self, "thermal", ("none", "patch"))
+        field_choice(self, "elasticity", ("half-space", "local"))
         _optional_positive(self, "roughness", "m")
-        v = _nonneg(self, "min_load_fraction", "(dimensionless)")
+        v = field_nonnegative(self, "min_load_fraction", "(dimensionless)")
         if v >= 1.0:
             raise SceneError(f"model.min_load_fraction must be < 1 (dimensionless), got {v!r}")
 
@@ -581,7 +530,7 @@ class BearingMesh:
 
     def __post_init__(self) -> None:
         if self.line_nodes is not None:
-            _integer(self, "line_nodes", 9, 20001, "nodes")
+            field_integer(self, "line_nodes", 9, 20001, "nodes")
         n = self.point_nodes
         if n is not None:
             if (not isinstance(n, (list, tuple)) or len(n) != 2
@@ -622,14 +571,14 @@ class BearingThermal:
     relaxation: float = 0.7
 
     def __post_init__(self) -> None:
-        _positive(self, "conductivity", "W/(m K)")
-        _positive(self, "density", "kg/m^3")
-        _positive(self, "heat_capacity", "J/(kg K)")
-        _choice(self, "source_model", ("jaeger", "fe"))
-        _choice(self, "contact_temperature", ("mean", "max"))
-        _integer(self, "max_iterations", 1, 1000, "thermal iterations")
-        _positive(self, "tolerance", "K")
-        r = _positive(self, "relaxation", "(dimensionless)")
+        field_positive(self, "conductivity", "W/(m K)")
+        field_positive(self, "density", "kg/m^3")
+        field_positive(self, "heat_capacity", "J/(kg K)")
+        field_choice(self, "source_model", ("jaeger", "fe"))
+        field_choice(self, "contact_temperature", ("mean", "max"))
+        field_integer(self, "max_iterations", 1, 1000, "thermal iterations")
+        field_positive(self, "tolerance", "K")
+        r = field_positive(self, "relaxation", "(dimensionless)")
         if r > 1.0:
             raise SceneError(f"thermal.relaxation must lie in (0, 1] (dimensionless), got {r!r}")
 
@@ -683,8 +632,8 @@ class EmpiricalOptions:
                                else "(catalogue units)")
         if self.skf_series is not None and not isinstance(self.skf_series, str):
             raise SceneError(f"empirical.skf_series must be a string, got {self.skf_series!r}")
-        _choice(self, "lubrication", ("oil-bath", "oil-jet", "oil-air", "grease"))
-        _choice(self, "nikitin_set", ("steel", "ceramic", "joint"))
+        field_choice(self, "lubrication", ("oil-bath", "oil-jet", "oil-air", "grease"))
+        field_choice(self, "nikitin_set", ("steel", "ceramic", "joint"))
 
 
 # ---------------------------------------------------------------------------------------
@@ -794,21 +743,8 @@ class Bearing:
         for table, (attr, klass) in _SECTIONS.items():
             if table not in data:
                 continue
-            section = data[table]
-            if not isinstance(section, Mapping):
-                raise SceneError(f"[{table}] must be a table, got {section!r}")
-            names = [f.name for f in fields(klass) if not f.name.startswith("_")]
-            bad = [k for k in section if k not in names]
-            if bad:
-                raise SceneError(f"unknown key(s) {', '.join(f'{table}.{k}' for k in bad)}; "
-                                 f"known keys of [{table}]: {', '.join(names)}")
-            required = [f.name for f in fields(klass) if not f.name.startswith("_")
-                        and f.default is MISSING and f.default_factory is MISSING]
-            missing = [k for k in required if k not in section]
-            if missing:
-                raise SceneError(f"missing key(s) {', '.join(f'{table}.{k}' for k in missing)}")
             try:
-                kwargs[attr] = klass(**dict(section))
+                kwargs[attr] = section_from_table(table, klass, data[table])
             except SceneError as exc:
                 if table in ("solver", "traction"):
                     raise SceneError(str(exc)) from None
