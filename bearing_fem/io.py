@@ -40,6 +40,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from .result import json_safe
+
 __all__ = ["export", "export_series", "read_result", "scene_to_toml", "write_summary", "write_h5",
            "write_vtu", "clean_stale_temporaries", "FILES"]
 
@@ -137,24 +139,6 @@ def scene_to_toml(scene: Any) -> str:
 # ---------------------------------------------------------------------------------------
 # helpers
 # ---------------------------------------------------------------------------------------
-def _json_safe(value: Any) -> Any:
-    """Plain-Python copy of ``value`` with non-finite floats replaced by ``None``."""
-    if isinstance(value, Mapping):
-        return {str(k): _json_safe(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_json_safe(v) for v in value]
-    if isinstance(value, np.ndarray):
-        return _json_safe(value.tolist())
-    if isinstance(value, (bool, np.bool_)):
-        return bool(value)
-    if isinstance(value, (int, np.integer)):
-        return int(value)
-    if isinstance(value, (float, np.floating)):
-        v = float(value)
-        return v if math.isfinite(v) else None
-    return value
-
-
 def _kind(result: Any) -> str:
     return "point" if result.y is not None else "line"
 
@@ -313,7 +297,7 @@ class _Staging:
 def write_summary(result: Any, path: str | Path) -> Path:
     """Write ``result.summary()`` as strict JSON to ``path`` (not atomic; see :func:`export`)."""
     path = Path(path)
-    text = json.dumps(_json_safe(result.summary()), indent=2, allow_nan=False)
+    text = json.dumps(json_safe(result.summary()), indent=2, allow_nan=False)
     path.write_text(text + "\n", encoding="utf-8")
     return path
 
@@ -329,7 +313,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
     from .version import VERSION as package_version
 
     path = Path(path)
-    summary = _json_safe(result.summary())
+    summary = json_safe(result.summary())
     with h5py.File(path, "w") as f:
         f.attrs["kind"] = _kind(result)
         f.attrs["status"] = str(result.status)
@@ -354,7 +338,7 @@ def write_h5(result: Any, path: str | Path) -> Path:
         g.attrs["newton_iterations"] = int(result.newton_iterations)
         g.attrs["linear_solves"] = int(getattr(result, "linear_solves", 0))
         g.attrs["wall_time_s"] = float(result.wall_time_s)
-        g.attrs["continuation"] = json.dumps(_json_safe(
+        g.attrs["continuation"] = json.dumps(json_safe(
             [list(step) for step in getattr(result, "continuation", [])]))
     return path
 
@@ -466,7 +450,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     clean_stale_temporaries(outdir)
-    summary_text = json.dumps(_json_safe(series.summary()), indent=2, allow_nan=False) + "\n"
+    summary_text = json.dumps(json_safe(series.summary()), indent=2, allow_nan=False) + "\n"
     if not series.results:  # nothing solved: the summary (with the status) alone
         stage = _Staging(outdir)
         try:
@@ -608,7 +592,7 @@ __all__ += ["export_bearing", "write_bearing_summary", "write_elements_csv", "BE
 def write_bearing_summary(result: Any, path: str | Path) -> Path:
     """Write ``result.summary()`` of a bearing result as strict JSON (not atomic)."""
     path = Path(path)
-    text = json.dumps(_json_safe(result.summary()), indent=2, allow_nan=False)
+    text = json.dumps(json_safe(result.summary()), indent=2, allow_nan=False)
     path.write_text(text + "\n", encoding="utf-8")
     return path
 
@@ -630,7 +614,7 @@ def write_elements_csv(result: Any, path: str | Path) -> Path:
         for row in rows:
             out = []
             for c in cols:
-                v = _json_safe(row[c])
+                v = json_safe(row[c])
                 out.append("" if v is None else (repr(v) if isinstance(v, float) else v))
             writer.writerow(out)
     return path

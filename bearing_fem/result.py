@@ -1,13 +1,35 @@
 """The result of a solve: scipy-style status plus fields and post-processed numbers."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Mapping
 
 import numpy as np
 
 from .errors import SolveError
 from .version import VERSION
+
+
+def json_safe(value: Any) -> Any:
+    """Plain-Python copy of ``value`` for strict JSON: mappings, lists and numpy arrays
+    become dicts and lists, numpy scalars become bool/int/float, and non-finite floats
+    become ``None`` (the summaries of contacts, series and bearings are written this way).
+    """
+    if isinstance(value, Mapping):
+        return {str(k): json_safe(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [json_safe(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return json_safe(value.tolist())
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        v = float(value)
+        return v if math.isfinite(v) else None
+    return value
 
 #: Units of every dimensional summary key (line-contact values are per metre of length;
 #: the scene decides, see :func:`summary_units`).

@@ -387,6 +387,19 @@ def moes_to_venner_point(H_moes: Any, M: Any) -> Any:
 # ----------------------------------------------------------------------------------------
 # inverse maps: (M, L) -> dimensional operating point
 # ----------------------------------------------------------------------------------------
+def _moes_sum_speed(M: float, L: float, e_prime: float, piezo: float,
+                    **radii: float) -> float:
+    """Check the inputs of the Moes inverse maps (M, L, the radii [m], E' [Pa],
+    alpha [1/Pa], all > 0) and return U_sum = (L/(alpha E'))^4 [-]."""
+    require_positive("M", M, "(dimensionless)")
+    require_positive("L", L, "(dimensionless)")
+    for name, value in radii.items():
+        require_positive(name, value, "m")
+    require_positive("e_prime", e_prime, "Pa")
+    require_positive("piezo", piezo, "1/Pa")
+    return (L / (piezo * e_prime)) ** 4
+
+
 def _speed_and_viscosity(u_sum: float, length: float, e_prime: float,
                          viscosity: float | None, mean_speed: float | None
                          ) -> tuple[float, float]:
@@ -434,12 +447,7 @@ def line_scene_from_moes(M: float, L: float, *, radius: float = 0.01,
         ``load_per_length`` [N/m], ``mean_speed`` [m/s], ``viscosity`` [Pa s],
         ``piezo`` [1/Pa], ``radius`` [m], ``e_prime`` [Pa].
     """
-    require_positive("M", M, "(dimensionless)")
-    require_positive("L", L, "(dimensionless)")
-    require_positive("radius", radius, "m")
-    require_positive("e_prime", e_prime, "Pa")
-    require_positive("piezo", piezo, "1/Pa")
-    u_sum = (L / (piezo * e_prime)) ** 4
+    u_sum = _moes_sum_speed(M, L, e_prime, piezo, radius=radius)
     eta, u_m = _speed_and_viscosity(u_sum, radius, e_prime, viscosity, mean_speed)
     return {"load_per_length": float(M * np.sqrt(u_sum) * e_prime * radius),
             "mean_speed": float(u_m), "viscosity": float(eta), "piezo": float(piezo),
@@ -478,13 +486,7 @@ def point_scene_parameters_from_moes(M: float, L: float, *, rx: float = 0.01,
         ``rx``, ``ry`` [m], ``e_prime`` [Pa].
     """
     ry = rx if ry is None else ry
-    require_positive("M", M, "(dimensionless)")
-    require_positive("L", L, "(dimensionless)")
-    require_positive("rx", rx, "m")
-    require_positive("ry", ry, "m")
-    require_positive("e_prime", e_prime, "Pa")
-    require_positive("piezo", piezo, "1/Pa")
-    u_sum = (L / (piezo * e_prime)) ** 4
+    u_sum = _moes_sum_speed(M, L, e_prime, piezo, rx=rx, ry=ry)
     eta, u_m = _speed_and_viscosity(u_sum, rx, e_prime, viscosity, mean_speed)
     return {"force": float(M * u_sum**0.75 * e_prime * rx**2), "mean_speed": float(u_m),
             "viscosity": float(eta), "piezo": float(piezo), "rx": float(rx),

@@ -25,6 +25,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ..errors import SceneError
+from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing
 from .empirical import empirical_models, film_formulas
@@ -216,25 +217,7 @@ class BearingResult:
         out["units"] = dict(BEARING_UNITS)
         out["version"] = __version__
         out["bearing"] = self.bearing.to_dict()
-        return _jsonable(out)
-
-
-def _jsonable(value: Any) -> Any:
-    """Plain-Python copy with numpy scalars converted and non-finite floats as None."""
-    if isinstance(value, dict):
-        return {str(k): _jsonable(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_jsonable(v) for v in value]
-    if isinstance(value, np.ndarray):
-        return _jsonable(value.tolist())
-    if isinstance(value, (bool, np.bool_)):
-        return bool(value)
-    if isinstance(value, (int, np.integer)):
-        return int(value)
-    if isinstance(value, (float, np.floating)):
-        v = float(value)
-        return v if math.isfinite(v) else None
-    return value
+        return json_safe(out)
 
 
 def solve_bearing(bearing: Bearing, *,

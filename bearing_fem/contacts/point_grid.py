@@ -18,6 +18,8 @@ import scipy.sparse.linalg as spla
 from skfem import CellBasis, ElementQuad1, MeshQuad
 from skfem.quadrature import get_quadrature_line
 
+from ..numerics.fe import pattern_values
+
 #: SuperLU threshold partial pivoting of the preconditioner LU: the diagonal is kept as
 #: pivot unless it is below this fraction of the largest entry of its column (the fill-
 #: reducing nested-dissection order survives; 1.0 would be classical partial pivoting).
@@ -467,23 +469,7 @@ class TensorAssembler:
     def pattern_data(self, mat: sp.spmatrix) -> np.ndarray | None:
         """Values of ``mat`` at the pattern positions (zeros elsewhere), or None if ``mat``
         has an entry outside the pattern."""
-        mat = sp.csr_matrix(mat)
-        if mat.shape != (self.n_dofs, self.n_dofs):
-            return None
-        if mat.indptr.size == self.indptr.size and mat.nnz == self.nnz and np.array_equal(
-                mat.indptr, self.indptr) and np.array_equal(mat.indices, self.indices):
-            return np.asarray(mat.data, dtype=float)
-        mat = mat.copy()
-        mat.sum_duplicates()
-        rows = np.repeat(np.arange(self.n_dofs, dtype=np.int64), np.diff(mat.indptr))
-        key = rows * self.n_dofs + mat.indices
-        pos = np.searchsorted(self._keys, key)
-        pos = np.minimum(pos, self.nnz - 1)
-        if not np.all(self._keys[pos] == key):
-            return None
-        out = np.zeros(self.nnz)
-        out[pos] = mat.data
-        return out
+        return pattern_values(mat, self.indptr, self.indices, self._keys)
 
 
 # ---------------------------------------------------------------------------------------

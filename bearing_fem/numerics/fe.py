@@ -24,6 +24,34 @@ import scipy.sparse as sp
 from skfem import CellBasis
 
 
+def pattern_values(mat: sp.spmatrix, indptr: np.ndarray, indices: np.ndarray,
+                   keys: np.ndarray) -> np.ndarray | None:
+    """Values of the square matrix ``mat`` at the positions of a fixed CSR pattern
+    (``indptr``, ``indices``; ``keys`` = row * n + column of each entry, ascending), zeros
+    where ``mat`` has none, or None if ``mat`` has an entry outside the pattern or another
+    shape. Shared by the fixed-pattern assemblers (:class:`ElementAssembler` and the
+    tensor-grid assembler of point contacts)."""
+    n_dofs = indptr.size - 1
+    nnz = indices.size
+    mat = sp.csr_matrix(mat)
+    if mat.shape != (n_dofs, n_dofs):
+        return None
+    if mat.indptr.size == indptr.size and mat.nnz == nnz and np.array_equal(
+            mat.indptr, indptr) and np.array_equal(mat.indices, indices):
+        return np.asarray(mat.data, dtype=float)
+    mat = mat.copy()
+    mat.sum_duplicates()
+    rows = np.repeat(np.arange(n_dofs, dtype=np.int64), np.diff(mat.indptr))
+    key = rows * n_dofs + mat.indices
+    pos = np.searchsorted(keys, key)
+    pos = np.minimum(pos, nnz - 1)
+    if not np.all(keys[pos] == key):
+        return None
+    out = np.zeros(nnz)
+    out[pos] = mat.data
+    return out
+
+
 @dataclass(frozen=True)
 class QuadratureOperators:
     """Sparse interpolation/derivative maps of a scikit-fem basis (see module docstring).
@@ -181,23 +209,7 @@ class ElementAssembler:
     def pattern_data(self, mat: sp.spmatrix) -> np.ndarray | None:
         """Values of ``mat`` at the pattern positions (zeros elsewhere), or None if ``mat``
         has an entry outside the pattern."""
-        mat = sp.csr_matrix(mat)
-        if mat.shape != (self.n_dofs, self.n_dofs):
-            return None
-        if mat.indptr.size == self.indptr.size and mat.nnz == self.nnz and np.array_equal(
-                mat.indptr, self.indptr) and np.array_equal(mat.indices, self.indices):
-            return np.asarray(mat.data, dtype=float)
-        mat = mat.copy()
-        mat.sum_duplicates()
-        rows = np.repeat(np.arange(self.n_dofs, dtype=np.int64), np.diff(mat.indptr))
-        key = rows * self.n_dofs + mat.indices
-        pos = np.searchsorted(self._keys, key)
-        pos = np.minimum(pos, self.nnz - 1)
-        if not np.all(self._keys[pos] == key):
-            return None
-        out = np.zeros(self.nnz)
-        out[pos] = mat.data
-        return out
+        return pattern_values(mat, self.indptr, self.indices, self._keys)
 
 
 def quadrature_operators(basis: CellBasis) -> QuadratureOperators:
