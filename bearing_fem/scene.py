@@ -161,6 +161,34 @@ def section_from_table(table: str, klass: type, section: Any) -> Any:
     return klass(**dict(section))
 
 
+def section_to_table(section: Any) -> dict[str, Any]:
+    """The TOML table of a section dataclass: its public fields, None entries omitted,
+    tuples as lists (the inverse of :func:`section_from_table`)."""
+    table = {}
+    for f in fields(section):
+        if f.name.startswith("_"):
+            continue
+        v = getattr(section, f.name)
+        if v is not None:
+            table[f.name] = list(v) if isinstance(v, tuple) else v
+    return table
+
+
+def parse_toml(text: str, source: str, what: str = "a scene") -> dict[str, Any]:
+    """Parse TOML text (a leading UTF-8 byte-order mark is dropped); SceneError naming
+    ``source`` when it is not valid TOML or nested too deeply to read (``what`` the file
+    should have been, e.g. ``"a scene"``)."""
+    if text.startswith("\ufeff"):  # a UTF-8 byte-order mark (some editors write one)
+        text = text[1:]
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"{source} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise SceneError(f"{source} is not {what}: its arrays or tables are nested "
+                         "too deeply to read") from None
+
+
 def _float_list(values: Any) -> tuple[float, ...] | None:
     """A list of finite numbers as floats, or None if it is not one."""
     if not isinstance(values, (list, tuple)):
@@ -1013,15 +1041,7 @@ class Scene:
                          base_dir: str | Path | None = None) -> "Scene":
         """Parse and validate a scene given as TOML text; a relative ``mesh.file`` is
         taken relative to ``base_dir`` (the scene file's folder) when given."""
-        if text.startswith("\ufeff"):  # a UTF-8 byte-order mark (some editors write one)
-            text = text[1:]
-        try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as exc:
-            raise SceneError(f"{source} is not valid TOML: {exc}") from None
-        except RecursionError:
-            raise SceneError(f"{source} is not a scene: its arrays or tables are nested "
-                             "too deeply to read") from None
+        data = parse_toml(text, source, "a scene")
         mesh = data.get("mesh")
         if (base_dir is not None and isinstance(mesh, dict) and isinstance(mesh.get("file"), str)
                 and mesh["file"] and not Path(mesh["file"]).is_absolute()):
@@ -1037,15 +1057,7 @@ class Scene:
             section = getattr(self, name)
             if section is None:
                 continue
-            entries = {}
-            for f in fields(section):
-                if f.name.startswith("_"):
-                    continue
-                v = getattr(section, f.name)
-                if v is None:
-                    continue
-                entries[f.name] = list(v) if isinstance(v, tuple) else v
-            out[name] = entries
+            out[name] = section_to_table(section)
         return out
 
     def replace(self, **sections: Any) -> "Scene":

@@ -15,19 +15,14 @@ temperatures in deg C (the Prokofiev law of Yachikov & Vostrikov 2015 is written
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
 from ..scene import (SolverSpec, Traction, field_bool, field_choice, field_integer,
                      field_name_prefix, field_nonnegative, field_number, field_positive,
-                     section_from_table)
-
-try:  # Python >= 3.11
-    import tomllib
-except ModuleNotFoundError:  # pragma: no cover
-    import tomli as tomllib  # type: ignore[no-redef]
+                     parse_toml, section_from_table, section_to_table)
 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
@@ -764,11 +759,7 @@ class Bearing:
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>") -> "Bearing":
         """Parse and validate a bearing given as TOML text."""
-        try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as exc:
-            raise SceneError(f"{source} is not valid TOML: {exc}") from None
-        return cls.from_dict(data)
+        return cls.from_dict(parse_toml(text, source, "a bearing file"))
 
     def to_dict(self) -> dict[str, Any]:
         """Nested dict with the TOML layout (None entries omitted); round-trips via from_dict."""
@@ -776,16 +767,7 @@ class Bearing:
         if self.title:
             out["title"] = self.title
         for table, (attr, _) in _SECTIONS.items():
-            section = getattr(self, attr)
-            entries = {}
-            for f in fields(section):
-                if f.name.startswith("_"):
-                    continue
-                v = getattr(section, f.name)
-                if v is None:
-                    continue
-                entries[f.name] = list(v) if isinstance(v, tuple) else v
-            out[table] = entries
+            out[table] = section_to_table(getattr(self, attr))
         return out
 
     def replace(self, **sections: Any) -> "Bearing":
