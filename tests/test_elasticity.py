@@ -52,7 +52,7 @@ def _hertz_point_displacement_local(r, a, p_h, e_prime):
 
 
 # The oracles come from bearing_fem.analytic; the local transcriptions above only
-# cross-check them (test_analytic_hertz_oracles_agree_with_physics_md).
+# cross-check them (test_analytic_hertz_oracles_agree_with_theory).
 from bearing_fem.analytic import hertz_line_gap_outside, hertz_point_displacement  # noqa: E402
 
 
@@ -157,7 +157,7 @@ def test_line_hertz_convergence_order():
         f"[1.1, 2.2]: expected ~1.3-1.5 for a pressure with a square-root edge")
 
 
-def test_analytic_hertz_oracles_agree_with_physics_md():
+def test_analytic_hertz_oracles_agree_with_theory():
     x = np.linspace(1.0, 5.0, 41) * 1e-4
     np.testing.assert_allclose(hertz_line_gap_outside(x, 1e-4, 0.01),
                                _hertz_line_gap_outside_local(x, 1e-4, 0.01), rtol=1e-13,
