@@ -488,11 +488,14 @@ def korovchinsky_shape_printed(x_over_a: np.ndarray | float,
 
     ``f_printed = -(1/2) ln[(sqrt(1+t) + sqrt t)/2] - (1 - sqrt(t/(1+t))) x'^2
     - (sqrt((1+t)/t) - 1) y'^2``: the two quadratic terms carry the coefficient 1
-    instead of 1/2. This field does NOT solve the strip-source problem (its normal
-    gradient on the free surface is not zero and near the strip edges its flux is
-    negative); :func:`korovchinsky_shape` is the correct one (docs/theory.md,
-    docs/thermal.md). It is kept so that the printed two-point reconstruction can be
-    set beside the corrected one (``studies/korovchinsky_reconstruction.py``).
+    instead of 1/2. This field does NOT solve the strip-source problem: it is adiabatic
+    on the free surface, but the flux it takes in on the strip is
+    ``q_max (3 - 4 x'^2)/(2 sqrt(1 - x'^2))`` instead of ``q_max sqrt(1 - x'^2)``
+    (negative for |x'| > sqrt(3)/2, singular at the edges; the same total power
+    pi a q_max/2, so far from the strip the two fields agree).
+    :func:`korovchinsky_shape` is the correct one (docs/thermal.md). It is kept so that
+    the printed two-point reconstruction can be set beside the corrected one
+    (``studies/korovchinsky_reconstruction.py``).
 
     Parameters
     ----------

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -88,7 +89,10 @@ def integrate(z_a: float, C: float, b_alpha: float, method: str = "RK45",
 
     kw = {} if method in ("RK45", "RK23", "DOP853") else {"jac": jac}
     try:
-        with np.errstate(all="ignore"):
+        # a failed integration is reported through its status: keep scipy's and numpy's
+        # warnings (LSODA convergence failures, overflow) off the terminal
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
             sol = solve_ivp(rhs, (z_a, Z_B), [0.0], method=method, rtol=rtol, atol=atol,
                             events=[film, pressure], dense_output=dense, **kw)
     except (_Budget, OverflowError, ZeroDivisionError):
