@@ -24,7 +24,7 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import solve_ivp, trapezoid
 from scipy.optimize import brentq
 
 Z_B = 20.0
@@ -211,7 +211,7 @@ def shoot(C: float, b_alpha: float, method: str = "RK45", *, max_rhs: int = 40_0
     # I = int (1 - H) dk/dz dz with dk/dz from the equation itself (Yachikov & Vostrikov 2015, eq 8)
     with np.errstate(over="ignore"):
         dk = (1.0 - tr.H) / tr.H**3 * np.exp(np.minimum(b_alpha * tr.k, 700.0))
-    res.friction_integral = float(np.trapezoid((1.0 - tr.H) * dk, tr.z))
+    res.friction_integral = float(trapezoid((1.0 - tr.H) * dk, tr.z))
     if abs(tr.k_end) > tol_k * scale:
         return finish("not_converged", f"|k(z_b)| = {abs(tr.k_end):.3g} at the root: the "
                       "root is a discontinuity of the shooting function")

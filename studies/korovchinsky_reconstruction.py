@@ -1,4 +1,6 @@
-"""Study: Korovchinsky's two-point reconstruction of a contact temperature, printed vs corrected.
+"""Study: Korovchinsky's two-point reconstruction of a contact temperature.
+
+The printed formula (Sanko) beside the corrected one.
 
 Question
     Sanko (after Korovchinsky 1965) recovers the contact (track) temperature of a
@@ -7,8 +9,8 @@ Question
     in the two unknowns T_n C and T_n, so two readings give C, T_n, the whole field, the
     contact temperature T_max = T_n (C + ln sqrt 2) and the source power
     theta = pi lambda T_n / 2. The printed field carries the coefficient 1 instead of 1/2
-    on its two quadratic terms (docs/thermal.md, docs/theory.md). How far apart are the
-    printed and the corrected reconstructions, and which one reproduces a known truth
+    on its two quadratic terms (docs/thermal.md, docs/studies_kodnir_korovchinsky.md).
+    How far apart are the printed and the corrected reconstructions, and which one reproduces a known truth
     within what the measurement noise allows?
 
 Scene

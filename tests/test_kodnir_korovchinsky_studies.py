@@ -2,27 +2,13 @@
 printed Korovchinsky field they compare against (Sanko; Yachikov & Vostrikov 2015)."""
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from bearing_fem import analytic as A
 from bearing_fem.physics import thermal as th
-
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
-
-
-def _load(name: str):
-    if str(STUDIES) not in sys.path:
-        sys.path.insert(0, str(STUDIES))
-    spec = importlib.util.spec_from_file_location(name, STUDIES / f"{name}.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
 
 
 # ------------------------------------------------------------------ the printed field
@@ -73,8 +59,8 @@ def test_reconstruct_two_point_printed_form_and_bad_form():
 # ------------------------------------------------------------------ the studies
 
 
-def test_korovchinsky_reconstruction_quick(tmp_path):
-    mod = _load("korovchinsky_reconstruction")
+def test_korovchinsky_reconstruction_quick(tmp_path, load_study):
+    mod = load_study("korovchinsky_reconstruction")
     out = mod.main(tmp_path, quick=True)
     for ext in ("json", "md", "png"):
         assert (tmp_path / f"korovchinsky_reconstruction.{ext}").stat().st_size > 0
@@ -102,8 +88,8 @@ def test_korovchinsky_reconstruction_quick(tmp_path):
         "depth pair: printed contact temperature kelvins above the corrected one"
 
 
-def test_shooting_vs_fe_quick(tmp_path):
-    mod = _load("shooting_vs_fe")
+def test_shooting_vs_fe_quick(tmp_path, load_study):
+    mod = load_study("shooting_vs_fe")
     out = mod.main(tmp_path, quick=True)
     for ext in ("json", "md", "csv", "png"):
         assert (tmp_path / f"shooting_vs_fe.{ext}").stat().st_size > 0
