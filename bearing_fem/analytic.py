@@ -458,8 +458,9 @@ def korovchinsky_shape(x_over_a: np.ndarray | float, y_over_a: np.ndarray | floa
     """C-free part f of the corrected Korovchinsky field, T/T_n = C + f(x', y').
 
     ``f = -(1/2) ln[(sqrt(1+t) + sqrt t)/2] - (1/2)(1 - sqrt(t/(1+t))) x'^2
-    - (1/2)(sqrt((1+t)/t) - 1) y'^2`` (PHYSICS.md 5.4; seed 004 prints the quadratic
-    coefficients as 1 instead of 1/2). On the strip (t = 0) f = ln sqrt 2 - x'^2/2.
+    - (1/2)(sqrt((1+t)/t) - 1) y'^2`` (docs/thermal.md; Sanko prints the quadratic
+    coefficients as 1 instead of 1/2, :func:`korovchinsky_shape_printed`). On the strip
+    (t = 0) f = ln sqrt 2 - x'^2/2.
 
     Parameters
     ----------

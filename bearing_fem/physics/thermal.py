@@ -522,7 +522,7 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
 
     T_i = T_n C + T_n f(x_i/a, y_i/a) is linear in (T_n C, T_n), so
     ``T_n = (T_1 - T_2)/(f_1 - f_2)`` and ``C = T_1/T_n - f_1``; then
-    theta = pi lambda T_n / 2 (PHYSICS.md 5.4, seed 004 eqs. 9-11 corrected).
+    theta = pi lambda T_n / 2 (Sanko, eqs. 8-11, with the corrected field; docs/thermal.md).
 
     Parameters
     ----------
