@@ -459,7 +459,8 @@ def korovchinsky_shape(x_over_a: np.ndarray | float, y_over_a: np.ndarray | floa
 
     ``f = -(1/2) ln[(sqrt(1+t) + sqrt t)/2] - (1/2)(1 - sqrt(t/(1+t))) x'^2
     - (1/2)(sqrt((1+t)/t) - 1) y'^2`` (docs/theory.md section 14.4; Sanko prints the quadratic
-    coefficients as 1 instead of 1/2). On the strip (t = 0) f = ln sqrt 2 - x'^2/2.
+    coefficients as 1 instead of 1/2, :func:`korovchinsky_shape_printed`). On the strip
+    (t = 0) f = ln sqrt 2 - x'^2/2.
 
     Parameters
     ----------
@@ -480,6 +481,39 @@ def korovchinsky_shape(x_over_a: np.ndarray | float, y_over_a: np.ndarray | floa
         # (sqrt((1+t)/t) - 1) y'^2 = (s1 - st) y'^2 / st -> 0 as y' -> 0 on the strip
         yterm = np.where(st > 0.0, (s1 - st) * yp**2 / st, 0.0)
     return (-0.5 * np.log(0.5 * (s1 + st)) - 0.5 * (1.0 - st / s1) * xp**2 - 0.5 * yterm)
+
+
+def korovchinsky_shape_printed(x_over_a: np.ndarray | float,
+                               y_over_a: np.ndarray | float) -> np.ndarray:
+    """The Korovchinsky field as printed by Sanko (eq. 7), for comparison only.
+
+    ``f_printed = -(1/2) ln[(sqrt(1+t) + sqrt t)/2] - (1 - sqrt(t/(1+t))) x'^2
+    - (sqrt((1+t)/t) - 1) y'^2``: the two quadratic terms carry the coefficient 1
+    instead of 1/2. This field does NOT solve the strip-source problem: it is adiabatic
+    on the free surface, but the flux it takes in on the strip is
+    ``q_max (3 - 4 x'^2)/(2 sqrt(1 - x'^2))`` instead of ``q_max sqrt(1 - x'^2)``
+    (negative for |x'| > sqrt(3)/2, singular at the edges; the same total power
+    pi a q_max/2, so far from the strip the two fields agree).
+    :func:`korovchinsky_shape` is the correct one (docs/thermal.md). It is kept so that
+    the printed two-point reconstruction can be set beside the corrected one
+    (``studies/korovchinsky_reconstruction.py``).
+
+    Parameters
+    ----------
+    x_over_a, y_over_a : array_like
+        x/a across the track and y/a >= 0 into the body (dimensionless).
+
+    Returns
+    -------
+    ndarray
+        f_printed (dimensionless, in units of T_n); T/T_n = C + f_printed.
+    """
+    xp = np.asarray(x_over_a, dtype=float)
+    yp = np.abs(np.asarray(y_over_a, dtype=float))
+    t = korovchinsky_root(xp, yp)
+    log_part = -0.5 * np.log(0.5 * (np.sqrt(1.0 + t) + np.sqrt(t)))
+    # f = log_part + quadratic/2 with the corrected 1/2; the printed form doubles it
+    return 2.0 * korovchinsky_shape(xp, yp) - log_part
 
 
 def korovchinsky_characteristic_temperature(half_width: float, q_max: float,

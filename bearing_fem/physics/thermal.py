@@ -488,6 +488,9 @@ class TwoPointReconstruction:
         lambda T_n / a [W/m^2].
     T_max : float
         T_n (C + ln sqrt 2) [K], centre of the strip.
+    form : str
+        "corrected" (default) or "printed": which field was fitted (see
+        :func:`reconstruct_two_point`).
     """
 
     half_width: float
@@ -497,21 +500,30 @@ class TwoPointReconstruction:
     source_power: float
     q_max: float
     T_max: float
+    form: str = "corrected"
 
     def temperature(self, x: np.ndarray | float, y: np.ndarray | float) -> np.ndarray:
         """Reconstructed temperature [K] at (x, y) [m], same datum as the input points."""
         a = self.half_width
-        return self.T_n * (self.C + analytic.korovchinsky_shape(np.asarray(x, float) / a,
-                                                                np.asarray(y, float) / a))
+        return self.T_n * (self.C + _SHAPES[self.form](np.asarray(x, float) / a,
+                                                       np.asarray(y, float) / a))
+
+
+#: The C-free field shapes a two-point reconstruction can fit.
+_SHAPES = {"corrected": analytic.korovchinsky_shape,
+           "printed": analytic.korovchinsky_shape_printed}
 
 
 def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[float],
-                          conductivity: float) -> TwoPointReconstruction:
+                          conductivity: float,
+                          form: Literal["corrected", "printed"] = "corrected"
+                          ) -> TwoPointReconstruction:
     """Find C and T_n of the corrected Korovchinsky field from T at two points.
 
     T_i = T_n C + T_n f(x_i/a, y_i/a) is linear in (T_n C, T_n), so
     ``T_n = (T_1 - T_2)/(f_1 - f_2)`` and ``C = T_1/T_n - f_1``; then
-    theta = pi lambda T_n / 2 (docs/theory.md section 14.4, Sanko's eqs. 9-11 corrected).
+    theta = pi lambda T_n / 2 (Sanko, eqs. 8-11, with the corrected field; docs/theory.md
+    section 14.4).
 
     Parameters
     ----------
@@ -521,15 +533,24 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
         Two points with temperatures in one common datum (y >= 0).
     conductivity : float
         lambda [W/(m K)].
+    form : {"corrected", "printed"}
+        The field fitted: the corrected Korovchinsky field (default), or the field as
+        printed by Sanko, with quadratic coefficients 1 instead of 1/2
+        (:func:`bearing_fem.analytic.korovchinsky_shape_printed`), only to reproduce
+        and measure the printed method (``studies/korovchinsky_reconstruction.py``).
 
     Raises
     ------
     ValueError
-        Bad arguments, two points on one isotherm of f (|f_1 - f_2| too small), or a
+        Bad arguments (including an unknown ``form``), two points on one isotherm of f (|f_1 - f_2| too small), or a
         non-positive T_n (the temperatures fall towards the source: not a heat source).
     """
     a = require_positive("half_width", half_width, "m")
     lam = require_positive("conductivity", conductivity, "W/(m K)")
+    if form not in _SHAPES:
+        raise ValueError(f"form must be 'corrected' or 'printed' (which Korovchinsky field "
+                         f"to fit, dimensionless), got {form!r}")
+    shape = _SHAPES[form]
     pts = []
     for name, p in (("p1", p1), ("p2", p2)):
         arr = np.asarray(p, dtype=float)
@@ -538,7 +559,7 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
         if arr[1] < 0:
             raise ValueError(f"{name} y must be >= 0 m (into the body), got {arr[1]!r}")
         pts.append(arr)
-    f1, f2 = (float(analytic.korovchinsky_shape(p[0] / a, p[1] / a)) for p in pts)
+    f1, f2 = (float(shape(p[0] / a, p[1] / a)) for p in pts)
     if abs(f1 - f2) < 1e-9:
         raise ValueError(f"p1 and p2 lie on one isotherm of the Korovchinsky field "
                          f"(f1 = {f1:.6g}, f2 = {f2:.6g}, dimensionless): T_n is undetermined")
@@ -551,7 +572,7 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
     return TwoPointReconstruction(half_width=a, conductivity=lam, C=float(C), T_n=float(Tn),
                                   source_power=float(np.pi * lam * Tn / 2.0),
                                   q_max=float(lam * Tn / a),
-                                  T_max=float(Tn * analytic.korovchinsky_max(C)))
+                                  T_max=float(Tn * (C + shape(0.0, 0.0))), form=form)
 
 
 # ----------------------------------------------------------------------------------------
