@@ -425,6 +425,15 @@ REDUCED_POISEUILLE_LINE = True
 #: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
 #: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge).
 COARSEST_NODES = 501
+#: Grid sequencing: at most this many halvings of the spacing below the solve's grid. A
+#: coarse level must still resolve the outlet spike, which narrows with load: the default
+#: grid grows as sqrt(M) up to MAX_DEFAULT_ELASTIC_NODES, and below the cap the levels
+#: stop at a quarter of it anyway (e.g. 901, 1801, 3601 at M = 1000); capped at 4001
+#: nodes (M > ~1500), four levels went down to 501 nodes (83 per Hertz half-width), where
+#: Newton and every continuation step stalled at M = 1874, L = 0 .. 3.6 and M = 4329 and
+#: 1e4, L = 3.6 .. 10.7 (``studies/stability_atlas.py``); from 1001 nodes they converge in
+#: 14-28 iterations.
+MAX_COARSENINGS = 2
 #: Newton iterations allowed to the direct attempt and to each continuation step before
 #: backing off (fail fast: a stalled attempt costs more than a smaller step).
 ATTEMPT_ITERATIONS = 40
@@ -558,7 +567,12 @@ def is_linear(scene) -> bool:
 
 
 def line_levels(nodes: int, coarsest: int = COARSEST_NODES) -> list[int]:
-    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level."""
+    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level.
+
+    At most :data:`MAX_COARSENINGS` halvings below ``nodes``, and no level below
+    ``coarsest`` nodes.
+    """
+    coarsest = max(coarsest, (nodes - 1) // 2**MAX_COARSENINGS + 1)
     levels = [nodes]
     while (levels[-1] - 1) % 2 == 0 and (levels[-1] - 1) // 2 + 1 >= coarsest:
         levels.append((levels[-1] - 1) // 2 + 1)
