@@ -286,7 +286,7 @@ def _read_summary(folder: Path | None) -> tuple[dict | None, list[str]]:
 
 
 def run_atlas(cases: list[dict], store: Path, *, workers: int | None = None,
-              scheduler=None) -> tuple[list[dict], int]:
+              scheduler=None, retry_failed: bool = False) -> tuple[list[dict], int]:
     """Solve the cases as one sweep into ``store``; return (records, cases solved now)."""
     from bearing_fem.io import read_result
     from bearing_fem.sweep import Case, RunStore, sweep
@@ -304,7 +304,7 @@ def run_atlas(cases: list[dict], store: Path, *, workers: int | None = None,
             by_hash[c.hash] = c
             sweep_cases.append(c)
     report = sweep(sweep_cases, store=store, workers=workers, scheduler=scheduler,
-                   progress=True)
+                   retry_failed=retry_failed, progress=True)
     with RunStore(store) as s:
         stored = {r["hash"]: r for r in s.rows()}
         paths = {h: s.resolve(r["result_path"]) if r.get("result_path") else None
@@ -497,8 +497,12 @@ def plot_maps(outdir: Path, records: list[dict]) -> list[str]:
 
 
 def main(outdir: str | Path = "out/stability_atlas", quick: bool = False, *,
-         workers: int | None = None, scheduler=None) -> dict:
+         workers: int | None = None, scheduler=None, retry_failed: bool = False) -> dict:
     """Run (or resume) the atlas; write its tables and maps; return its numbers.
+
+    ``workers`` (local pool size) and ``scheduler`` (a Dask address or client) say where
+    the cases run; ``retry_failed`` solves the stored failures again (after a solver
+    change).
 
     Returns
     -------
@@ -511,7 +515,8 @@ def main(outdir: str | Path = "out/stability_atlas", quick: bool = False, *,
     outdir.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     cases = atlas_cases(quick)
-    records, solved = run_atlas(cases, outdir / STORE, workers=workers, scheduler=scheduler)
+    records, solved = run_atlas(cases, outdir / STORE, workers=workers, scheduler=scheduler,
+                                retry_failed=retry_failed)
     summary = summarise(records)
     write_tables(outdir, records, summary)
     figures = plot_maps(outdir, records)
@@ -532,5 +537,8 @@ if __name__ == "__main__":
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--workers", type=int, default=None)
     parser.add_argument("--scheduler", default=None)
+    parser.add_argument("--retry-failed", action="store_true",
+                        help="solve the cases stored as failed again")
     ns = parser.parse_args()
-    main(ns.outdir, quick=ns.quick, workers=ns.workers, scheduler=ns.scheduler)
+    main(ns.outdir, quick=ns.quick, workers=ns.workers, scheduler=ns.scheduler,
+         retry_failed=ns.retry_failed)

@@ -71,3 +71,15 @@ def test_high_load_line_converges_on_the_default_grid(load_study):
     assert r.status == "converged", r.message
     assert r.newton_iterations <= 40, "three levels, no continuation (measured 16)"
     assert math.isfinite(r.summary()["h_central"])
+
+
+def test_light_point_load_starts_from_a_finite_guess(load_study):
+    # M = 0.3 on 97^2: the default domain is about 320 Hertz radii long (8 hydrodynamic
+    # lengths), 3.3 Hertz radii per cell; the Hertzian start fell between the nodes, its
+    # integral was 0 and every attempt "diverged" at iteration 0 with residual NaN
+    mod = load_study("stability_atlas")
+    for L in (0.0, 5.0):
+        r = bf.solve(mod.point_scene(0.3, L))
+        assert r.status == "converged", r.message
+        assert r.newton_iterations <= 30, "measured 14"
+        assert math.isfinite(r.summary()["h_central"])

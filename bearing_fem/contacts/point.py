@@ -1100,7 +1100,12 @@ class PointModel:
         if scene.load.force is not None and setup.compliance is not None:
             X, Y = grid.node_coordinates()
             hz = setup.hertz
-            p = hz.p_h * np.sqrt(np.maximum(1.0 - (X / hz.a_x) ** 2 - (Y / hz.a_y) ** 2, 0.0))
+            # at very light loads the Hertz ellipse may fall between the nodes of the
+            # (hydrodynamically long) default grid: the guess spans at least 1.5 cells,
+            # or its integral would be 0 and the load scaling NaN (M = 0.3 on 97^2)
+            a_x = max(hz.a_x, 1.5 * float(np.max(np.diff(grid.x))))
+            a_y = max(hz.a_y, 1.5 * float(np.max(np.diff(grid.y))))
+            p = hz.p_h * np.sqrt(np.maximum(1.0 - (X / a_x) ** 2 - (Y / a_y) ** 2, 0.0))
             p = p * scene.load.force / (problem.mass @ p)
             v0 = float(grid.interpolate(problem.displacement(p), np.array([0.0]),
                                         np.array([0.0]))[0])
