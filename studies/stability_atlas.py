@@ -11,13 +11,14 @@ Scenes (all isothermal, incompressible, Reynolds cavitation unless said)
 * ``line_map``: elastic line contacts (R = 10 mm, E' = 2.2e11 Pa, eta0 = 0.01 Pa s),
   Moes M in 12 log-spaced values 1 .. 1e4 x L in 8 values 0 .. 25, each for Barus and
   Roelands viscosity, pure rolling and slide-to-roll ratios 0.5 and 2 (Barus). (M, L) are
-  realised by :func:`bearing_fem.units.line_scene_from_moes` with alpha = 2e-8 1/Pa, or
-  the smallest larger alpha that keeps p_h <= 5 GPa (alpha p_h > 100: else the Hertz
-  contact would not be small against the radius and the scene would be refused); L = 0
-  is isoviscous. The solver's default mesh.
+  realised by :func:`bearing_fem.units.line_scene_from_moes` with alpha = 2e-8 1/Pa; where
+  alpha p_h > 110, E' is raised to 40 p_h (else the Hertz contact would not be small
+  against the radius and the scene would be refused); L = 0 is isoviscous. The solver's
+  default mesh. Barus scenes with alpha p_h > 700 are refused by the scene's own check
+  (exp(alpha p_h) beyond double precision): an explicit ``invalid_scene`` outcome.
 * ``point_map``: elastic circular contacts (rx = ry = 10 mm, same materials), M in 12
   log-spaced values 5 .. 2000 x L in 8 values 0 .. 25
-  (:func:`bearing_fem.units.point_scene_parameters_from_moes`, alpha as above), Barus
+  (:func:`bearing_fem.units.point_scene_parameters_from_moes`, alpha and E' as above), Barus
   pure rolling on :data:`POINT_NODES`^2 nodes (the solver's default domain and solver
   settings); Roelands and slide-to-roll 0.5 and 2 on every other M and L (6 x 4).
 * ``ellipse``: ry/rx from 0.2 to 20 at M = 100, L = 10 (Barus, pure rolling).
@@ -75,9 +76,12 @@ POINT_NODES = 97
 LINE_M = tuple(float(v) for v in np.logspace(0.0, 4.0, 12))
 POINT_M = tuple(float(v) for v in np.logspace(math.log10(5.0), math.log10(2000.0), 12))
 MAP_L = tuple(float(v) for v in np.linspace(0.0, 25.0, 8))
-#: Barus alpha of the map scenes [1/Pa], and the Hertz pressure bound [Pa] that raises it.
+#: Barus alpha of the map scenes [1/Pa] and their reduced modulus [Pa], raised to
+#: HERTZ_MODULUS_RATIO p_h where alpha p_h > 110 (p_h = alpha p_h / alpha), so that the
+#: Hertz contact stays small against the radius (b/R = 4 p_h/E' = 0.1).
 PIEZO = 2.0e-8
-MAX_HERTZ_PRESSURE = 5.0e9
+E_PRIME = 2.2e11
+HERTZ_MODULUS_RATIO = 40.0
 #: Variants of the maps: (viscosity law, slide-to-roll ratio (u1 - u2)/u_m).
 VARIANTS = (("barus", 0.0), ("roelands", 0.0), ("barus", 0.5), ("barus", 2.0))
 #: Acceptance targets (Barus, pure rolling maps).
@@ -88,9 +92,9 @@ STORE = "stability_atlas.sqlite"
 
 
 # --- scenes ------------------------------------------------------------------------------
-def _piezo_for(alpha_ph: float) -> float:
-    """alpha [1/Pa]: PIEZO, or larger so that p_h = alpha_ph/alpha stays <= 5 GPa."""
-    return max(PIEZO, alpha_ph / MAX_HERTZ_PRESSURE) if alpha_ph > 0 else PIEZO
+def _e_prime_for(alpha_ph: float) -> float:
+    """E' [Pa]: E_PRIME, or HERTZ_MODULUS_RATIO p_h where that is larger."""
+    return max(E_PRIME, HERTZ_MODULUS_RATIO * alpha_ph / PIEZO)
 
 
 def _line_alpha_ph(M: float, L: float) -> float:
@@ -114,8 +118,8 @@ def _with_kinematics(d: dict, u_m: float, law: str, srr: float) -> dict:
 def line_scene(M: float, L: float, law: str = "barus", srr: float = 0.0) -> Scene:
     """Elastic line scene realising Moes (M, L) (L = 0: isoviscous), default mesh."""
     if L > 0:
-        piezo = _piezo_for(_line_alpha_ph(M, L))
-        par = units.line_scene_from_moes(M, L, piezo=piezo)
+        par = units.line_scene_from_moes(M, L, piezo=PIEZO,
+                                         e_prime=_e_prime_for(_line_alpha_ph(M, L)))
     else:
         par = units.line_scene_from_moes(M, 1.0)   # W, U do not depend on alpha
         par["piezo"] = 0.0
@@ -134,9 +138,9 @@ def point_scene(M: float, L: float, law: str = "barus", srr: float = 0.0, *,
     """Elastic point scene realising Moes (M, L) on nodes^2 (solver defaults otherwise)."""
     rx = 0.01
     if L > 0:
-        piezo = _piezo_for(_point_alpha_ph(M, L))
         d = units.point_scene_parameters_from_moes(M, L, rx=rx, ry=rx * ry_over_rx,
-                                                   piezo=piezo)
+                                                   piezo=PIEZO,
+                                                   e_prime=_e_prime_for(_point_alpha_ph(M, L)))
     else:
         d = units.point_scene_parameters_from_moes(M, 1.0, rx=rx, ry=rx * ry_over_rx)
         d["piezo"] = 0.0
@@ -164,10 +168,10 @@ def _physical_scene(kind: str, u_m: float) -> Scene:
 
 
 def rigid_scene(kind: str, cavitation: str, ratio: float) -> Scene:
-    """Rigid scene (gap 1 um, R = 10 mm, eta0 = 0.01 Pa s, u_m = 1 m/s) whose Barus alpha
+    """Rigid scene (gap 1 um, R = 10 mm, eta0 = 0.1 Pa s, u_m = 1 m/s) whose Barus alpha
     puts it at alpha q_max = ``ratio`` of the closed form (Kapitsa for ``cavitation =
-    "none"``, Martin for a line with ``"reynolds"``)."""
-    h0, r, eta, u = 1e-6, 0.01, 0.01, 1.0
+    "none"``, Martin for a line with ``"reynolds"``); alpha <= 2e-7 1/Pa."""
+    h0, r, eta, u = 1e-6, 0.01, 0.1, 1.0
     if cavitation == "reynolds":
         q_max = float(analytic.martin_max_reduced(h0, r, eta, u))
     elif kind == "line":

@@ -83,3 +83,13 @@ def test_light_point_load_starts_from_a_finite_guess(load_study):
         assert r.status == "converged", r.message
         assert r.newton_iterations <= 30, "measured 14"
         assert math.isfinite(r.summary()["h_central"])
+
+
+def test_isoviscous_high_load_point_continues_in_speed(load_study):
+    # M = 1160, L = 0 on 97^2 stalled from the Hertzian start and had no continuation
+    # path (alpha = 0); it now continues in the entrainment speed, as line contacts do
+    mod = load_study("stability_atlas")
+    r = bf.solve(mod.point_scene(1160.0, 0.0))
+    assert r.status == "converged", r.message
+    assert "continuation in speed" in r.message
+    assert r.newton_iterations <= 150, "measured 81 (4 continuation steps)"
