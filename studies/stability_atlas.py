@@ -455,7 +455,7 @@ def write_tables(outdir: Path, records: list[dict], summary: dict) -> None:
 
 def plot_maps(outdir: Path, records: list[dict]) -> list[str]:
     """One figure per contact kind: a panel per variant, Newton iterations coloured,
-    failures crossed, alpha p_h = 40 and 100 drawn."""
+    failures crossed, refused scenes boxed, alpha p_h = 40 and 100 drawn."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -468,17 +468,20 @@ def plot_maps(outdir: Path, records: list[dict]) -> list[str]:
         variants = [v for v in VARIANTS if any((r["law"], r["srr"]) == v for r in recs)]
         if not variants:
             continue
-        fig, axes = plt.subplots(1, len(variants), figsize=(4.2 * len(variants), 3.8),
-                                 squeeze=False, sharey=True)
+        fig, axes = plt.subplots(1, len(variants), figsize=(3.6 * len(variants) + 1.0, 3.6),
+                                 squeeze=False, sharey=True, constrained_layout=True)
         for ax, (law, srr) in zip(axes[0], variants):
             rs = [r for r in recs if (r["law"], r["srr"]) == (law, srr)]
             ok = [r for r in rs if r["ok"]]
-            bad = [r for r in rs if not r["ok"]]
+            bad = [r for r in rs if not r["ok"] and r["status"] != "invalid_scene"]
+            refused = [r for r in rs if r["status"] == "invalid_scene"]
             sc = ax.scatter([r["M"] for r in ok], [r["L"] for r in ok],
                             c=[r["newton_iterations"] or 0 for r in ok], cmap="viridis",
                             s=40, vmin=0, vmax=80)
             ax.scatter([r["M"] for r in bad], [r["L"] for r in bad], marker="x", c="red",
                        s=60, label="failed")
+            ax.scatter([r["M"] for r in refused], [r["L"] for r in refused], marker="s",
+                       facecolors="none", edgecolors="grey", s=50, label="scene refused")
             ms = np.logspace(math.log10(min(r["M"] for r in rs)),
                              math.log10(max(r["M"] for r in rs)), 60)
             for level, style in ((40.0, "--"), (100.0, ":")):
@@ -489,7 +492,7 @@ def plot_maps(outdir: Path, records: list[dict]) -> list[str]:
             ax.set_xlabel("Moes M")
             ax.set_title(f"{kind}: {law}, slide-to-roll {srr:g}", fontsize=9)
         axes[0][0].set_ylabel("Moes L")
-        axes[0][0].legend(fontsize=7, loc="upper right")
+        axes[0][0].legend(fontsize=6, loc="lower left", framealpha=0.9)
         fig.colorbar(sc, ax=axes[0].tolist(), label="Newton iterations")
         path = outdir / f"stability_{kind}_map.png"
         tmp = outdir / f".stability_{kind}_map.tmp.png"
