@@ -57,10 +57,13 @@ def test_stability_atlas_quick_and_resume(tmp_path, load_study):
 
 
 def test_line_levels_stop_two_halvings_below_the_grid():
-    assert line_levels(4001) == [1001, 2001, 4001], "capped high-M grid: coarsest 1001"
-    assert line_levels(3601) == [901, 1801, 3601], "unchanged below the cap"
-    assert line_levels(2001) == [501, 1001, 2001]
-    assert line_levels(801) == [801]
+    two = MAX_COARSENINGS
+    assert line_levels(4001, max_coarsenings=two) == [1001, 2001, 4001], \
+        "capped high-M grid: coarsest 1001"
+    assert line_levels(4001) == [501, 1001, 2001, 4001], "no limit: down to 501 nodes"
+    assert line_levels(3601, max_coarsenings=two) == line_levels(3601) == [901, 1801, 3601]
+    assert line_levels(2001, max_coarsenings=two) == [501, 1001, 2001]
+    assert line_levels(801, max_coarsenings=two) == [801]
     assert MAX_COARSENINGS == 2 and COARSEST_NODES == 501
 
 
