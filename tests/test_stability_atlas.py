@@ -97,3 +97,13 @@ def test_isoviscous_high_load_point_continues_in_speed(load_study):
     assert r.status == "converged", r.message
     assert "continuation in speed" in r.message
     assert r.newton_iterations <= 150, "measured 81 (4 continuation steps)"
+
+
+def test_light_line_load_starts_from_a_finite_guess(load_study):
+    # M = 0.01: the default domain is so long against the Hertz half-width that the
+    # Hertzian start fell between the 501 nodes of the first level (NaN residual, status
+    # "diverged" at iteration 0)
+    mod = load_study("stability_atlas")
+    r = bf.solve(mod.line_scene(0.01, 5.0))
+    assert r.status == "converged", r.message
+    assert r.newton_iterations <= 60, "measured 26"

@@ -704,7 +704,11 @@ class LineModel:
                 a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2-x^2)/(2Rc)
                 p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
             else:
-                b = level.x_unit
+                # at very light loads the Hertz zone may fall between the nodes of the
+                # (hydrodynamically long) default grid: the guess spans at least 1.5
+                # cells, or its integral would be 0 and the load scaling NaN (M = 0.01
+                # on 501 nodes)
+                b = max(level.x_unit, 1.5 * float(np.max(np.diff(x))))
                 p = level.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
             p = p * w / (problem.mass @ p)
             v0 = float(np.interp(0.0, x, problem.displacement(p)))
