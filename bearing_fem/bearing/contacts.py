@@ -96,7 +96,7 @@ def _helper_scene(bearing: Bearing) -> Scene:
                  materials=Materials(reduced_modulus=2.0e11),
                  lubricant=Lubricant(viscosity=lub.reference_viscosity, piezo=lub.piezo),
                  kinematics=Kinematics(u1=1.0, u2=1.0), load=Load(force=1.0e5),
-                 thermal=_thermal_section(bearing, t))
+                 model=Model(thermal="patch"), thermal=_thermal_section(bearing, t))
 
 
 def _thermal_section(bearing: Bearing, t_oil: float) -> Thermal:

@@ -425,6 +425,18 @@ REDUCED_POISEUILLE_LINE = True
 #: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
 #: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge).
 COARSEST_NODES = 501
+#: Grid sequencing above Moes M = DENSE_MESH_MOES_M: at most this many halvings of the
+#: spacing below the solve's grid. A coarse level must still resolve the outlet spike,
+#: which narrows with load: the default
+#: grid grows as sqrt(M) up to MAX_DEFAULT_ELASTIC_NODES, and below the cap the levels
+#: stop at a quarter of it anyway (e.g. 901, 1801, 3601 at M = 1000); capped at 4001
+#: nodes (M > ~1500), four levels went down to 501 nodes (83 per Hertz half-width), where
+#: Newton and every continuation step stalled at M = 1874, L = 0 .. 3.6 and M = 4329 and
+#: 1e4, L = 3.6 .. 10.7 (``studies/stability_atlas.py``); from 1001 nodes they converge in
+#: 14-28 iterations. Below that M the full sequence from COARSEST_NODES stays (an explicit
+#: 8001-node grid at M = 5, L = 15 converges from 501 nodes without continuation, but
+#: needed continuation when started on 2001).
+MAX_COARSENINGS = 2
 #: Newton iterations allowed to the direct attempt and to each continuation step before
 #: backing off (fail fast: a stalled attempt costs more than a smaller step).
 ATTEMPT_ITERATIONS = 40
@@ -557,8 +569,15 @@ def is_linear(scene) -> bool:
             and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
 
 
-def line_levels(nodes: int, coarsest: int = COARSEST_NODES) -> list[int]:
-    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level."""
+def line_levels(nodes: int, coarsest: int = COARSEST_NODES,
+                max_coarsenings: int | None = None) -> list[int]:
+    """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level.
+
+    No level below ``coarsest`` nodes, and at most ``max_coarsenings`` halvings below
+    ``nodes`` (None: no such limit).
+    """
+    if max_coarsenings is not None:
+        coarsest = max(coarsest, (nodes - 1) // 2**max_coarsenings + 1)
     levels = [nodes]
     while (levels[-1] - 1) % 2 == 0 and (levels[-1] - 1) // 2 + 1 >= coarsest:
         levels.append((levels[-1] - 1) // 2 + 1)
@@ -618,7 +637,20 @@ class LineModel:
         return self._setups[nodes]
 
     def levels(self) -> list[LineSetup]:
-        return [self.level(n) for n in line_levels(self.setup.disc.x.size)]
+        return [self.level(n) for n in line_levels(self.setup.disc.x.size,
+                                                   max_coarsenings=self._max_coarsenings())]
+
+    def _max_coarsenings(self) -> int | None:
+        """MAX_COARSENINGS for loaded half-space scenes above DENSE_MESH_MOES_M (where
+        the outlet spike narrows with load), else None."""
+        scene = self.scene
+        if scene.load.force is None or scene.model.elasticity != "half-space":
+            return None
+        lub = scene.lubricant
+        moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
+                                 lub.viscosity, scene.kinematics.mean_speed,
+                                 lub.effective_piezo)["M"]
+        return MAX_COARSENINGS if moes_m > DENSE_MESH_MOES_M else None
 
     def coarsen(self, level: LineSetup) -> LineSetup | None:
         """The level with half the spacing's inverse (every other node), or None."""
@@ -672,7 +704,11 @@ class LineModel:
                 a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2-x^2)/(2Rc)
                 p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
             else:
-                b = level.x_unit
+                # at very light loads the Hertz zone may fall between the nodes of the
+                # (hydrodynamically long) default grid: the guess spans at least 1.5
+                # cells, or its integral would be 0 and the load scaling NaN (M = 0.01
+                # on 501 nodes)
+                b = max(level.x_unit, 1.5 * float(np.max(np.diff(x))))
                 p = level.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
             p = p * w / (problem.mass @ p)
             v0 = float(np.interp(0.0, x, problem.displacement(p)))
