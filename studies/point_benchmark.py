@@ -192,6 +192,41 @@ def _exponent(rows: list[dict]) -> float:
     return float(np.polyfit(np.log(n), np.log(t), 1)[0])
 
 
+#: Targets of the benchmark (M = 100, L = 10): CPU seconds at 257^2 and 513^2, peak MB at
+#: 513^2, growth exponent of the time per finest-level Newton iteration, CPU-time ratio
+#: 513^2 / 257^2, and CPU-time ratio to the multigrid program's W cycles.
+TARGETS = {"cpu_257_s": 3.0, "cpu_513_s": 12.0, "peak_513_mb": 400.0, "exponent": 1.1,
+           "ratio_513_257": 4.5, "fmg_ratio": 2.0}
+
+
+def _targets(by_n: dict, exponent: float, ratio: float | None, pairs: list) -> list[dict]:
+    """Each target the run can judge: what it asks, what was measured, whether met."""
+    t, out = TARGETS, []
+    if 257 in by_n:
+        c = by_n[257]["cpu_time_s"]
+        out.append({"target": f"257^2 under {t['cpu_257_s']:g} s", "measured": f"{c:.2f} s",
+                    "met": c < t["cpu_257_s"]})
+    if 513 in by_n:
+        c, m = by_n[513]["cpu_time_s"], by_n[513]["peak_rss_mb"]
+        out.append({"target": f"513^2 under {t['cpu_513_s']:g} s", "measured": f"{c:.2f} s",
+                    "met": c < t["cpu_513_s"]})
+        out.append({"target": f"peak memory at 513^2 under {t['peak_513_mb']:g} MB",
+                    "measured": f"{m:.0f} MB", "met": m < t["peak_513_mb"]})
+    if math.isfinite(exponent) and len(by_n) >= 2:
+        out.append({"target": f"time per Newton iteration growing at most as "
+                              f"N^{t['exponent']:g}", "measured": f"N^{exponent:.2f}",
+                    "met": exponent <= t["exponent"]})
+    if ratio is not None:
+        out.append({"target": f"CPU time 257^2 -> 513^2 at most x{t['ratio_513_257']:g}",
+                    "measured": f"x{ratio:.2f}", "met": ratio <= t["ratio_513_257"]})
+    if pairs:
+        med = statistics.median(p["cpu_ratio"] for p in pairs)
+        out.append({"target": f"513^2 at most {t['fmg_ratio']:g}x the multigrid W cycles",
+                    "measured": f"{med:.2f}x (median of {len(pairs)} pairs)",
+                    "met": med <= t["fmg_ratio"]})
+    return out
+
+
 def _table(rows: list[dict], finest: dict) -> list[str]:
     lines = [f"{'grid':>7} {'code':>8} {'solved':>6} {'status':>10} {'wall s':>7} "
              f"{'cpu s':>7} {'its':>4} {'its(fine)':>9} {'s/it':>6} {'gmres':>6} "
@@ -284,6 +319,11 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
                          f"{s['peak_rss_mb']:.0f} MB, load {s['load_average_1min'][0]:.2f}); "
                          f"ratio {p['cpu_ratio']:.2f}")
         lines.append(f"  median CPU ratio {statistics.median(p['cpu_ratio'] for p in pairs):.2f}")
+    targets = _targets(by_n, exps["current"], ratio, pairs)
+    if targets:
+        lines.append("targets (CPU time; wall time equals it only on an idle machine):")
+        lines += [f"  {t['target']}: {t['measured']} -> {'met' if t['met'] else 'NOT met'}"
+                  for t in targets]
     table = "\n".join(lines)
     print(table)
     (outdir / "point_benchmark.txt").write_text(table + "\n")
@@ -295,7 +335,7 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
            "rows_whole_grid": whole_rows, "growth_exponent": exps["current"],
            "growth_exponent_baseline": exps.get("baseline"),
            "growth_exponent_whole_grid": exps.get("whole"),
-           "cpu_ratio_513_257": ratio, "fmg_pairs": pairs,
+           "cpu_ratio_513_257": ratio, "fmg_pairs": pairs, "targets": targets,
            "fmg_median_cpu_ratio": (statistics.median(p["cpu_ratio"] for p in pairs)
                                     if pairs else None)}
     tmp = outdir / "point_benchmark.json.tmp"

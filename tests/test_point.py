@@ -356,6 +356,12 @@ def test_point_benchmark_quick_reports_error_against_time(tmp_path, load_study):
         assert r["peak_rss_mb"] > r["import_rss_mb"] > 0.0
         assert r["newton_iterations_finest"] >= 1 and r["time_per_iteration_s"] > 0.0
     assert rows[-1]["peak_rss_mb"] > rows[0]["peak_rss_mb"], "257^2 needs more than 65^2"
+    for r in rows:  # every attempt of every level is counted once
+        assert sum(r["level_iterations"]) == r["newton_iterations_total"], r["levels"]
+    # quick (no 513^2, no multigrid program): the 257^2 time and the growth exponent
+    judged = {t["target"].split(" ")[0] for t in out["targets"]}
+    assert judged == {"257^2", "time"}, out["targets"]
+    assert "targets" in (tmp_path / "point_benchmark.txt").read_text()
 
 
 def test_point_map_hamrock_groups(load_study):
