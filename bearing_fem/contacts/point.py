@@ -175,12 +175,19 @@ PRECONDITIONER_DROP_TOL = 1e-3
 #: 25, GMRES 701 -> 302, h_c/h_min equal to 11 digits, p_max to 10. 0 disables.
 GMRES_FORCING_MAX = 1e-1
 #: The near-field factors of a Newton step are kept for the next steps of the same
-#: problem while GMRES needed at most this many iterations with them (a fresh ILU on the
-#: 513 x 257 half grid costs ~0.33 s, a GMRES iteration ~25 ms). Measured M = 100,
-#: L = 10 at 513^2: 6 -> 12 keeps 4 instead of 6 fine-grid factorisations for 245
-#: instead of 196 GMRES iterations, 3-4% less CPU time, same Newton iterations; 20
-#: (3 factorisations, 308 iterations) gained nothing more.
-PRECONDITIONER_KEEP_ITERATIONS = 12
+#: problem while GMRES needed at most this many iterations with them.
+PRECONDITIONER_KEEP_ITERATIONS = 6
+#: ... and at most PRECONDITIONER_KEEP_ITERATIONS_LARGE on grids of at least
+#: PRECONDITIONER_LARGE_UNKNOWNS free nodes, where a factorisation costs many GMRES
+#: iterations (on the 513 x 257 half grid ~0.33 s against ~25 ms; its cost grows faster
+#: than a GMRES iteration's). Measured M = 100, L = 10 at 513^2: 12 instead of 6 keeps 4
+#: instead of 6 fine-grid factorisations for 245 instead of 196 GMRES iterations, 3-4%
+#: less CPU time, same Newton iterations; 20 (3 factorisations, 308 iterations) gained
+#: nothing more. On every grid (65^2 included) 12 changed the inexact Newton path of
+#: the coarsest level at M = 1000, L = 10 (+8 iterations of the sequence at 257^2),
+#: where a factorisation costs milliseconds.
+PRECONDITIONER_KEEP_ITERATIONS_LARGE = 12
+PRECONDITIONER_LARGE_UNKNOWNS = 30_000
 GMRES_FORCING = "eisenstat-walker"
 #: The linear solve need not be more accurate than the Newton test can see: eta_k is also
 #: allowed up to GMRES_TOLERANCE_FRACTION tol / |F_k|_2, so the linear residual left in the
@@ -821,11 +828,13 @@ class PointProblem(ScaledResidual):
                         diag: np.ndarray, shift: float) -> Callable[[np.ndarray], np.ndarray]:
         """The near-field LU solve of this Newton step: the factorization of an earlier
         step of this problem while GMRES needed at most ``PRECONDITIONER_KEEP_ITERATIONS``
-        iterations with it and the Newton shift has not grown, else a fresh one (rigid
+        (``PRECONDITIONER_KEEP_ITERATIONS_LARGE`` on large grids) iterations with it and the Newton shift has not grown, else a fresh one (rigid
         problems, solved directly, always factor afresh)."""
         kept = self._kept
-        if (self.compliance is not None and kept is not None
-                and kept["its"] <= PRECONDITIONER_KEEP_ITERATIONS
+        keep = (PRECONDITIONER_KEEP_ITERATIONS_LARGE
+                if self.free.size >= PRECONDITIONER_LARGE_UNKNOWNS
+                else PRECONDITIONER_KEEP_ITERATIONS)
+        if (self.compliance is not None and kept is not None and kept["its"] <= keep
                 and shift <= 2.0 * kept["shift"] + 1e-300):
             return kept["solve"]
         self._kept = kept = None  # free the old factors before the new ones are made
