@@ -53,6 +53,8 @@ import resource
 import statistics
 import subprocess
 import sys
+import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -126,6 +128,7 @@ def child(n: int, M: float, L: float, symmetric: bool = True) -> dict:
             "time_per_iteration_s": fine_cpu / max(fine_its, 1),
             "gmres_iterations_total": q.get("gmres_iterations"),
             "levels": [f"{st} ({its} its)" for _, st, its in res.continuation],
+            "level_iterations": [int(its) for _, _, its in res.continuation],
             "h_central_m": q.get("h_central"), "h_min_m": q.get("h_min"),
             "p_max_Pa": q.get("p_max"), "peak_rss_mb": _rss_mb(),
             "import_rss_mb": import_rss, "message": res.message}
@@ -153,19 +156,30 @@ def run_fmg(path: str | Path, M: float, L: float, setting=FMG_SETTING) -> dict:
 
     levels, start, cycles, kind = setting
     load_before = os.getloadavg()[0]
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t0 = time.perf_counter()
-    out = subprocess.run([str(path)], input=f"{M} {L} {levels} {start} {cycles} {kind}\n",
-                         capture_output=True, text=True, timeout=FMG_TIMEOUT_S,
-                         cwd=str(Path(path).resolve().parent))
-    wall = time.perf_counter() - t0
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    parsed = parse_fmg_output(out.stdout, levels)
+    with tempfile.TemporaryFile("w+") as stdout:
+        t0 = time.perf_counter()
+        proc = subprocess.Popen([str(path)], stdin=subprocess.PIPE, stdout=stdout,
+                                stderr=subprocess.DEVNULL, text=True,
+                                cwd=str(Path(path).resolve().parent))
+        timer = threading.Timer(FMG_TIMEOUT_S, proc.kill)
+        timer.start()
+        try:
+            proc.stdin.write(f"{M} {L} {levels} {start} {cycles} {kind}\n")
+            proc.stdin.close()
+            # the rusage of this child alone (RUSAGE_CHILDREN's peak would be the largest
+            # of every child so far, the solves' included)
+            _, status, usage = os.wait4(proc.pid, 0)
+        finally:
+            timer.cancel()
+        wall = time.perf_counter() - t0
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        stdout.seek(0)
+        parsed = parse_fmg_output(stdout.read(), levels)
     return {"setting": list(setting), "wall_time_s": wall,
-            "cpu_time_s": (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime),
-            "peak_rss_mb": after.ru_maxrss / 1024.0,
+            "cpu_time_s": usage.ru_utime + usage.ru_stime,
+            "peak_rss_mb": usage.ru_maxrss / 1024.0,
             "load_average_1min": [load_before, os.getloadavg()[0]],
-            "H_min": parsed["H_min"], "H_c": parsed["H_c"], "returncode": out.returncode}
+            "H_min": parsed["H_min"], "H_c": parsed["H_c"], "returncode": proc.returncode}
 
 
 def _exponent(rows: list[dict]) -> float:
@@ -178,11 +192,46 @@ def _exponent(rows: list[dict]) -> float:
     return float(np.polyfit(np.log(n), np.log(t), 1)[0])
 
 
+#: Targets of the benchmark (M = 100, L = 10): CPU seconds at 257^2 and 513^2, peak MB at
+#: 513^2, growth exponent of the time per finest-level Newton iteration, CPU-time ratio
+#: 513^2 / 257^2, and CPU-time ratio to the multigrid program's W cycles.
+TARGETS = {"cpu_257_s": 3.0, "cpu_513_s": 12.0, "peak_513_mb": 400.0, "exponent": 1.1,
+           "ratio_513_257": 4.5, "fmg_ratio": 2.0}
+
+
+def _targets(by_n: dict, exponent: float, ratio: float | None, pairs: list) -> list[dict]:
+    """Each target the run can judge: what it asks, what was measured, whether met."""
+    t, out = TARGETS, []
+    if 257 in by_n:
+        c = by_n[257]["cpu_time_s"]
+        out.append({"target": f"257^2 under {t['cpu_257_s']:g} s", "measured": f"{c:.2f} s",
+                    "met": c < t["cpu_257_s"]})
+    if 513 in by_n:
+        c, m = by_n[513]["cpu_time_s"], by_n[513]["peak_rss_mb"]
+        out.append({"target": f"513^2 under {t['cpu_513_s']:g} s", "measured": f"{c:.2f} s",
+                    "met": c < t["cpu_513_s"]})
+        out.append({"target": f"peak memory at 513^2 under {t['peak_513_mb']:g} MB",
+                    "measured": f"{m:.0f} MB", "met": m < t["peak_513_mb"]})
+    if math.isfinite(exponent) and len(by_n) >= 2:
+        out.append({"target": f"time per Newton iteration growing at most as "
+                              f"N^{t['exponent']:g}", "measured": f"N^{exponent:.2f}",
+                    "met": exponent <= t["exponent"]})
+    if ratio is not None:
+        out.append({"target": f"CPU time 257^2 -> 513^2 at most x{t['ratio_513_257']:g}",
+                    "measured": f"x{ratio:.2f}", "met": ratio <= t["ratio_513_257"]})
+    if pairs:
+        med = statistics.median(p["cpu_ratio"] for p in pairs)
+        out.append({"target": f"513^2 at most {t['fmg_ratio']:g}x the multigrid W cycles",
+                    "measured": f"{med:.2f}x (median of {len(pairs)} pairs)",
+                    "met": med <= t["fmg_ratio"]})
+    return out
+
+
 def _table(rows: list[dict], finest: dict) -> list[str]:
     lines = [f"{'grid':>7} {'code':>8} {'solved':>6} {'status':>10} {'wall s':>7} "
              f"{'cpu s':>7} {'its':>4} {'its(fine)':>9} {'s/it':>6} {'gmres':>6} "
              f"{'peak MB':>8} {'h_c [nm]':>10} {'h_min [nm]':>10} {'h_c err':>8} "
-             f"{'h_min err':>9} {'load before/after':>18}"]
+             f"{'h_min err':>9} {'load before/after':>18}  its per level"]
     for r in rows:
         lb, la = r["load_average_1min"]
         lines.append(
@@ -193,7 +242,8 @@ def _table(rows: list[dict], finest: dict) -> list[str]:
             f"{r['peak_rss_mb']:8.0f} {1e9 * r['h_central_m']:10.4f} "
             f"{1e9 * r['h_min_m']:10.4f} "
             f"{abs(r['h_central_m'] / finest['h_central_m'] - 1):8.1e} "
-            f"{abs(r['h_min_m'] / finest['h_min_m'] - 1):9.1e} {lb:9.2f}/{la:<8.2f}")
+            f"{abs(r['h_min_m'] / finest['h_min_m'] - 1):9.1e} {lb:9.2f}/{la:<8.2f}  "
+            + "+".join(str(its) for its in r.get("level_iterations", [])))
     return lines
 
 
@@ -269,6 +319,11 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
                          f"{s['peak_rss_mb']:.0f} MB, load {s['load_average_1min'][0]:.2f}); "
                          f"ratio {p['cpu_ratio']:.2f}")
         lines.append(f"  median CPU ratio {statistics.median(p['cpu_ratio'] for p in pairs):.2f}")
+    targets = _targets(by_n, exps["current"], ratio, pairs)
+    if targets:
+        lines.append("targets (CPU time; wall time equals it only on an idle machine):")
+        lines += [f"  {t['target']}: {t['measured']} -> {'met' if t['met'] else 'NOT met'}"
+                  for t in targets]
     table = "\n".join(lines)
     print(table)
     (outdir / "point_benchmark.txt").write_text(table + "\n")
@@ -280,7 +335,7 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
            "rows_whole_grid": whole_rows, "growth_exponent": exps["current"],
            "growth_exponent_baseline": exps.get("baseline"),
            "growth_exponent_whole_grid": exps.get("whole"),
-           "cpu_ratio_513_257": ratio, "fmg_pairs": pairs,
+           "cpu_ratio_513_257": ratio, "fmg_pairs": pairs, "targets": targets,
            "fmg_median_cpu_ratio": (statistics.median(p["cpu_ratio"] for p in pairs)
                                     if pairs else None)}
     tmp = outdir / "point_benchmark.json.tmp"

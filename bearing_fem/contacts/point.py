@@ -141,8 +141,14 @@ CONTINUATION_SPEED_FACTOR = 100.0
 #: Newton tolerance of the coarser levels of the grid sequence (the finest level uses
 #: ``solver.tolerance``). Measured M = 100, L = 10: the first residual on 129^2 / 257^2
 #: after interpolation is 1.3e-2 / 5.1e-3 when the coarser level stops at 1e-5 and
-#: 1.3e-2 / 4.5e-3 when it stops at 1e-8.
-COARSE_TOLERANCE = 1e-5
+#: 1.3e-2 / 4.5e-3 when it stops at 1e-8: the interpolation error dominates. With
+#: 1e-4 the first residual on 513^2 is the same (6.6e-4 after the first step, with
+#: the coarser level stopped at 1e-4 or 1e-5), the 257^2 level of a 513^2 solve takes
+#: 5 instead of 6 iterations (0.4 s less) and the finest films agree to 1e-7.
+COARSE_TOLERANCE = 1e-4
+#: Newton tolerance of intermediate continuation steps (s < 1): they only provide the
+#: start of the next step.
+INTERMEDIATE_TOLERANCE = 1e-5
 #: GMRES relative tolerance (floor) and iteration cap of the elastic Newton steps.
 GMRES_RTOL = 1e-9
 GMRES_MAX_ITERATIONS = 150
@@ -173,7 +179,20 @@ PRECONDITIONER_DROP_TOL = 1e-3
 #: save ~25 of ~40 iterations. Measured M = 100, L = 10, 257^2: Newton iterations 25 ->
 #: 25, GMRES 701 -> 302, h_c/h_min equal to 11 digits, p_max to 10. 0 disables.
 GMRES_FORCING_MAX = 1e-1
+#: The near-field factors of a Newton step are kept for the next steps of the same
+#: problem while GMRES needed at most this many iterations with them.
 PRECONDITIONER_KEEP_ITERATIONS = 6
+#: ... and at most PRECONDITIONER_KEEP_ITERATIONS_LARGE on grids of at least
+#: PRECONDITIONER_LARGE_UNKNOWNS free nodes, where a factorisation costs many GMRES
+#: iterations (on the 513 x 257 half grid ~0.33 s against ~25 ms; its cost grows faster
+#: than a GMRES iteration's). Measured M = 100, L = 10 at 513^2: 12 instead of 6 keeps 4
+#: instead of 6 fine-grid factorisations for 245 instead of 196 GMRES iterations, 3-4%
+#: less CPU time, same Newton iterations; 20 (3 factorisations, 308 iterations) gained
+#: nothing more. On every grid (65^2 included) 12 changed the inexact Newton path of
+#: the coarsest level at M = 1000, L = 10 (+8 iterations of the sequence at 257^2),
+#: where a factorisation costs milliseconds.
+PRECONDITIONER_KEEP_ITERATIONS_LARGE = 12
+PRECONDITIONER_LARGE_UNKNOWNS = 30_000
 GMRES_FORCING = "eisenstat-walker"
 #: The linear solve need not be more accurate than the Newton test can see: eta_k is also
 #: allowed up to GMRES_TOLERANCE_FRACTION tol / |F_k|_2, so the linear residual left in the
@@ -814,11 +833,13 @@ class PointProblem(ScaledResidual):
                         diag: np.ndarray, shift: float) -> Callable[[np.ndarray], np.ndarray]:
         """The near-field LU solve of this Newton step: the factorization of an earlier
         step of this problem while GMRES needed at most ``PRECONDITIONER_KEEP_ITERATIONS``
-        iterations with it and the Newton shift has not grown, else a fresh one (rigid
+        (``PRECONDITIONER_KEEP_ITERATIONS_LARGE`` on large grids) iterations with it and the Newton shift has not grown, else a fresh one (rigid
         problems, solved directly, always factor afresh)."""
         kept = self._kept
-        if (self.compliance is not None and kept is not None
-                and kept["its"] <= PRECONDITIONER_KEEP_ITERATIONS
+        keep = (PRECONDITIONER_KEEP_ITERATIONS_LARGE
+                if self.free.size >= PRECONDITIONER_LARGE_UNKNOWNS
+                else PRECONDITIONER_KEEP_ITERATIONS)
+        if (self.compliance is not None and kept is not None and kept["its"] <= keep
                 and shift <= 2.0 * kept["shift"] + 1e-300):
             return kept["solve"]
         self._kept = kept = None  # free the old factors before the new ones are made
@@ -937,12 +958,12 @@ def rigid_start(scene, setup: PointSetup, problem: PointProblem, h0: float) -> n
 #: How the shared driver attacks elastic point contacts (measured reasons at the
 #: constants above): a small decaying Newton shift from the Hertzian start and from an
 #: interpolated solution; at most TRANSFER_DIRECT_ITERATIONS direct iterations on a finer
-#: level, then warm alpha continuation from s = WARM_START_ALPHA; coarse levels and
-#: intermediate continuation steps stop at COARSE_TOLERANCE.
+#: level, then warm alpha continuation from s = WARM_START_ALPHA; coarse levels stop at
+#: COARSE_TOLERANCE, intermediate continuation steps at INTERMEDIATE_TOLERANCE.
 POINT_DRIVER = DriverSettings(transfer_iterations=TRANSFER_DIRECT_ITERATIONS,
                               start_shift=START_SHIFT, transfer_shift=TRANSFER_SHIFT,
                               coarse_tolerance=COARSE_TOLERANCE,
-                              intermediate_tolerance=COARSE_TOLERANCE,
+                              intermediate_tolerance=INTERMEDIATE_TOLERANCE,
                               warm_start=WARM_START_ALPHA, transfer_memory=TRANSFER_MEMORY,
                               blas_threads=BLAS_THREADS)
 #: Rigid Newton scenes (loaded, or non-Barus laws): plain Newton as validated.

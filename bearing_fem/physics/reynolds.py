@@ -298,15 +298,38 @@ class UpwindFluxModel(FluxModel):
         of tuples over flux components) as a sixth item."""
         rho, eps, drho, c, pe = self._coefficients(p, h, dx)
         base = self._assemble_flux(rho, eps, drho, c, h, gp, gh, gq)
-        vmax = float(np.max(np.abs(p))) if np.size(p) else 0.0
-        step = _STEP * (vmax if vmax > 0.0 else 1.0)
-        d_p = tuple(np.imag(f) / step for f in self.flux(p + 1j * step, h, gp, gh, dx, gq))
+        d_p = self._flux_dp_reduced(p, h, gp, gh, dx, gq, rho, drho, c, pe)
         d_h = self._flux_dh(rho, eps, drho, c, pe, h, gp, gh, gq, dx)
         k = rho * (h * h * h) / (12.0 * self.viscosity0)
         dim = len(gp)
         zero = np.zeros_like(np.real(base[0]))
         return (base, d_p, d_h, _diagonal(dim, c * h * drho + zero, zero),
                 _diagonal(dim, c * rho + zero, zero), _diagonal(dim, k + zero, k + zero))
+
+    def _flux_dp_reduced(self, p, h, gp, gh, dx, gq, rho, drho, c, pe):
+        """dF/dp at fixed h and gradients [m^2/(s Pa)] of the reduced-pressure flux
+        F_x = k dq/dx - u_m rho h + c (rho dh/dx + h drho/dp dp/dx), F_y = k dq/dy,
+        k = rho h^3/(12 eta0), c = (dx/2) u_m xi(Pe), Pe = u_m rho C dx/(2 eps) =
+        6 u_m C dx eta/h^3 (rho cancels), by the chain rule: only the density, its
+        slope and the viscosity are differentiated (complex steps of those scalar laws,
+        exact to rounding), not the whole flux (the same result, ~3x cheaper)."""
+        vmax = float(np.max(np.abs(p))) if np.size(p) else 0.0
+        step = _STEP * (vmax if vmax > 0.0 else 1.0)
+        pc = p + 1j * step
+        rho_p = np.imag(self.density(pc)) / step
+        dp = 1e3  # Pa; as in _coefficients
+        drho_p = np.imag(self.density(pc + dp) - self.density(pc - dp)) / (2 * dp * step)
+        k_p = rho_p * (h * h * h) / (12.0 * self.viscosity0)
+        out = [k_p * g for g in gq]
+        dx_term = rho_p * gh[0] + h * drho_p * gp[0]
+        fx = out[0] - self.mean_speed * rho_p * h + c * dx_term
+        if pe is not None:
+            eta = self.viscosity(pc)
+            pe_p = pe * (np.imag(eta) / step) / np.real(eta)  # Pe ~ eta
+            c_p = 0.5 * self.upwind * dx * self.mean_speed * _xi_derivative(pe) * pe_p
+            fx = fx + c_p * (rho * gh[0] + h * drho * gp[0])
+        out[0] = fx
+        return tuple(out)
 
     def flux_and_derivatives(self, p, h, gp, gh, dx):
         """As :meth:`FluxModel.flux_and_derivatives`; the flux is affine in grad p and
