@@ -61,7 +61,6 @@ Run ``python studies/work_precision.py OUTDIR [--quick]``; writes ``runs.csv``,
 ``wp_<case>.png`` per case plus ``wp_targets.png`` into OUTDIR. ``--quick`` runs the
 oracles and the line and circular EHL cases on smaller grid families (about a minute).
 """
-from __future__ import annotations
 
 import argparse
 import csv
