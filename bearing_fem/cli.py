@@ -309,12 +309,15 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     if args.json and not Path(args.json).resolve().parent.is_dir():
         raise _InputError(f"cannot write {args.json!r}: its directory does not exist")
     report = run_bench(quick=args.quick, repeats=args.repeat)
-    print(format_table(report))
+    if not args.quiet:
+        print(format_table(report))
     if args.json:
         try:
-            print(f"wrote {write_json(report, args.json)}")
+            written = write_json(report, args.json)
         except OSError as exc:
             raise _InputError(f"cannot write {args.json!r}: {exc.strerror or exc}") from None
+        if not args.quiet:
+            print(f"wrote {written}")
     return EXIT_OK if all(r["success"] for r in report["cases"]) else EXIT_NO_SOLUTION
 
 

@@ -43,7 +43,7 @@ finest solve as the reference uncertainty):
 * ``thermal_line``: a sliding (u1 = 2.2, u2 = 1.8 m/s) half-space roller,
   w = 2e5 N/m, R = 10 mm, eta0 = 0.05 Pa s, alpha = 2e-8 1/Pa, thermal patch (oil
   60 deg C, Prokofiev n = 2.93), Eyring traction; node counts times thermal-loop
-  tolerances 0.5, 0.05 (default) and 0.005 K.
+  tolerances 2, 0.05 (default) and 1e-4 K.
 * ``bearing_6209``: ``bf.solve_bearing`` on the shipped 6209 example with contact grids
   65^2, 129^2 (the default), 257^2 (and 33^2, which the solver may not converge on; its
   status is reported). h_central and h_min of the most loaded inner contact, the
@@ -82,8 +82,9 @@ import bearing_fem as bf  # noqa: E402
 from bearing_fem import analytic  # noqa: E402
 from bearing_fem.bearing import load_example  # noqa: E402
 from bearing_fem.contacts.point import solve_point  # noqa: E402
-from bearing_fem.scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec,  # noqa: E402
-                               Model, Scene, SolverSpec, Thermal, Traction)
+from bearing_fem.scene import (  # noqa: E402
+    Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model, Scene, SolverSpec, Thermal,
+    Traction)
 from line_ehl_map import scene_for as line_moes_scene  # noqa: E402
 from point_ehl_map import moes_scene as point_moes_scene  # noqa: E402
 
@@ -95,6 +96,9 @@ DEFAULT_TIME_FACTOR = 1.5
 #: Order of the Richardson reference (P1 elements, smooth solution).
 RICHARDSON_ORDER = 2.0
 MOES_M, MOES_L = 100.0, 10.0
+SPIKE_NOTE = ("p_max is the height of the pressure spike near the outlet, which grows as the "
+              "grid resolves it: its error against the reference only says that p_max is "
+              "not grid-converged (the films, friction and heat power are)")
 
 
 @dataclass
@@ -319,7 +323,8 @@ def line_ehl_case(quick: bool) -> Case:
                             None, None, None, default=True))
     return Case("line_ehl", "EHL line contact, Moes M = 100, L = 10", solve_contact, settings,
                 repeats=3 if not quick else 2, reference_family="uniform",
-                notes=["h_min is the smallest nodal film near the outlet constriction; its "
+                notes=[SPIKE_NOTE,
+                       "h_min is the smallest nodal film near the outlet constriction; its "
                        "position moves between nodes as the grid changes, so its error is not "
                        "monotone in the grid and its fitted order is low"])
 
@@ -342,7 +347,8 @@ def point_ehl_case(quick: bool, ry_over_rx: float = 1.0) -> Case:
         for n in grids:
             if tol != min(tols) and n >= grids[-2]:
                 continue
-            settings.append(Setting(f"n={n} tol={tol:g}", (lambda n=n, tol=tol: (scene(n, tol), {})),
+            settings.append(Setting(f"n={n} tol={tol:g}",
+                                    (lambda n=n, tol=tol: (scene(n, tol), {})),
                                     "uniform" if tol == min(tols) else None, n, tol))
     settings.append(Setting("defaults", lambda: (scene(None, None), {}), None, None, None,
                             default=True))
@@ -351,7 +357,7 @@ def point_ehl_case(quick: bool, ry_over_rx: float = 1.0) -> Case:
              f"EHL elliptical contact ry/rx = {ry_over_rx:g}, Moes M = 100, L = 10")
     return Case(name, title, solve_contact, settings, repeats=2 if quick else 3,
                 reference_family="uniform",
-                notes=[f"the finest grid ({grids[-1]}^2) runs once per repeat like the others"])
+                notes=[SPIKE_NOTE, f"the finest grid ({grids[-1]}^2) runs like the others"])
 
 
 def thermal_scene(nodes: int | None, thermal_tol: float | None) -> Scene:
@@ -370,7 +376,7 @@ def thermal_scene(nodes: int | None, thermal_tol: float | None) -> Scene:
 
 def thermal_case(quick: bool) -> Case:
     grids = (401, 801, 1601, 3201, 6401)
-    ttols = (0.5, 0.05, 0.005)
+    ttols = (2.0, 0.05, 1e-4)
     settings = []
     for tt in ttols:
         for n in grids:
@@ -384,8 +390,7 @@ def thermal_case(quick: bool) -> Case:
     return Case("thermal_line", "Thermal line contact (patch, Eyring, sliding)", solve_contact,
                 settings, repeats=2, reference_family="uniform",
                 notes=["tolerance column: the thermal loop tolerance [K]",
-                       "p_max sits on the pressure spike, which sharpens with the grid: no "
-                       "converged p_max is expected"])
+                       SPIKE_NOTE])
 
 
 def bearing_case(quick: bool) -> Case:
@@ -470,8 +475,16 @@ def references(case: Case, rows: list[dict]) -> dict:
         vals[k] = richardson(c[k], f[k], ratio)
         unc[k] = abs(f[k] / vals[k] - 1.0) if vals[k] else math.nan
     src = f"Richardson p=2 from {c['nodes']} and {f['nodes']} nodes"
+    observed = {}
+    if len(fam) >= 3:  # the order the three finest grids show (a check of p = 2)
+        g3 = fam[-3:]
+        for k in vals:
+            d1, d2 = g3[1][k] - g3[0][k], g3[2][k] - g3[1][k]
+            observed[k] = (math.log(abs(d1 / d2)) / math.log(2.0)
+                           if d1 != 0.0 and d2 != 0.0 and d1 * d2 > 0 else None)
     for r in rows:
-        refs[r["setting"]] = {"values": vals, "source": src, "uncertainty": unc}
+        refs[r["setting"]] = {"values": vals, "source": src, "uncertainty": unc,
+                              "observed_order": observed}
     c["reference_grid"] = "coarse"
     f["reference_grid"] = "finest"
     return refs
@@ -488,7 +501,8 @@ def add_errors(case: Case, rows: list[dict]) -> dict:
                                                     and r["success"]) else None)
     any_ref = next(iter(refs.values()), {})
     return {"source": any_ref.get("source"), "uncertainty": any_ref.get("uncertainty", {}),
-            "values": any_ref.get("values", {})}
+            "values": any_ref.get("values", {}),
+            "observed_order": any_ref.get("observed_order", {})}
 
 
 def fitted_orders(case: Case, rows: list[dict]) -> dict:
@@ -514,18 +528,38 @@ def fitted_orders(case: Case, rows: list[dict]) -> dict:
     return out
 
 
+def _meets(r: dict, target: float) -> bool:
+    return (r["success"] and r.get("h_central_error") is not None
+            and r.get("h_min_error") is not None
+            and r["h_central_error"] <= target and r["h_min_error"] <= target)
+
+
+def _brief(r: dict, **extra) -> dict:
+    return {"setting": r["setting"], "time_s": r["time_s"], "dofs": r["dofs"],
+            "h_central_error": r["h_central_error"], "h_min_error": r["h_min_error"], **extra}
+
+
 def cheapest(rows: list[dict], target: float) -> dict | None:
-    """The fastest successful row with both h_central and h_min errors <= target (the
-    finest reference grid excluded: its error is by construction a third of its change
-    from the next coarser grid)."""
-    ok = [r for r in rows if r["success"] and r.get("reference_grid") != "finest"
-          and r.get("h_central_error") is not None and r.get("h_min_error") is not None
-          and r["h_central_error"] <= target and r["h_min_error"] <= target]
-    if not ok:
-        return None
-    best = min(ok, key=lambda r: r["time_s"])
-    return {"setting": best["setting"], "time_s": best["time_s"], "dofs": best["dofs"],
-            "h_central_error": best["h_central_error"], "h_min_error": best["h_min_error"]}
+    """The fastest successful row with both h_central and h_min errors <= target.
+
+    The finest reference grid is a candidate only when nothing else reaches the target
+    (then ``estimate_only`` is True: its error is by construction a third of its change
+    from the next coarser grid, an estimate, not a measurement).
+    """
+    ok = [r for r in rows if r.get("reference_grid") != "finest" and _meets(r, target)]
+    if ok:
+        return _brief(min(ok, key=lambda r: r["time_s"]), estimate_only=False)
+    fin = [r for r in rows if r.get("reference_grid") == "finest" and _meets(r, target)]
+    return _brief(fin[0], estimate_only=True) if fin else None
+
+
+def cheapest_robust(rows: list[dict], target: float) -> dict | None:
+    """The fastest row that reaches the target together with every row on at least as
+    many unknowns (any tolerance), so that a lucky coarse grid whose error happens to dip
+    (h_min between nodes) does not count. The finest reference grid is excluded."""
+    pool = [r for r in rows if r.get("reference_grid") != "finest"]
+    cands = [r for r in pool if all(_meets(x, target) for x in pool if x["dofs"] >= r["dofs"])]
+    return _brief(min(cands, key=lambda r: r["time_s"])) if cands else None
 
 
 def target_report(rows: list[dict], ref: dict) -> dict:
@@ -537,13 +571,16 @@ def target_report(rows: list[dict], ref: dict) -> dict:
                                      for k in ("h_central", "h_min")}}
     for t in TARGETS:
         out[f"{t:g}"] = cheapest(rows, t)
-    f1 = out["0.01"]
-    meets = (f1 is not None and d["success"] and d["h_central_error"] is not None
-             and d["h_central_error"] <= 0.01 and d["h_min_error"] <= 0.01)
+        out[f"{t:g}_robust"] = cheapest_robust(rows, t)
+    f1, r1 = out["0.01"], out["0.01_robust"]
+    meets = _meets(d, 0.01)
     out["defaults_meet_1pct"] = bool(meets)
     out["defaults_time_ratio"] = d["time_s"] / f1["time_s"] if f1 else None
     out["defaults_within_factor"] = bool(meets and out["defaults_time_ratio"]
                                          <= DEFAULT_TIME_FACTOR)
+    out["defaults_time_ratio_robust"] = d["time_s"] / r1["time_s"] if r1 else None
+    out["defaults_within_factor_robust"] = bool(
+        meets and r1 is not None and out["defaults_time_ratio_robust"] <= DEFAULT_TIME_FACTOR)
     return out
 
 
@@ -591,6 +628,11 @@ def markdown(results: dict) -> str:
             u = c["reference"]["uncertainty"]
             lines.append("Reference uncertainty (|finest/reference - 1|): " + ", ".join(
                 f"{k} {_fmt(v, '.1e')}" for k, v in u.items()) + ".")
+        if c["reference"].get("observed_order"):
+            o = c["reference"]["observed_order"]
+            lines.append("Order observed on the three finest grids (p = 2 assumed by the "
+                         "reference): " + ", ".join(f"{k} {_fmt(v, '.2f')}" for k, v in o.items())
+                         + ".")
         for n in c["notes"]:
             lines.append(f"- {n}")
         lines.append("")
@@ -610,25 +652,37 @@ def markdown(results: dict) -> str:
             f"{fam}: " + ", ".join(f"{k} {v['order']:.2f}" for k, v in q.items() if v)
             for fam, q in c["orders"].items()) + "\n")
     lines.append("## Cheapest settings reaching the targets (h_central and h_min)\n")
-    lines.append("| case | target | setting | time s | h_central err | h_min err |")
-    lines.append("|---|---|---|---|---|---|")
+    lines.append("'fastest': the fastest setting whose errors reach the target; 'robust': "
+                 "the fastest whose errors reach it together with every setting on at least "
+                 "as many unknowns. Errors against the reference named in the case section.\n")
+    lines.append("| case | target | kind | setting | time s | unknowns | h_central err | "
+                 "h_min err |")
+    lines.append("|---|---|---|---|---|---|---|---|")
     for name, t in results["targets"].items():
         for tgt in TARGETS:
-            b = t[f"{tgt:g}"]
-            if b is None:
-                lines.append(f"| {name} | {100 * tgt:g} % | none reached | - | - | - |")
-            else:
-                lines.append(f"| {name} | {100 * tgt:g} % | {b['setting']} | {b['time_s']:.3f} "
-                             f"| {b['h_central_error']:.2e} | {b['h_min_error']:.2e} |")
+            for kind in ("", "_robust"):
+                b = t[f"{tgt:g}{kind}"]
+                label = "robust" if kind else "fastest"
+                if b is None:
+                    lines.append(f"| {name} | {100 * tgt:g} % | {label} | none reached below "
+                                 "the finest grid | - | - | - | - |")
+                    continue
+                est = " (finest grid: estimate only)" if b.get("estimate_only") else ""
+                lines.append(f"| {name} | {100 * tgt:g} % | {label} | {b['setting']}{est} | "
+                             f"{b['time_s']:.3f} | {b['dofs']} | {b['h_central_error']:.2e} | "
+                             f"{b['h_min_error']:.2e} |")
         d = t["defaults"]
-        lines.append(f"| {name} | defaults | defaults | {d['time_s']:.3f} | "
+        lines.append(f"| {name} | - | defaults | defaults | {d['time_s']:.3f} | {d['dofs']} | "
                      f"{_fmt(d['h_central_error'], '.2e')} | {_fmt(d['h_min_error'], '.2e')} |")
     lines.append("")
     for name, t in results["targets"].items():
-        ratio = t["defaults_time_ratio"]
-        lines.append(f"- {name}: defaults reach 1 %: {t['defaults_meet_1pct']}; defaults time / "
-                     f"fastest 1 % time = {_fmt(ratio, '.2f')} (target <= "
-                     f"{DEFAULT_TIME_FACTOR}): {'met' if t['defaults_within_factor'] else 'NOT met'}")
+        ok = "met" if t["defaults_within_factor"] else "NOT met"
+        okr = "met" if t["defaults_within_factor_robust"] else "NOT met"
+        lines.append(f"- {name}: defaults reach 1 % in h_central and h_min: "
+                     f"{t['defaults_meet_1pct']}; defaults time / fastest 1 % time = "
+                     f"{_fmt(t['defaults_time_ratio'], '.2f')} (<= {DEFAULT_TIME_FACTOR}: {ok}); "
+                     f"/ robust 1 % time = {_fmt(t['defaults_time_ratio_robust'], '.2f')} "
+                     f"({okr})")
     return "\n".join(lines) + "\n"
 
 

@@ -118,6 +118,22 @@ def test_one_percent_setting_found_and_cheapest(wp, case):
     assert t["defaults_within_factor"] == (ratio <= 1.5)
 
 
+@pytest.mark.parametrize("case", ["line_ehl", "circular_ehl"])
+def test_robust_one_percent_setting(wp, case):
+    """The robust 1 % setting: every setting on at least as many unknowns (finest
+    reference grid aside) also reaches 1 % in both films, and it is never faster than the
+    plain fastest one."""
+    _, res, _ = wp
+    t = res["targets"][case]
+    rob = t["0.01_robust"]
+    assert rob is not None, f"{case}: no robust 1 % setting"
+    rows = [r for r in res["cases"][case]["rows"] if r.get("reference_grid") != "finest"]
+    for r in rows:
+        if r["dofs"] >= rob["dofs"]:
+            assert r["h_central_error"] <= 0.01 and r["h_min_error"] <= 0.01, r["setting"]
+    assert rob["time_s"] >= t["0.01"]["time_s"]
+
+
 def test_richardson_formula(wp):
     mod, _, _ = wp
     # f(h) = 1 + h^2 sampled at h = 2, 1: the extrapolation is exact for order 2
