@@ -648,9 +648,11 @@ def markdown(results: dict) -> str:
                          + " | ".join(_fmt(r.get(f'{k}_error'), '.2e') for k in QUANTITIES)
                          + " |")
         lines.append("")
-        lines.append("Fitted orders (error ~ spacing^order): " + "; ".join(
-            f"{fam}: " + ", ".join(f"{k} {v['order']:.2f}" for k, v in q.items() if v)
-            for fam, q in c["orders"].items()) + "\n")
+        fits = "; ".join(f"{fam}: " + ", ".join(f"{k} {v['order']:.2f}" for k, v in q.items()
+                                               if v)
+                         for fam, q in c["orders"].items() if any(q.values()))
+        lines.append("Fitted orders (error ~ spacing^order): "
+                     + (fits or "none (fewer than two grids below the reference grids)") + "\n")
     lines.append("## Cheapest settings reaching the targets (h_central and h_min)\n")
     lines.append("'fastest': the fastest setting whose errors reach the target; 'robust': "
                  "the fastest whose errors reach it together with every setting on at least "
