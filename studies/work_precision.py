@@ -67,7 +67,6 @@ import csv
 import json
 import math
 import os
-import platform
 import sys
 import time
 from dataclasses import dataclass, field, replace
@@ -81,10 +80,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bearing_fem as bf  # noqa: E402
 from bearing_fem import analytic  # noqa: E402
 from bearing_fem.bearing import load_example  # noqa: E402
+from bearing_fem.bench import machine_info, thermal_line_scene  # noqa: E402
 from bearing_fem.contacts.point import solve_point  # noqa: E402
 from bearing_fem.scene import (  # noqa: E402
-    Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model, Scene, SolverSpec, Thermal,
-    Traction)
+    Contact, Kinematics, Load, Lubricant, MeshSpec, Model, Scene, SolverSpec)
 from line_ehl_map import scene_for as line_moes_scene  # noqa: E402
 from point_ehl_map import moes_scene as point_moes_scene  # noqa: E402
 
@@ -299,6 +298,21 @@ def martin_case(quick: bool) -> Case:
 # ---------------------------------------------------------------------------------------
 # EHL cases
 # ---------------------------------------------------------------------------------------
+def grid_tolerance_settings(grids, tols, scene, label: str = "tol={tol:g}") -> list[Setting]:
+    """Settings over grids x tolerances: the tightest tolerance on every grid is the
+    nested family ("uniform"); looser ones skip the two finest (reference) grids.
+    ``scene(n, tol)`` builds the scene of one setting."""
+    out = []
+    for tol in tols:
+        for n in grids:
+            if tol != min(tols) and n >= grids[-2]:
+                continue
+            out.append(Setting(f"n={n} " + label.format(tol=tol),
+                               (lambda n=n, tol=tol: (scene(n, tol), {})),
+                               "uniform" if tol == min(tols) else None, n, tol))
+    return out
+
+
 def _with_solver(scene: Scene, tol: float | None) -> Scene:
     return replace(scene, solver=SolverSpec() if tol is None else SolverSpec(tolerance=tol))
 
@@ -306,15 +320,8 @@ def _with_solver(scene: Scene, tol: float | None) -> Scene:
 def line_ehl_case(quick: bool) -> Case:
     grids = (201, 401, 801, 1601, 3201) if quick else (201, 401, 801, 1601, 3201, 6401, 12801)
     tols = (1e-5, 1e-8) if quick else (1e-4, 1e-6, 1e-8)
-    settings = []
-    for tol in tols:
-        for n in grids:
-            if tol != min(tols) and n >= grids[-2]:
-                continue  # the reference grids only at the tightest tolerance
-            settings.append(Setting(f"n={n} tol={tol:g}",
-                                    (lambda n=n, tol=tol: (_with_solver(
-                                        line_moes_scene(MOES_M, MOES_L, n), tol), {})),
-                                    "uniform" if tol == min(tols) else None, n, tol))
+    settings = grid_tolerance_settings(
+        grids, tols, lambda n, tol: _with_solver(line_moes_scene(MOES_M, MOES_L, n), tol))
     # node counts between the nested ones, at the default tolerance (candidate defaults)
     for n in ((601,) if quick else (601, 1201, 2401)):
         settings.append(Setting(f"n={n} tol=1e-08", (lambda n=n: (_with_solver(
@@ -342,14 +349,7 @@ def point_ehl_case(quick: bool, ry_over_rx: float = 1.0) -> Case:
             s = replace(s, mesh=MeshSpec())
         return _with_solver(s, tol)
 
-    settings = []
-    for tol in tols:
-        for n in grids:
-            if tol != min(tols) and n >= grids[-2]:
-                continue
-            settings.append(Setting(f"n={n} tol={tol:g}",
-                                    (lambda n=n, tol=tol: (scene(n, tol), {})),
-                                    "uniform" if tol == min(tols) else None, n, tol))
+    settings = grid_tolerance_settings(grids, tols, scene)
     settings.append(Setting("defaults", lambda: (scene(None, None), {}), None, None, None,
                             default=True))
     name = "circular_ehl" if ry_over_rx == 1.0 else "ellipse_ehl"
@@ -361,30 +361,19 @@ def point_ehl_case(quick: bool, ry_over_rx: float = 1.0) -> Case:
 
 
 def thermal_scene(nodes: int | None, thermal_tol: float | None) -> Scene:
-    """Sliding half-space roller with the thermal patch (see the module docstring)."""
-    th = dict(oil_temperature=60.0, exponent=2.93)
+    """The bench's sliding half-space roller with the thermal patch
+    (:func:`bearing_fem.bench.thermal_line_scene`) on ``nodes`` with a thermal-loop
+    tolerance (None: the defaults)."""
+    s = thermal_line_scene()
     if thermal_tol is not None:
-        th["tolerance"] = thermal_tol
-    return Scene(title="thermal line", contact=Contact(kind="line", rx=0.01, length=0.02),
-                 materials=Materials(e1=2.1e11, nu1=0.3, e2=2.1e11, nu2=0.3),
-                 lubricant=Lubricant(viscosity=0.05, piezo=2e-8),
-                 kinematics=Kinematics(u1=2.2, u2=1.8), load=Load(force=2e5),
-                 model=Model(thermal="patch"),
-                 mesh=MeshSpec(nodes=nodes) if nodes else MeshSpec(),
-                 thermal=Thermal(**th), traction=Traction(model="eyring"))
+        s = replace(s, thermal=replace(s.thermal, tolerance=thermal_tol))
+    return replace(s, mesh=MeshSpec(nodes=nodes)) if nodes else s
 
 
 def thermal_case(quick: bool) -> Case:
     grids = (401, 801, 1601, 3201, 6401)
-    ttols = (2.0, 0.05, 1e-4)
-    settings = []
-    for tt in ttols:
-        for n in grids:
-            if tt != min(ttols) and n >= grids[-2]:
-                continue
-            settings.append(Setting(f"n={n} thermal tol={tt:g} K",
-                                    (lambda n=n, tt=tt: (thermal_scene(n, tt), {})),
-                                    "uniform" if tt == min(ttols) else None, n, tt))
+    settings = grid_tolerance_settings(grids, (2.0, 0.05, 1e-4), thermal_scene,
+                                       label="thermal tol={tol:g} K")
     settings.append(Setting("defaults", lambda: (thermal_scene(None, None), {}), None, None, None,
                             default=True))
     return Case("thermal_line", "Thermal line contact (patch, Eyring, sliding)", solve_contact,
@@ -743,11 +732,8 @@ def figures(outdir: Path, results: dict) -> None:
 
 
 def machine() -> dict:
-    import scipy
-
-    return {"platform": platform.platform(), "cpu_count": os.cpu_count(),
-            "python": platform.python_version(), "numpy": np.__version__,
-            "scipy": scipy.__version__, "bearing_fem": bf.__version__,
+    """The machine (:func:`bearing_fem.bench.machine_info`), package version, timestamp."""
+    return {**machine_info(), "bearing_fem": bf.__version__,
             "timestamp": time.strftime("%Y-%m-%d %H:%M:%S %Z")}
 
 
