@@ -731,6 +731,96 @@ def figures(outdir: Path, results: dict) -> None:
     plt.close(fig)
 
 
+# ---------------------------------------------------------------------------------------
+# line default density over the Moes map (evidence for the line default)
+# ---------------------------------------------------------------------------------------
+#: Moes points of the check and the node densities tried, as fractions of the default.
+DENSITY_CASES = tuple((M, L) for M in (20, 100, 500) for L in (5, 10, 20))
+DENSITY_FRACTIONS = (1.0 / 3.0, 0.5, 2.0 / 3.0, 1.0)
+
+
+def _nodes_fraction(n_default: int, fraction: float) -> int:
+    """Node count with ``fraction`` of the default density, N - 1 divisible by 4."""
+    return 4 * max(2, round(fraction * (n_default - 1) / 4)) + 1
+
+
+def line_density_check(repeats: int = 2, log: Callable[[str], None] = lambda s: None) -> list[dict]:
+    """h_central and h_min errors of the line solver at fractions of its default node
+    density, for Moes points over the map; reference: Richardson (p = 2) from 2 N - 1 and
+    4 N - 3 nodes (N the default count). Times: minimum of ``repeats`` interleaved runs."""
+    from line_ehl_map import default_nodes
+
+    out = []
+    for M, L in DENSITY_CASES:
+        n_def = default_nodes(M, L)
+        fine = [2 * n_def - 1, 4 * n_def - 3]
+        vals = {}
+        for n in fine:
+            vals[n] = _summary_values(bf.solve(line_moes_scene(M, L, n)))
+        row = {"M": M, "L": L, "default_nodes": n_def, "status": vals[fine[1]]["status"]}
+        if not all(v["success"] for v in vals.values()):
+            row["error"] = "reference grids did not converge"
+            out.append(row)
+            log(f"density M={M} L={L}: reference failed")
+            continue
+        ref = {k: richardson(vals[fine[0]][k], vals[fine[1]][k]) for k in ("h_central", "h_min")}
+        runs: dict[float, dict] = {}
+        for _ in range(repeats):
+            for f in DENSITY_FRACTIONS:
+                n = _nodes_fraction(n_def, f) if f != 1.0 else None
+                t0 = time.perf_counter()
+                v = _summary_values(bf.solve(line_moes_scene(M, L, n)))
+                dt = time.perf_counter() - t0
+                r = runs.setdefault(f, {"nodes": v["dofs"], "times": []})
+                r["times"].append(dt)
+                r.update(status=v["status"], success=v["success"],
+                         h_central_error=abs(v["h_central"] / ref["h_central"] - 1)
+                         if v["success"] else None,
+                         h_min_error=abs(v["h_min"] / ref["h_min"] - 1) if v["success"] else None)
+        for f, r in runs.items():
+            r["time_s"] = min(r["times"])
+            del r["times"]
+        row["fractions"] = {f"{f:.3f}": r for f, r in runs.items()}
+        out.append(row)
+        log(f"density M={M} L={L}: " + ", ".join(
+            f"{f}: {r['nodes']} {_fmt(r['h_central_error'], '.1e')}/{_fmt(r['h_min_error'], '.1e')}"
+            f" {r['time_s']:.3f}s" for f, r in row["fractions"].items()))
+    return out
+
+
+def density_markdown(rows: list[dict]) -> str:
+    heads = " | ".join(f"{f:.2f} x default: nodes, h_c err, h_min err, s"
+                       for f in DENSITY_FRACTIONS)
+    lines = ["## Line node density over the Moes map\n",
+             "Errors of h_central and h_min at fractions of the default node density "
+             "(the default: 300 nodes per Hertz half-width, more above M = 250) against "
+             "Richardson (p = 2) from 2N - 1 and 4N - 3 nodes; minimum of interleaved "
+             "times.\n",
+             f"| M | L | {heads} |", "|---|---|" + "---|" * len(DENSITY_FRACTIONS)]
+    for r in rows:
+        if "fractions" not in r:
+            lines.append(f"| {r['M']} | {r['L']} | " + " | ".join(
+                [r.get("error", "-")] * len(DENSITY_FRACTIONS)) + " |")
+            continue
+        cells = []
+        for f in DENSITY_FRACTIONS:
+            x = r["fractions"][f"{f:.3f}"]
+            cells.append(f"{x['nodes']}, {_fmt(x['h_central_error'], '.1e')}, "
+                         f"{_fmt(x['h_min_error'], '.1e')}, {x['time_s']:.3f}")
+        lines.append(f"| {r['M']} | {r['L']} | " + " | ".join(cells) + " |")
+    def film_error(x: dict) -> float:  # a failed solve counts as 100 %
+        e = (x["h_central_error"], x["h_min_error"])
+        return 1.0 if None in e else max(e)
+
+    worst = {f"{f:.3f}": max((film_error(r["fractions"][f"{f:.3f}"])
+                              for r in rows if "fractions" in r), default=None)
+             for f in DENSITY_FRACTIONS}
+    lines.append("")
+    lines.append("Largest film error over the map: " + ", ".join(
+        f"{float(k):.2f} x default {_fmt(v, '.1e')}" for k, v in worst.items()) + ".")
+    return "\n".join(lines) + "\n"
+
+
 def machine() -> dict:
     """The machine (:func:`bearing_fem.bench.machine_info`), package version, timestamp."""
     return {**machine_info(), "bearing_fem": bf.__version__,
@@ -755,6 +845,8 @@ def main(outdir, quick: bool = False, verbose: bool = False) -> dict:
         if case.name in ("line_ehl", "circular_ehl"):
             results["targets"][case.name] = target_report(rows, ref)
         all_rows += rows
+    if not quick:
+        results["line_density"] = line_density_check(log=log)
     write_runs_csv(out / "runs.csv", all_rows)
     with (out / "orders.csv.tmp").open("w", newline="") as fh:
         w = csv.writer(fh)
@@ -767,6 +859,8 @@ def main(outdir, quick: bool = False, verbose: bool = False) -> dict:
                                     " ".join(map(str, v["nodes"]))])
     os.replace(out / "orders.csv.tmp", out / "orders.csv")
     md = markdown(results)
+    if results.get("line_density"):
+        md += "\n" + density_markdown(results["line_density"])
     _write_atomic(out / "work_precision.md", md)
     _write_atomic(out / "targets.md", md[md.index("## Cheapest"):])
     _write_atomic(out / "summary.json", json.dumps(results, indent=1, default=str))

@@ -134,6 +134,17 @@ def test_robust_one_percent_setting(wp, case):
     assert rob["time_s"] >= t["0.01"]["time_s"]
 
 
+def test_density_node_counts(wp):
+    """The line density check keeps N - 1 divisible by 4 (a node at x = 0 on every
+    coarser level of the grid sequence) and the requested fraction within one step."""
+    mod, _, _ = wp
+    for n_def in (801, 1801, 2549, 4001):
+        for f in mod.DENSITY_FRACTIONS:
+            n = mod._nodes_fraction(n_def, f)
+            assert (n - 1) % 4 == 0
+            assert abs((n - 1) - f * (n_def - 1)) <= 2, (n_def, f, n)
+
+
 def test_richardson_formula(wp):
     mod, _, _ = wp
     # f(h) = 1 + h^2 sampled at h = 2, 1: the extrapolation is exact for order 2
