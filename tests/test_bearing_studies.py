@@ -82,3 +82,18 @@ def test_mill_vs_rig_quick(tmp_path, load_study):
                                err_msg="mill's most loaded roller: FE h_c within 10% of Moes")
     assert row["rig_over_mill_h_min"] < 0.9, \
         "the Ratner-based scaling does not give the same FE film on the rig"
+
+
+def test_bearing_acceptance_quick(tmp_path, load_study):
+    out = load_study("bearing_acceptance").main(tmp_path, quick=True)
+    assert out["max_stribeck_difference"] < 1e-2, "Stribeck 4.37 / 4.08 within 1% (Z = 9 is "\
+        "0.35% above the continuous value)"
+    assert out["max_imbalance"] < 1e-3, "element loads balance the applied load within 0.1%"
+    assert out["max_harris_difference"] < 1e-2, "load zone within 1% of Harris' integral"
+    assert out["max_film_difference"] < 0.10, "most loaded contacts within 10% of NVM / Moes"
+    assert out["max_energy_balance_difference"] < 1e-3, "torque x speed = heat within 0.1%"
+    for row in out["ehl"]:
+        assert row["status"] == "converged"
+        assert 0.0 <= row["stabilisation_fraction"] < 0.5, \
+            "the stabilisation share of the heat is reported and bounded on coarse grids"
+    assert (tmp_path / "bearing_acceptance.md").is_file()

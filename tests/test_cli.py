@@ -222,7 +222,10 @@ def test_sigint_of_a_running_solve(tmp_path):
     out = tmp_path / "out"
     proc = subprocess.Popen([sys.executable, "-m", "bearing_fem", "-v", "solve",
                              _write(tmp_path, data), "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            # a runner started in the background (`cmd &`) ignores SIGINT
+                            # and its children inherit that: give the child the default
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         first = proc.stderr.readline()
         assert "solving" in first, first
