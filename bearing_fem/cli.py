@@ -300,6 +300,27 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
     return EXIT_NO_SOLUTION
 
 
+def _cmd_bench(args: argparse.Namespace) -> int:
+    """``bearing-fem bench [--quick] [--json FILE]``: time the reference cases."""
+    from .bench import format_table, run_bench, write_json
+
+    if args.repeat is not None and args.repeat < 1:
+        raise _InputError(f"--repeat must be at least 1, got {args.repeat}")
+    if args.json and not Path(args.json).resolve().parent.is_dir():
+        raise _InputError(f"cannot write {args.json!r}: its directory does not exist")
+    report = run_bench(quick=args.quick, repeats=args.repeat)
+    if not args.quiet:
+        print(format_table(report))
+    if args.json:
+        try:
+            written = write_json(report, args.json)
+        except OSError as exc:
+            raise _InputError(f"cannot write {args.json!r}: {exc.strerror or exc}") from None
+        if not args.quiet:
+            print(f"wrote {written}")
+    return EXIT_OK if all(r["success"] for r in report["cases"]) else EXIT_NO_SOLUTION
+
+
 # ---------------------------------------------------------------------------------------
 # sweeps (logic in bearing_fem.sweep; see docs/sweeps.md)
 # ---------------------------------------------------------------------------------------
@@ -504,6 +525,18 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", "-o", metavar="DIR", required=True, help="output directory")
     p.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     p.set_defaults(func=_cmd_bearing)
+    p = sub.add_parser("bench", help="time fixed reference cases (line, point, thermal, 6209)",
+                       description="Solve fixed reference cases (docs/performance.md), print "
+                                   "time, Newton iterations, status, h_central and its error "
+                                   "estimate per case, and optionally write them as JSON "
+                                   "with the package version and the machine. Exit code 3 "
+                                   "when a case is unsuccessful.")
+    p.add_argument("--quick", action="store_true",
+                   help="coarse bearing contact grids, two repetitions (well under a minute)")
+    p.add_argument("--json", metavar="FILE", default=None, help="write the report to FILE")
+    p.add_argument("--repeat", type=int, default=None, metavar="N",
+                   help="repetitions per case (default 2 quick, 3 full); the minimum is shown")
+    p.set_defaults(func=_cmd_bench)
     _add_sweep_parsers(sub)
     return parser
 
