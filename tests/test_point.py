@@ -568,6 +568,29 @@ def test_reduced_flux_derivatives_match_complex_step():
             np.testing.assert_array_equal(a, b, err_msg="same flux as flux()")
 
 
+def test_reduced_flux_derivative_is_finite_where_barus_viscosity_overflows():
+    # alpha p > ~710 (a line at M = 1e4, L = 10.7 reaches it in the outlet spike): eta is
+    # inf there, Pe infinite and the upwind factor saturated, so d/dp of the upwinding
+    # term is 0; the analytic derivative once gave inf/inf = NaN there, a NaN Jacobian
+    # and a stalled solve
+    import bearing_fem.contacts.point as bp
+
+    scene = _moes_scene(100, 10, 17)
+    setup = bp.point_setup(scene)
+    flux = bp.flux_model(scene, setup)
+    p, h, gp, gh, rng = _flux_inputs(2)
+    alpha = scene.lubricant.piezo
+    p = p.copy()
+    p[: p.size // 2] = 800.0 / alpha  # alpha p = 800: exp overflows
+    n = p.size
+    gq = (1e10 * rng.standard_normal(n), 1e10 * rng.standard_normal(n))
+    dx = np.logspace(-9, -4, n)
+    with np.errstate(over="ignore"):
+        d_p = flux.flux_and_derivatives_reduced(p, h, gp, gh, dx, gq)[1]
+    for comp in d_p:
+        assert np.all(np.isfinite(comp)), "dF/dp finite where the viscosity overflows"
+
+
 def test_reduced_poiseuille_newton_direction_is_exact(monkeypatch):
     # the Jacobian (element assembly, column scaling by dq/dp, FFT compliance) against
     # central differences of the residual, GMRES solved to 1e-9 (no inexact forcing)

@@ -325,8 +325,14 @@ class UpwindFluxModel(FluxModel):
         fx = out[0] - self.mean_speed * rho_p * h + c * dx_term
         if pe is not None:
             eta = self.viscosity(pc)
-            pe_p = pe * (np.imag(eta) / step) / np.real(eta)  # Pe ~ eta
-            c_p = 0.5 * self.upwind * dx * self.mean_speed * _xi_derivative(pe) * pe_p
+            # Pe ~ eta; where eta overflows (Barus at alpha p > ~700) Pe is infinite and
+            # xi'(Pe) Pe' -> 0 (xi saturates at 1): the 0 * inf and inf/inf there are set
+            # to their limit 0, not NaN
+            with np.errstate(over="ignore", invalid="ignore"):
+                pe_p = pe * (np.imag(eta) / step) / np.real(eta)
+                xi_p = _xi_derivative(pe) * pe_p
+            xi_p = np.where(np.isfinite(xi_p), xi_p, 0.0)
+            c_p = 0.5 * self.upwind * dx * self.mean_speed * xi_p
             fx = fx + c_p * (rho * gh[0] + h * drho * gp[0])
         out[0] = fx
         return tuple(out)
