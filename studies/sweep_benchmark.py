@@ -89,10 +89,9 @@ def sweep_run(runs: list[tuple[float, float, int]], outdir: Path, executor: str)
     t_start = time.perf_counter()
     cluster = None
     if executor == "dask":
-        from distributed import LocalCluster
+        from bearing_fem.sweep import local_cluster
 
-        cluster = LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+        cluster = local_cluster(WORKERS)
     t0 = time.perf_counter()
     try:
         report = sweep(list(cases.values()), store=store, scheduler=cluster,

@@ -14,7 +14,9 @@ import dask  # noqa: E402
 from distributed.diagnostics.plugin import WorkerPlugin  # noqa: E402
 
 import bearing_fem as bf  # noqa: E402
-from bearing_fem.sweep import RunStore, SweepSpec, query_runs  # noqa: E402
+from bearing_fem.sweep import RunStore, SweepSpec, local_cluster, query_runs  # noqa: E402
+from bearing_fem.sweep.execute import (WORKER_MALLOC_ENV, malloc_environment,  # noqa: E402
+                                       slow_malloc_workers)
 
 from test_sweep_run import successes_have_files, write_sweep  # noqa: E402
 
@@ -54,14 +56,24 @@ def client():
     cloudpickle.register_pickle_by_value(sys.modules[__name__])  # the plugin travels
     with dask.config.set({"distributed.scheduler.allowed-failures": 1,
                           "distributed.scheduler.worker-saturation": 1.0}):
-        cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                           dashboard_address=None)
+        cluster = local_cluster(2)
         c = distributed.Client(cluster, set_as_default=False)
     try:
         yield c
     finally:
         c.close()
         cluster.close()
+
+
+def test_local_cluster_workers_run_with_the_malloc_settings(client):
+    envs = client.run(malloc_environment)
+    assert len(envs) == 2
+    for worker, env in envs.items():
+        assert env == WORKER_MALLOC_ENV, (worker, env)
+    assert slow_malloc_workers(envs) == []
+    dask_default = {"w1": {"MALLOC_TRIM_THRESHOLD_": "65536", "MALLOC_MMAP_THRESHOLD_": None},
+                    "w2": dict(WORKER_MALLOC_ENV)}
+    assert slow_malloc_workers(dask_default) == ["w1"], "Dask's default is flagged"
 
 
 def make_sweep(tmp_path: Path) -> Path:

@@ -21,14 +21,15 @@ from pathlib import Path
 from typing import Any, Callable, Mapping, Sequence
 
 from ..errors import SceneError
-from .execute import SweepReport, run_cases
+from .execute import WORKER_MALLOC_ENV, SweepReport, local_cluster, run_cases
 from .progress import SolveProgress, SweepProgress, solve_progress
 from .spec import Axis, Case, SweepSpec, ZipAxis, cases_of, check_workers, scene_hash
 from .store import RunStore, export_csv, export_parquet, parse_filter
 
 __all__ = ["sweep", "SweepSpec", "Case", "Axis", "ZipAxis", "SweepReport", "RunStore",
            "scene_hash", "SweepProgress", "SolveProgress", "solve_progress", "query_runs",
-           "format_runs", "export_runs", "DEFAULT_COLUMNS"]
+           "format_runs", "export_runs", "DEFAULT_COLUMNS", "local_cluster",
+           "WORKER_MALLOC_ENV"]
 
 #: Summary columns ``bearing-fem runs`` lists by default (when the store has them).
 DEFAULT_COLUMNS = ("h_central", "h_min", "p_max", "friction_coefficient", "friction_torque",
