@@ -58,7 +58,8 @@ def test_line_map_as_a_sweep_in_process(tmp_path, load_study):
 def test_sweep_benchmark_quick(tmp_path, load_study):
     out = load_study("sweep_benchmark").main(tmp_path, quick=True)
     assert out["runs"] == 13 and out["grids"] == [65]
-    for name in ("dask", "pool"):
+    assert out["sweeps"]["dask_summary"]["files"] == "summary"
+    for name in ("dask", "dask_summary", "pool"):
         s = out["sweeps"][name]
         assert s["successes"] == s["ran"] == 13
         assert s["statuses_match"], "the sweep solves what the serial loop solves"
@@ -66,4 +67,5 @@ def test_sweep_benchmark_quick(tmp_path, load_study):
             "same scenes, same solver: the films agree to round-off (measured 6e-13; only "
             "the worker's BLAS thread count differs)")
         assert s["ratio"] > 0  # wall times are reported, never asserted
+        assert s["run_s"] >= s["solver_s"] > 0, "a run's time includes its solve"
     assert "| serial loop (one process) |" in (tmp_path / "sweep_benchmark.md").read_text()
