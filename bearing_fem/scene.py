@@ -189,6 +189,23 @@ def parse_toml(text: str, source: str, what: str = "a scene") -> dict[str, Any]:
                          "too deeply to read") from None
 
 
+def read_text_file(path: str | Path, what: str) -> str:
+    """The text of a UTF-8 file; SceneError naming ``what`` (e.g. ``"scene file"``) and
+    the path when the file cannot be read or is not UTF-8 text."""
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"cannot read {what} {str(path)!r}: {exc.strerror or exc}") from None
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"{what} {str(path)!r} is not UTF-8 text ({exc.reason})") from None
+
+
+def read_toml(path: str | Path, what: str) -> dict[str, Any]:
+    """Read a TOML file (:func:`read_text_file`, :func:`parse_toml`); SceneError naming
+    ``what`` (e.g. ``"sweep file"``) and the path when it is unreadable or invalid."""
+    return parse_toml(read_text_file(path, what), f"{what} {str(path)!r}", "readable TOML")
+
+
 def _float_list(values: Any) -> tuple[float, ...] | None:
     """A list of finite numbers as floats, or None if it is not one."""
     if not isinstance(values, (list, tuple)):
@@ -1030,11 +1047,8 @@ class Scene:
     def from_toml(cls, path: str | Path) -> "Scene":
         """Read and validate a TOML scene file."""
         path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneError(f"cannot read scene file {str(path)!r}: {exc.strerror}") from None
-        return cls.from_toml_string(text, source=str(path), base_dir=path.parent)
+        return cls.from_toml_string(read_text_file(path, "scene file"), source=str(path),
+                                    base_dir=path.parent)
 
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>",

@@ -22,7 +22,7 @@ from typing import Any, Literal, Mapping
 from ..errors import SceneError
 from ..scene import (SolverSpec, Traction, field_bool, field_choice, field_integer,
                      field_name_prefix, field_nonnegative, field_number, field_positive,
-                     parse_toml, section_from_table, section_to_table)
+                     parse_toml, read_text_file, section_from_table, section_to_table)
 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
@@ -749,12 +749,7 @@ class Bearing:
     @classmethod
     def from_toml(cls, path: str | Path) -> "Bearing":
         """Read and validate a TOML bearing file."""
-        path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneError(f"cannot read bearing file {str(path)!r}: {exc.strerror}") from None
-        return cls.from_toml_string(text, source=str(path))
+        return cls.from_toml_string(read_text_file(path, "bearing file"), source=str(path))
 
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>") -> "Bearing":
