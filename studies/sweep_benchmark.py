@@ -70,6 +70,45 @@ def serial_loop(runs: list[tuple[float, float, int]]) -> dict:
             "statuses": statuses}
 
 
+_CHILD = """
+import json, os, sys, time
+sys.path.insert(0, sys.argv[2])
+import bearing_fem as bf
+from point_ehl_map import moes_scene
+scene = moes_scene(100.0, 10.0, int(sys.argv[1]))
+bf.solve(moes_scene(100.0, 10.0, 33))  # imports and first-call costs out of the timing
+t0, c0 = time.perf_counter(), os.times()
+r = bf.solve(scene)
+c1 = os.times()
+print(json.dumps({"wall_s": time.perf_counter() - t0, "user_s": c1.user - c0.user,
+                  "system_s": c1.system - c0.system, "status": r.status}))
+"""
+
+
+def malloc_check(nodes: int, repeats: int = 2) -> dict:
+    """One M = 100, L = 10 solve on ``nodes``^2 in a fresh process with the environment
+    of a Dask worker by default (MALLOC_TRIM_THRESHOLD_=65536), with
+    :data:`bearing_fem.sweep.WORKER_MALLOC_ENV`, and with neither; interleaved,
+    ``repeats`` times, the fastest kept."""
+    import subprocess
+
+    from bearing_fem.sweep import WORKER_MALLOC_ENV
+
+    base = {k: v for k, v in os.environ.items() if k not in WORKER_MALLOC_ENV}
+    envs = {"plain": base, "dask default": base | {"MALLOC_TRIM_THRESHOLD_": "65536"},
+            "WORKER_MALLOC_ENV": base | WORKER_MALLOC_ENV}
+    best: dict[str, dict] = {}
+    for _ in range(repeats):
+        for name, env in envs.items():
+            out = subprocess.run([sys.executable, "-c", _CHILD, str(nodes),
+                                  str(Path(__file__).resolve().parent)], env=env,
+                                 capture_output=True, text=True, check=True)
+            row = json.loads(out.stdout.strip().splitlines()[-1])
+            if name not in best or row["wall_s"] < best[name]["wall_s"]:
+                best[name] = row
+    return {"nodes": nodes, "runs": best}
+
+
 def sweep_run(runs: list[tuple[float, float, int]], outdir: Path, executor: str,
               files: str = "all") -> dict:
     """The same solves as a sweep into a fresh store: on a Dask LocalCluster of
@@ -120,6 +159,7 @@ def main(outdir, quick: bool = False, *, pool: bool = False) -> dict:
     outdir.mkdir(parents=True, exist_ok=True)
     grids = (65,) if quick else GRIDS
     runs = [(M, L, n) for M, L in map_cases() for n in grids]
+    malloc = malloc_check(65 if quick else 257)
     serial = serial_loop(runs)
     results = {"dask": sweep_run(runs, outdir, "dask"),
                "dask_summary": sweep_run(runs, outdir, "dask", files="summary")}
@@ -129,7 +169,7 @@ def main(outdir, quick: bool = False, *, pool: bool = False) -> dict:
            "cores": os.cpu_count(), "serial_s": serial["wall_s"],
            "serial_cpu_s": serial["cpu_s"],
            "serial_load": [serial["load_before"], serial["load_after"]],
-           "target_ratio": TARGET_RATIO, "sweeps": {}}
+           "target_ratio": TARGET_RATIO, "malloc": malloc, "sweeps": {}}
     for name, r in results.items():
         diffs = [abs(r["films"][k] / serial["films"][k] - 1.0) for k in serial["films"]
                  if r["films"][k] is not None and serial["films"][k]]
@@ -165,6 +205,12 @@ def main(outdir, quick: bool = False, *, pool: bool = False) -> dict:
               "('files, sum'). 'solver time, sum' adds the solves' own wall times over the "
               "workers (two solves at once share the memory bandwidth). A load average "
               "above 0 before a phase means other programs shared the cores."]
+    lines += ["", f"One {malloc['nodes']}^2 solve (M = 100, L = 10) in a fresh process, "
+              "fastest of 2 interleaved runs, by the malloc environment:", "",
+              "| environment | wall [s] | user [s] | system [s] |", "|---|---|---|---|"]
+    for name, row in malloc["runs"].items():
+        lines.append(f"| {name} | {row['wall_s']:.2f} | {row['user_s']:.2f} | "
+                     f"{row['system_s']:.2f} |")
     text = "\n".join(lines) + "\n"
     (outdir / "sweep_benchmark.md").write_text(text)
     print(text)

@@ -69,3 +69,6 @@ def test_sweep_benchmark_quick(tmp_path, load_study):
         assert s["ratio"] > 0  # wall times are reported, never asserted
         assert s["run_s"] >= s["solver_s"] > 0, "a run's time includes its solve"
     assert "| serial loop (one process) |" in (tmp_path / "sweep_benchmark.md").read_text()
+    runs = out["malloc"]["runs"]
+    assert set(runs) == {"plain", "dask default", "WORKER_MALLOC_ENV"}
+    assert all(r["status"] == "converged" and r["wall_s"] > 0 for r in runs.values())

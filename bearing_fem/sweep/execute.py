@@ -50,9 +50,10 @@ SUMMARY_FILE = {"scene": "summary.json", "bearing": "bearing_summary.json"}
 #: ``MALLOC_TRIM_THRESHOLD_=65536`` (``distributed.nanny.pre-spawn-environ``); setting it
 #: switches off glibc's adaptive mmap threshold, so every array above 128 KiB is mapped
 #: and unmapped anew and a point solve spends most of its time in page faults: a 257^2
-#: circular solve took 5.0 s (3.0 s of it system time) in such a worker against 1.8 s in
+#: circular solve took 5.0 s (3.1 s of it system time) in such a worker against 1.8 s in
 #: a plain process. With a 32 MiB mmap threshold (glibc's adaptive maximum) and a 64 MiB
-#: trim threshold the worker is as fast as a plain process (1.85 s).
+#: trim threshold the worker is as fast as a plain process (1.7 s; the malloc table of
+#: ``studies/sweep_benchmark.py``).
 #: :func:`local_cluster` starts its workers with these; a worker started by
 #: ``dask worker`` needs them in its environment (docs/sweeps.md).
 WORKER_MALLOC_ENV = {"MALLOC_MMAP_THRESHOLD_": "33554432",
