@@ -590,11 +590,9 @@ __all__ += ["export_bearing", "write_bearing_summary", "write_elements_csv", "BE
 
 
 def write_bearing_summary(result: Any, path: str | Path) -> Path:
-    """Write ``result.summary()`` of a bearing result as strict JSON (not atomic)."""
-    path = Path(path)
-    text = json.dumps(json_safe(result.summary()), indent=2, allow_nan=False)
-    path.write_text(text + "\n", encoding="utf-8")
-    return path
+    """Write ``result.summary()`` of a bearing result as strict JSON (not atomic; the
+    same writer as a contact's :func:`write_summary`)."""
+    return write_summary(result, path)
 
 
 def write_elements_csv(result: Any, path: str | Path) -> Path:

@@ -36,14 +36,19 @@ def _pyplot():
     return plt
 
 
-def _save(fig: Any, path: Path) -> Path:
+def _save(fig: Any, path: str | Path) -> Path:
+    """Lay out ``fig``, write it to ``path`` (PNG, 120 dpi) under a temporary name moved
+    into place, and close it (also when writing fails)."""
+    plt = _pyplot()
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp.png")
     try:
+        fig.tight_layout()
+        path.parent.mkdir(parents=True, exist_ok=True)
         fig.savefig(tmp, dpi=120)
         os.replace(tmp, path)
     finally:
+        plt.close(fig)
         if tmp.exists():
             tmp.unlink()
     return path
@@ -87,10 +92,7 @@ def plot_load_distribution(result: Any, path: str | Path) -> Path:
         ax2.set_ylabel("contact angle [deg]", color="C2")
     ax.legend(loc="upper right", fontsize=8)
     ax.set_title(result.bearing.title or result.bearing.geometry.type, fontsize=10)
-    fig.tight_layout()
-    out = _save(fig, Path(path))
-    plt.close(fig)
-    return out
+    return _save(fig, path)
 
 
 def plot_films(result: Any, path: str | Path) -> Path:
@@ -107,10 +109,7 @@ def plot_films(result: Any, path: str | Path) -> Path:
     ax2.set_xlabel("azimuth psi [deg]")
     ax1.legend(fontsize=8)
     ax1.set_title("EHL films and pressures of the loaded elements", fontsize=10)
-    fig.tight_layout()
-    out = _save(fig, Path(path))
-    plt.close(fig)
-    return out
+    return _save(fig, path)
 
 
 def plot_torque_comparison(result: Any, path: str | Path) -> Path:
@@ -132,10 +131,7 @@ def plot_torque_comparison(result: Any, path: str | Path) -> Path:
     ax.legend(fontsize=8)
     ax.set_title("EHL torque (rolling losses only) vs empirical models", fontsize=10)
     plt.setp(ax.get_xticklabels(), rotation=15, fontsize=8)
-    fig.tight_layout()
-    out = _save(fig, Path(path))
-    plt.close(fig)
-    return out
+    return _save(fig, path)
 
 
 def write_figures(result: Any, outdir: str | Path) -> dict[str, Path]:

@@ -13,7 +13,7 @@ import math
 import unicodedata
 from dataclasses import MISSING, dataclass, field, fields, replace
 from pathlib import Path
-from typing import Any, Literal, Mapping
+from typing import Any, Literal, Mapping, Sequence
 
 import numpy as np
 
@@ -82,6 +82,16 @@ def field_number(obj: Any, name: str, unit: str) -> float:
     return value
 
 
+def field_poisson(obj: Any, name: str) -> float:
+    """Field ``name`` as a Poisson ratio in (-1, 0.5] [-] (stored back as a float), else
+    SceneError naming the field and the value."""
+    value = field_number(obj, name, "(dimensionless)")
+    if not -1.0 < value <= 0.5:
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must lie in (-1, 0.5] "
+                         f"(dimensionless), got {value!r}")
+    return value
+
+
 def field_positive(obj: Any, name: str, unit: str) -> float:
     """Field ``name`` as a finite float > 0 (stored back), else SceneError (with ``unit``)."""
     full, value = _scalar(obj, name, unit)
@@ -140,6 +150,75 @@ def field_bool(obj: Any, name: str) -> bool:
     return value
 
 
+def field_range(obj: Any, name: str) -> tuple[float, float] | None:
+    """Field ``name`` as a domain (start, end) in Hertz half-widths (or sqrt(2 r h0) for
+    rigid scenes) with start < 0 < end and both ends within :data:`MAX_RANGE`; None stays
+    None; SceneError otherwise."""
+    r = getattr(obj, name)
+    if r is None:
+        return None
+    where = f"{field_name_prefix(obj)}.{name}"
+    if (not isinstance(r, (list, tuple)) or len(r) != 2
+            or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
+        raise SceneError(f"{where} must be two numbers [start, end] (in Hertz half-widths), "
+                         f"got {show_value(r)}")
+    try:
+        lo, hi = float(r[0]), float(r[1])
+    except OverflowError:
+        lo = hi = math.inf
+    if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
+        raise SceneError(f"{where} must satisfy start < 0 < end (in Hertz half-widths), "
+                         f"got {show_value(r)}")
+    if max(-lo, hi) > MAX_RANGE:
+        raise SceneError(f"{where} must lie within [-{MAX_RANGE:g}, {MAX_RANGE:g}] (in Hertz "
+                         f"half-widths, or sqrt(2 r h0) for rigid scenes), got {show_value(r)}")
+    object.__setattr__(obj, name, (lo, hi))
+    return lo, hi
+
+
+def field_piezo(obj: Any, name: str = "piezo") -> float:
+    """Field ``name`` as a pressure-viscosity coefficient alpha in [0, 1e-6] 1/Pa (typical
+    oils 1e-8..3e-8), else SceneError."""
+    value = field_nonnegative(obj, name, "1/Pa")
+    if value > 1e-6:
+        raise SceneError(f"{field_name_prefix(obj)}.{name} must be <= 1e-6 1/Pa (typical oils "
+                         f"1e-8..3e-8), got {value!r}")
+    return value
+
+
+def field_piezo_table(obj: Any) -> None:
+    """The optional alpha(t) table of a section: ``piezo_temperatures`` [deg C] (strictly
+    ascending, in (-273.15, :data:`TEMPERATURE_RANGE` max]) and ``piezo_values`` [1/Pa]
+    (each in (0, 1e-6]), both or neither, of equal length; stored back as tuples of
+    floats, SceneError otherwise."""
+    where = field_name_prefix(obj)
+    ts, vs = obj.piezo_temperatures, obj.piezo_values
+    if (ts is None) != (vs is None):
+        raise SceneError(f"{where}: give both {where}.piezo_temperatures (deg C) and "
+                         f"{where}.piezo_values (1/Pa), or neither; got {show_value(ts)}, "
+                         f"{show_value(vs)}")
+    if ts is None:
+        return
+    table = _float_list(ts), _float_list(vs)
+    if table[0] is None or table[1] is None or not len(ts) == len(vs) >= 1:
+        raise SceneError(f"{where}.piezo_temperatures (deg C) and {where}.piezo_values "
+                         f"(1/Pa) must be equal-length lists of finite numbers, got "
+                         f"{show_value(ts)}, {show_value(vs)}")
+    ts, vs = table
+    if any(b <= a for a, b in zip(ts, ts[1:])):
+        raise SceneError(f"{where}.piezo_temperatures must be strictly ascending (deg C), "
+                         f"got {show_value(ts)}")
+    t_hi = TEMPERATURE_RANGE[1]
+    if any(not -273.15 < t <= t_hi for t in ts):
+        raise SceneError(f"{where}.piezo_temperatures must lie in (-273.15, {t_hi:g}] "
+                         f"deg C, got {show_value(ts)}")
+    if any(not 0.0 < v <= 1e-6 for v in vs):
+        raise SceneError(f"{where}.piezo_values must lie in (0, 1e-6] 1/Pa, got "
+                         f"{show_value(vs)}")
+    object.__setattr__(obj, "piezo_temperatures", ts)
+    object.__setattr__(obj, "piezo_values", vs)
+
+
 def section_from_table(table: str, klass: type, section: Any) -> Any:
     """Build the section dataclass ``klass`` from the TOML table ``[table]``.
 
@@ -174,6 +253,64 @@ def section_to_table(section: Any) -> dict[str, Any]:
     return table
 
 
+def sections_from_dict(data: Any, sections: Mapping[str, tuple[str, type]],
+                       required: Sequence[str], what: str, hint: str = "") -> dict[str, Any]:
+    """Keyword arguments of a file's dataclass (a scene, a bearing) from a nested mapping
+    with the TOML layout: an optional ``title`` and one table per section.
+
+    Parameters
+    ----------
+    data : mapping
+        The parsed file.
+    sections : mapping
+        TOML table name -> (attribute name, section dataclass), in file order.
+    required : sequence of str
+        The tables a file must have.
+    what : str
+        What the file holds, in messages (``"scene"``, ``"bearing"``).
+    hint : str
+        Appended to the message naming unknown tables.
+
+    Returns
+    -------
+    dict
+        ``title`` (when given) and attribute name -> section (:func:`section_from_table`)
+        for each table present. SceneError when ``data`` is not a mapping, names an
+        unknown table or lacks a required one.
+    """
+    if not isinstance(data, Mapping):
+        raise SceneError(f"a {what} must be a table of sections, got {type(data).__name__}")
+    known = ("title",) + tuple(sections)
+    unknown = [k for k in data if k not in known]
+    if unknown:
+        raise SceneError(f"unknown {what} section(s) {_names(unknown)}; "
+                         f"known: {', '.join(known)}{hint}")
+    for name in required:
+        if name not in data:
+            raise SceneError(f"missing {what} section [{name}]")
+    kwargs: dict[str, Any] = {}
+    if "title" in data:
+        kwargs["title"] = data["title"]
+    for table, (attr, klass) in sections.items():
+        if table in data:
+            kwargs[attr] = section_from_table(table, klass, data[table])
+    return kwargs
+
+
+def sections_to_dict(obj: Any, sections: Mapping[str, tuple[str, type]]) -> dict[str, Any]:
+    """Nested dict with the TOML layout of a file's dataclass (the inverse of
+    :func:`sections_from_dict`): ``title`` when not empty, then one table per section
+    that is not None (:func:`section_to_table`)."""
+    out: dict[str, Any] = {}
+    if obj.title:
+        out["title"] = obj.title
+    for table, (attr, _) in sections.items():
+        section = getattr(obj, attr)
+        if section is not None:
+            out[table] = section_to_table(section)
+    return out
+
+
 def parse_toml(text: str, source: str, what: str = "a scene") -> dict[str, Any]:
     """Parse TOML text (a leading UTF-8 byte-order mark is dropped); SceneError naming
     ``source`` when it is not valid TOML or nested too deeply to read (``what`` the file
@@ -187,6 +324,23 @@ def parse_toml(text: str, source: str, what: str = "a scene") -> dict[str, Any]:
     except RecursionError:
         raise SceneError(f"{source} is not {what}: its arrays or tables are nested "
                          "too deeply to read") from None
+
+
+def read_text_file(path: str | Path, what: str) -> str:
+    """The text of a UTF-8 file; SceneError naming ``what`` (e.g. ``"scene file"``) and
+    the path when the file cannot be read or is not UTF-8 text."""
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"cannot read {what} {str(path)!r}: {exc.strerror or exc}") from None
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"{what} {str(path)!r} is not UTF-8 text ({exc.reason})") from None
+
+
+def read_toml(path: str | Path, what: str) -> dict[str, Any]:
+    """Read a TOML file (:func:`read_text_file`, :func:`parse_toml`); SceneError naming
+    ``what`` (e.g. ``"sweep file"``) and the path when it is unreadable or invalid."""
+    return parse_toml(read_text_file(path, what), f"{what} {str(path)!r}", "readable TOML")
 
 
 def _float_list(values: Any) -> tuple[float, ...] | None:
@@ -360,9 +514,7 @@ class Materials:
         for name in ("e1", "e2"):
             _bounded(self, name, "Pa", *MODULUS_RANGE)
         for name in ("nu1", "nu2"):
-            v = field_number(self, name, "(dimensionless)")
-            if not -1.0 < v <= 0.5:
-                raise SceneError(f"materials.{name} must lie in (-1, 0.5] (dimensionless), got {v!r}")
+            field_poisson(self, name)
         e_prime = self.e_prime
         if not MODULUS_RANGE[0] <= e_prime <= MODULUS_RANGE[1]:
             raise SceneError(f"materials: the reduced modulus E' = {e_prime:.4g} Pa of e1, nu1, "
@@ -400,10 +552,7 @@ class Lubricant:
 
     def __post_init__(self) -> None:
         _bounded(self, "viscosity", "Pa s", *VISCOSITY_RANGE)
-        field_nonnegative(self, "piezo", "1/Pa")
-        if self.piezo > 1e-6:
-            raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils 1e-8..3e-8), "
-                             f"got {self.piezo!r}")
+        field_piezo(self)
         field_choice(self, "viscosity_law", ("barus", "roelands", "constant"))
         field_choice(self, "density", ("incompressible", "dowson-higginson"))
         if self.viscosity_law == "roelands" and not ROELANDS_VISCOSITY[0] <= self.viscosity \
@@ -545,26 +694,8 @@ class MeshSpec:
                                  f"{show_value(n)}")
             object.__setattr__(self, "nodes", items[0] if len(items) == 1 and not
                                isinstance(n, (list, tuple)) else tuple(items))
-        for name in ("x_range", "y_range"):
-            r = getattr(self, name)
-            if r is None:
-                continue
-            if (not isinstance(r, (list, tuple)) or len(r) != 2
-                    or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
-                raise SceneError(f"mesh.{name} must be two numbers [start, end] (in Hertz "
-                                 f"half-widths), got {show_value(r)}")
-            try:
-                lo, hi = float(r[0]), float(r[1])
-            except OverflowError:
-                lo = hi = math.inf
-            if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
-                raise SceneError(f"mesh.{name} must satisfy start < 0 < end (in Hertz "
-                                 f"half-widths), got {show_value(r)}")
-            if max(-lo, hi) > MAX_RANGE:
-                raise SceneError(f"mesh.{name} must lie within [-{MAX_RANGE:g}, {MAX_RANGE:g}] "
-                                 f"(in Hertz half-widths, or sqrt(2 r h0) for rigid scenes), "
-                                 f"got {show_value(r)}")
-            object.__setattr__(self, name, (lo, hi))
+        field_range(self, "x_range")
+        field_range(self, "y_range")
 
 
     def _check_file(self) -> None:
@@ -714,29 +845,7 @@ class Thermal:
                 _bounded(self, name + "2", unit, lo, hi)
         field_choice(self, "source_model", ("jaeger", "fe"))
         field_choice(self, "contact_temperature", ("mean", "max"))
-        ts, vs = self.piezo_temperatures, self.piezo_values
-        if (ts is None) != (vs is None):
-            raise SceneError("thermal: give both thermal.piezo_temperatures (deg C) and "
-                             f"thermal.piezo_values (1/Pa), or neither; got {show_value(ts)}, "
-                             f"{show_value(vs)}")
-        if ts is not None:
-            table = _float_list(ts), _float_list(vs)
-            if table[0] is None or table[1] is None or not len(ts) == len(vs) >= 1:
-                raise SceneError("thermal.piezo_temperatures (deg C) and thermal.piezo_values "
-                                 f"(1/Pa) must be equal-length lists of finite numbers, got "
-                                 f"{show_value(ts)}, {show_value(vs)}")
-            ts, vs = table
-            if any(b <= a for a, b in zip(ts, ts[1:])):
-                raise SceneError(f"thermal.piezo_temperatures must be strictly ascending (deg C), "
-                                 f"got {show_value(ts)}")
-            if any(not -273.15 < t <= t_hi for t in ts):
-                raise SceneError(f"thermal.piezo_temperatures must lie in (-273.15, {t_hi:g}] "
-                                 f"deg C, got {show_value(ts)}")
-            if any(not 0.0 < v <= 1e-6 for v in vs):
-                raise SceneError(f"thermal.piezo_values must lie in (0, 1e-6] 1/Pa, got "
-                                 f"{show_value(vs)}")
-            object.__setattr__(self, "piezo_temperatures", ts)
-            object.__setattr__(self, "piezo_values", vs)
+        field_piezo_table(self)
         field_integer(self, "max_iterations", 1, 1000, "fixed-point iterations")
         _bounded(self, "tolerance", "K", 0.0, 100.0, open_low=True)
         _bounded(self, "relaxation", "(dimensionless)", 0.0, 1.0, open_low=True)
@@ -846,6 +955,8 @@ _SECTIONS: dict[str, type] = {
     "transient": Transient,
 }
 _REQUIRED = ("contact", "lubricant", "kinematics", "load")
+#: TOML table -> (attribute of Scene, section class): the same names.
+_TABLES: dict[str, tuple[str, type]] = {name: (name, klass) for name, klass in _SECTIONS.items()}
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -1007,34 +1118,14 @@ class Scene:
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> "Scene":
         """Build a scene from a nested mapping with the TOML layout (docs/scenes.md)."""
-        if not isinstance(data, Mapping):
-            raise SceneError(f"a scene must be a table of sections, got {type(data).__name__}")
-        known = ("title",) + tuple(_SECTIONS)
-        unknown = [k for k in data if k not in known]
-        if unknown:
-            raise SceneError(f"unknown scene section(s) {_names(unknown)}; "
-                             f"known: {', '.join(known)}")
-        for name in _REQUIRED:
-            if name not in data:
-                raise SceneError(f"missing scene section [{name}]")
-        kwargs: dict[str, Any] = {}
-        if "title" in data:
-            kwargs["title"] = data["title"]
-        for name, klass in _SECTIONS.items():
-            if name not in data:
-                continue
-            kwargs[name] = section_from_table(name, klass, data[name])
-        return cls(**kwargs)
+        return cls(**sections_from_dict(data, _TABLES, _REQUIRED, "scene"))
 
     @classmethod
     def from_toml(cls, path: str | Path) -> "Scene":
         """Read and validate a TOML scene file."""
         path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneError(f"cannot read scene file {str(path)!r}: {exc.strerror}") from None
-        return cls.from_toml_string(text, source=str(path), base_dir=path.parent)
+        return cls.from_toml_string(read_text_file(path, "scene file"), source=str(path),
+                                    base_dir=path.parent)
 
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>",
@@ -1050,15 +1141,7 @@ class Scene:
 
     def to_dict(self) -> dict[str, Any]:
         """Nested dict with the TOML layout (None entries omitted); round-trips via from_dict."""
-        out: dict[str, Any] = {}
-        if self.title:
-            out["title"] = self.title
-        for name in _SECTIONS:
-            section = getattr(self, name)
-            if section is None:
-                continue
-            out[name] = section_to_table(section)
-        return out
+        return sections_to_dict(self, _TABLES)
 
     def replace(self, **sections: Any) -> "Scene":
         """Copy with whole sections replaced (``dataclasses.replace``)."""

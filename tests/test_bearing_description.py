@@ -46,6 +46,9 @@ def test_from_toml_file(tmp_path):
     path.write_text("[bearing\n")
     with pytest.raises(SceneError, match="not valid TOML"):
         Bearing.from_toml(path)
+    path.write_bytes(b"title = '\xff'\n")
+    with pytest.raises(SceneError, match=r"bearing file .*b\.toml' is not UTF-8 text"):
+        Bearing.from_toml(path)
 
 
 def _base() -> dict:
@@ -70,6 +73,11 @@ def _base() -> dict:
     ("mesh", "point_nodes", [65], r"mesh\.point_nodes must be two integers"),
     ("solver", "tolerance", 0.5, r"solver\.tolerance must be < 0\.1"),
     ("materials", "elements", "glass", r"materials\.elements must be one of 'steel', 'si3n4'"),
+    ("materials", "ring_poisson", 0.6, r"materials\.ring_poisson must lie in \(-1, 0\.5\]"),
+    ("mesh", "x_range", [-2.0e3, 2.0], r"mesh\.x_range must lie within \[-1000, 1000\]"),
+    ("mesh", "x_range", [1.0, 2.0], r"mesh\.x_range must satisfy start < 0 < end"),
+    ("lubricant", "piezo_values", [2e-8],
+     r"give both lubricant\.piezo_temperatures .* and lubricant\.piezo_values"),
 ])
 def test_invalid_values_name_field_value_unit(section, key, value, pattern):
     d = _base()

@@ -479,7 +479,9 @@ def test_cli_unreadable_files(tmp_path, capsys):
     binary = tmp_path / "binary.toml"
     binary.write_bytes(b"\xff\xfe\x00garbage")
     assert cli.main(["solve", str(binary), "--out", str(tmp_path / "o")]) == 2
-    assert "invalid input" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "invalid input" in err and "binary.toml' is not UTF-8 text" in err, \
+        "a scene file that is not UTF-8 is named in a SceneError message"
 
 
 def test_from_dict_rejects_non_mapping():

@@ -21,8 +21,9 @@ from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
 from ..scene import (SolverSpec, Traction, field_bool, field_choice, field_integer,
-                     field_name_prefix, field_nonnegative, field_number, field_positive,
-                     parse_toml, section_from_table, section_to_table)
+                     field_nonnegative, field_number, field_piezo, field_piezo_table,
+                     field_poisson, field_positive, field_range, parse_toml, read_text_file,
+                     sections_from_dict, sections_to_dict)
 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
@@ -45,26 +46,11 @@ MATERIAL_PRESETS: dict[str, tuple[float, float, float]] = {
 
 
 # ---------------------------------------------------------------------------------------
-# validation helpers: the scene's field validators (bearing_fem.scene), and the ranges
+# validation helpers (besides the scene's field validators, bearing_fem.scene)
 # ---------------------------------------------------------------------------------------
 def _optional_positive(obj: Any, name: str, unit: str) -> None:
     if getattr(obj, name) is not None:
         field_positive(obj, name, unit)
-
-
-def _range(obj: Any, name: str) -> None:
-    r = getattr(obj, name)
-    if r is None:
-        return
-    if (not isinstance(r, (list, tuple)) or len(r) != 2
-            or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
-        raise SceneError(f"{field_name_prefix(obj)}.{name} must be two numbers [start, end] "
-                         f"(in Hertz half-widths), got {r!r}")
-    lo, hi = float(r[0]), float(r[1])
-    if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= 0.0 or hi <= 0.0:
-        raise SceneError(f"{field_name_prefix(obj)}.{name} must satisfy start < 0 < end "
-                         f"(in Hertz half-widths), got {r!r}")
-    object.__setattr__(obj, name, (lo, hi))
 
 
 # ---------------------------------------------------------------------------------------
@@ -294,10 +280,7 @@ class BearingMaterials:
         _optional_positive(self, "element_density", "kg/m^3")
         for name in ("ring_poisson", "element_poisson"):
             if getattr(self, name) is not None:
-                v = field_number(self, name, "(dimensionless)")
-                if not -1.0 < v <= 0.5:
-                    raise SceneError(f"materials.{name} must lie in (-1, 0.5] "
-                                     f"(dimensionless), got {v!r}")
+                field_poisson(self, name)
 
     @property
     def ring(self) -> tuple[float, float]:
@@ -370,10 +353,7 @@ class BearingLubricant:
     specific_heat: float = 2000.0
 
     def __post_init__(self) -> None:
-        field_nonnegative(self, "piezo", "1/Pa")
-        if self.piezo > 1e-6:
-            raise SceneError(f"lubricant.piezo must be <= 1e-6 1/Pa (typical oils "
-                             f"1e-8..3e-8), got {self.piezo!r}")
+        field_piezo(self)
         field_choice(self, "viscosity_law", ("barus", "roelands", "constant"))
         field_choice(self, "compressibility", ("incompressible", "dowson-higginson"))
         field_positive(self, "density", "kg/m^3")
@@ -399,27 +379,7 @@ class BearingLubricant:
                     raise SceneError(f"lubricant.{name} ({unit}) is required for "
                                      "temperature_law = 'prokofiev'")
                 field_positive(self, name, unit)
-        ts, vs = self.piezo_temperatures, self.piezo_values
-        if (ts is None) != (vs is None):
-            raise SceneError("lubricant: give both piezo_temperatures (deg C) and "
-                             f"piezo_values (1/Pa), or neither; got {ts!r}, {vs!r}")
-        if ts is not None:
-            ok = (isinstance(ts, (list, tuple)) and isinstance(vs, (list, tuple))
-                  and len(ts) == len(vs) >= 1
-                  and all(isinstance(v, (int, float)) and not isinstance(v, bool)
-                          and math.isfinite(v) for v in (*ts, *vs)))
-            if not ok:
-                raise SceneError("lubricant.piezo_temperatures (deg C) and piezo_values "
-                                 f"(1/Pa) must be equal-length lists of numbers, got {ts!r}, "
-                                 f"{vs!r}")
-            if any(b <= a for a, b in zip(ts, ts[1:])):
-                raise SceneError("lubricant.piezo_temperatures must be strictly ascending "
-                                 f"(deg C), got {ts!r}")
-            if any(not 0.0 < v <= 1e-6 for v in vs):
-                raise SceneError(f"lubricant.piezo_values must lie in (0, 1e-6] 1/Pa, got "
-                                 f"{vs!r}")
-            object.__setattr__(self, "piezo_temperatures", tuple(float(v) for v in ts))
-            object.__setattr__(self, "piezo_values", tuple(float(v) for v in vs))
+        field_piezo_table(self)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -534,8 +494,8 @@ class BearingMesh:
                 raise SceneError(f"mesh.point_nodes must be two integers [nx, ny] in "
                                  f"[9, 2049], got {n!r}")
             object.__setattr__(self, "point_nodes", (int(n[0]), int(n[1])))
-        _range(self, "x_range")
-        _range(self, "y_range")
+        field_range(self, "x_range")
+        field_range(self, "y_range")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -719,42 +679,14 @@ class Bearing:
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> "Bearing":
         """Build a bearing from a nested mapping with the TOML layout (docs/bearing.md)."""
-        if not isinstance(data, Mapping):
-            raise SceneError(f"a bearing must be a table of sections, got "
-                             f"{type(data).__name__}")
-        known = ("title",) + tuple(_SECTIONS)
-        unknown = [k for k in data if k not in known]
-        if unknown:
-            hint = (" (this looks like a contact scene file: use Scene.from_toml)"
-                    if "contact" in data else "")
-            raise SceneError(f"unknown bearing section(s) {', '.join(map(repr, unknown))}; "
-                             f"known: {', '.join(known)}{hint}")
-        for name in _REQUIRED:
-            if name not in data:
-                raise SceneError(f"missing bearing section [{name}]")
-        kwargs: dict[str, Any] = {}
-        if "title" in data:
-            kwargs["title"] = data["title"]
-        for table, (attr, klass) in _SECTIONS.items():
-            if table not in data:
-                continue
-            try:
-                kwargs[attr] = section_from_table(table, klass, data[table])
-            except SceneError as exc:
-                if table in ("solver", "traction"):
-                    raise SceneError(str(exc)) from None
-                raise
-        return cls(**kwargs)
+        hint = (" (this looks like a contact scene file: use Scene.from_toml)"
+                if isinstance(data, Mapping) and "contact" in data else "")
+        return cls(**sections_from_dict(data, _SECTIONS, _REQUIRED, "bearing", hint))
 
     @classmethod
     def from_toml(cls, path: str | Path) -> "Bearing":
         """Read and validate a TOML bearing file."""
-        path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneError(f"cannot read bearing file {str(path)!r}: {exc.strerror}") from None
-        return cls.from_toml_string(text, source=str(path))
+        return cls.from_toml_string(read_text_file(path, "bearing file"), source=str(path))
 
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>") -> "Bearing":
@@ -763,12 +695,7 @@ class Bearing:
 
     def to_dict(self) -> dict[str, Any]:
         """Nested dict with the TOML layout (None entries omitted); round-trips via from_dict."""
-        out: dict[str, Any] = {}
-        if self.title:
-            out["title"] = self.title
-        for table, (attr, _) in _SECTIONS.items():
-            out[table] = section_to_table(getattr(self, attr))
-        return out
+        return sections_to_dict(self, _SECTIONS)
 
     def replace(self, **sections: Any) -> "Bearing":
         """Copy with whole sections replaced (``dataclasses.replace``)."""

@@ -43,11 +43,16 @@ def torque_to_heat_power(torque_nmm: float, rpm: float) -> float:
 def _palmgren_viscous(kinematic_viscosity_mm2s: float, rpm: float, mean_diameter_mm: float,
                       f0: float) -> float:
     """Palmgren's viscous torque M0 [N mm]: 1e-7 f0 (nu n)^(2/3) d_m^3 for nu n >= 2000,
-    else 160e-7 f0 d_m^3 (nu [mm^2/s], n [1/min], d_m [mm])."""
-    nu_n = kinematic_viscosity_mm2s * rpm
+    else 160e-7 f0 d_m^3 (nu [mm^2/s], n [1/min], d_m [mm], f0 [-]; each checked to be
+    positive, ValueError naming the argument otherwise)."""
+    nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
+    n = require_positive("rpm", rpm, "1/min")
+    dm = require_positive("mean_diameter_mm", mean_diameter_mm, "mm")
+    f0 = require_positive("f0", f0, "(dimensionless)")
+    nu_n = nu * n
     if nu_n >= 2000.0:
-        return 1e-7 * f0 * nu_n ** (2.0 / 3.0) * mean_diameter_mm**3
-    return 160e-7 * f0 * mean_diameter_mm**3
+        return 1e-7 * f0 * nu_n ** (2.0 / 3.0) * dm**3
+    return 160e-7 * f0 * dm**3
 
 
 # ---------------------------------------------------------------------------------------
@@ -71,16 +76,11 @@ def palmgren_friction_torque(kinematic_viscosity_mm2s: float, rpm: float, mean_d
     -------
     dict with M0, M1, M [N mm].
     """
-    nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
-    n = require_positive("rpm", rpm, "1/min")
-    d0 = require_positive("mean_diameter_mm", mean_diameter_mm, "mm")
+    m0 = _palmgren_viscous(kinematic_viscosity_mm2s, rpm, mean_diameter_mm, f0)
     d = require_positive("bore_mm", bore_mm, "mm")
     fr = require_positive("radial_load", radial_load, "N")
     fa = require_nonnegative("axial_load", axial_load, "N")
-    f0 = require_positive("f0", f0, "(dimensionless)")
-    f_pr = require_positive("f_pr", f_pr, "(dimensionless)")
-    m0 = _palmgren_viscous(nu, n, d0, f0)
-    m1 = f_pr * math.hypot(fr, fa) * d / 2.0
+    m1 = require_positive("f_pr", f_pr, "(dimensionless)") * math.hypot(fr, fa) * d / 2.0
     return {"M0": m0, "M1": m1, "M": m0 + m1}
 
 
@@ -173,12 +173,9 @@ def palmgren_torque(kinematic_viscosity_mm2s: float, rpm: float, mean_diameter_m
     -------
     dict with M0, M1, M [N mm].
     """
-    nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
-    n = require_positive("rpm", rpm, "1/min")
-    dm = require_positive("mean_diameter_mm", mean_diameter_mm, "mm")
+    m0 = _palmgren_viscous(kinematic_viscosity_mm2s, rpm, mean_diameter_mm, f0)
     p1 = require_nonnegative("equivalent_load", equivalent_load, "N")
-    m0 = _palmgren_viscous(nu, n, dm, require_positive("f0", f0, "(dimensionless)"))
-    m1 = require_positive("f1", f1, "(dimensionless)") * p1 * dm
+    m1 = require_positive("f1", f1, "(dimensionless)") * p1 * float(mean_diameter_mm)
     return {"M0": m0, "M1": m1, "M": m0 + m1}
 
 

@@ -164,19 +164,13 @@ class LineProblem(ScaledResidual):
         """Nodal elastic displacement v = C p [m]. A dense compliance is applied by the
         half-space operator (FFT from ``LINE_FFT_APPLY_MIN`` nodes: at 2001 nodes ~40 us
         instead of ~0.9 ms for the dense product, equal to rounding), and the last product
-        is kept (a Newton iteration needs the same iterate's v in the admissibility test,
-        the residual, the row scaling and the Jacobian). The returned array is shared with
-        the cache and must not be modified."""
+        is kept (:meth:`~bearing_fem.contacts.problem.ScaledResidual.compliance_product`).
+        The returned array is shared with the cache and must not be modified."""
         if self._cmat is None:
             return np.zeros_like(p)
         if sp.issparse(self._cmat):
             return self._cmat @ p
-        cached = self._displacement_cache
-        if cached is not None and np.array_equal(cached[0], p):
-            return cached[1]
-        v = self.compliance.apply(p)
-        self._displacement_cache = (np.array(p, dtype=float, copy=True), v)
-        return v
+        return self.compliance_product(p)
 
     def film_nodes(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Film at the nodes [m]."""

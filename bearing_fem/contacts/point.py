@@ -542,18 +542,12 @@ class PointProblem(ScaledResidual):
         return np.append(z, h0 / self.h_ref) if self.has_h0 else z
 
     def displacement(self, p: np.ndarray) -> np.ndarray:
-        """Nodal elastic displacement v = C p [m] (0 when rigid). The last product is
-        kept: a Newton iteration needs the same iterate's v for the admissibility test, the
-        residual, the row scaling and the Jacobian. The returned array is shared with the
-        cache and must not be modified."""
+        """Nodal elastic displacement v = C p [m] (0 when rigid), the last product kept
+        (:meth:`~bearing_fem.contacts.problem.ScaledResidual.compliance_product`). The
+        returned array is shared with the cache and must not be modified."""
         if self.compliance is None:
             return np.zeros_like(p)
-        cached = self._displacement_cache
-        if cached is not None and np.array_equal(cached[0], p):
-            return cached[1]
-        v = self.compliance.apply(p)
-        self._displacement_cache = (np.array(p, dtype=float, copy=True), v)
-        return v
+        return self.compliance_product(p)
 
     # gap geometry at the quadrature points (whole arrays, built on each access)
     @property

@@ -31,10 +31,24 @@ def fischer_burmeister(a: np.ndarray, b: np.ndarray,
 class ScaledResidual:
     """Parts shared by the line and point problems: the scaled residual (Reynolds rows, or
     their Fischer-Burmeister functions, at the free nodes, then the load row) and the
-    admissibility test (finite unknowns, positive film at every quadrature point), and
-    the reduced-pressure gradient of the Poiseuille term. Needs ``unpack``, ``fields_q``,
-    ``reynolds_residual``, ``free``, ``_row_scale``, ``cavitation``, ``p_ref``,
-    ``has_h0``, ``mass``, ``load``, ``flux`` and ``ops`` (the quadrature operators)."""
+    admissibility test (finite unknowns, positive film at every quadrature point), the
+    reduced-pressure gradient of the Poiseuille term and the elastic displacement with
+    its last product kept. Needs ``unpack``, ``fields_q``, ``reynolds_residual``,
+    ``free``, ``_row_scale``, ``cavitation``, ``p_ref``, ``has_h0``, ``mass``, ``load``,
+    ``flux``, ``ops`` (the quadrature operators) and ``compliance`` (an operator with
+    ``apply(p) -> v``)."""
+
+    def compliance_product(self, p: np.ndarray) -> np.ndarray:
+        """Elastic displacement v = C p [m] of the nodal pressure ``p`` [Pa] by
+        ``self.compliance.apply``; the last product is kept (a Newton iteration needs the
+        same iterate's v in the admissibility test, the residual, the row scaling and the
+        Jacobian). The returned array is shared with the cache and must not be modified."""
+        cached = getattr(self, "_displacement_cache", None)
+        if cached is not None and np.array_equal(cached[0], p):
+            return cached[1]
+        v = self.compliance.apply(p)
+        self._displacement_cache = (np.array(p, dtype=float, copy=True), v)
+        return v
 
     @property
     def uses_reduced(self) -> bool:

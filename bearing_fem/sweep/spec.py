@@ -34,11 +34,6 @@ from typing import Any, Iterable, Mapping, Sequence
 from ..errors import SceneError
 from ..validation import shown
 
-try:  # Python >= 3.11
-    import tomllib
-except ModuleNotFoundError:  # pragma: no cover
-    import tomli as tomllib  # type: ignore[no-redef]
-
 #: Keys of the ``[sweep]`` table.
 SWEEP_KEYS = ("scene", "title", "store", "results", "files", "scheduler", "workers",
               "retry_failed")
@@ -395,6 +390,8 @@ class SweepSpec:
     @classmethod
     def from_toml(cls, path: str | Path) -> "SweepSpec":
         """Read a sweep file; the base file is resolved relative to it."""
+        from ..scene import read_toml
+
         path = Path(path)
         data = read_toml(path, "sweep file")
         return cls.from_dict(data, base_dir=path.parent, source=str(path))
@@ -436,6 +433,8 @@ class SweepSpec:
         if isinstance(scene, Mapping):
             base = copy.deepcopy(dict(scene))
         elif isinstance(scene, (str, Path)) and str(scene).strip():
+            from ..scene import read_toml
+
             base = read_toml(base_dir / scene, "base file (sweep.scene)")
         else:
             raise SceneError(f"{source}: sweep.scene must be a file name (relative to the "
@@ -541,25 +540,6 @@ def _flat_keys(table: Mapping[str, Any], prefix: str = "") -> list[tuple[str, An
         else:
             out.append((key, value))
     return out
-
-
-def read_toml(path: Path, what: str) -> dict[str, Any]:
-    """Read a TOML file; SceneError naming the file when unreadable or invalid."""
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SceneError(f"cannot read {what} {str(path)!r}: {exc.strerror or exc}") from None
-    except UnicodeDecodeError as exc:
-        raise SceneError(f"{what} {str(path)!r} is not UTF-8 text ({exc.reason})") from None
-    if text.startswith("\ufeff"):
-        text = text[1:]
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"{what} {str(path)!r} is not valid TOML: {exc}") from None
-    except RecursionError:
-        raise SceneError(f"{what} {str(path)!r}: its tables are nested too deeply to read") \
-            from None
 
 
 def cases_of(spec_or_cases: Any) -> list[Case]:
