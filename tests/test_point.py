@@ -585,7 +585,7 @@ def test_reduced_flux_derivative_is_finite_where_barus_viscosity_overflows():
     n = p.size
     gq = (1e10 * rng.standard_normal(n), 1e10 * rng.standard_normal(n))
     dx = np.logspace(-9, -4, n)
-    with np.errstate(over="ignore"):
+    with np.errstate(all="ignore"):  # inf viscosity: the solver's own errstate, as in a solve
         d_p = flux.flux_and_derivatives_reduced(p, h, gp, gh, dx, gq)[1]
     for comp in d_p:
         assert np.all(np.isfinite(comp)), "dF/dp finite where the viscosity overflows"
