@@ -148,6 +148,29 @@ def test_case_that_kills_every_worker_is_lost_then_rerun(tmp_path, client):
     successes_have_files(store)
 
 
+def flaky_run_task(task):
+    """run_task that fails on a task's first attempt for one case (the sweep client must
+    submit it again), as when a result is lost with its worker before it is gathered."""
+    from bearing_fem.sweep import execute
+
+    if task.attempts == 1 and task.case.params["load.gap"] == 3e-7 and \
+            task.case.params["kinematics.u1"] == 1.0:
+        raise RuntimeError("result lost with its worker (test)")
+    return execute.run_task(task)
+
+
+def test_task_failing_on_the_cluster_is_submitted_again(tmp_path, client, monkeypatch):
+    from bearing_fem.sweep import execute
+
+    monkeypatch.setattr(execute, "run_task", flaky_run_task)
+    report = bf.sweep(make_sweep(tmp_path), scheduler=client)
+    assert (report.successes, report.failures, report.unfinished) == (8, 4, 0), (
+        "the failed first attempt was submitted again and solved")
+    rows, _ = query_runs(tmp_path / "sweep.sqlite", columns="all")
+    (again,) = [r for r in rows if r["load.gap"] == 3e-7 and r["kinematics.u1"] == 1.0]
+    assert again["status"] == "linear" and again["attempts"] == 2, again
+
+
 def test_unreachable_scheduler_is_an_input_error(tmp_path):
     from bearing_fem.errors import SceneError
     from bearing_fem.sweep.execute import DaskExecutor

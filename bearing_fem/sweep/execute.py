@@ -407,7 +407,10 @@ class DaskExecutor:
 
     A worker that dies is handled by the scheduler: it reschedules the task on another
     worker (up to its ``allowed-failures``); a task that kills every worker it runs on
-    comes back as ``KilledWorker`` and is recorded ``lost``.
+    comes back as ``KilledWorker`` and is recorded ``lost``. A task that fails for any
+    other reason (e.g. its result was lost with its worker before the client gathered
+    it) is submitted again, up to :data:`MAX_ATTEMPTS` runs in all, then recorded
+    ``lost``.
     """
 
     def __init__(self, scheduler: Any, timeout: float = 30.0) -> None:
@@ -477,24 +480,37 @@ class DaskExecutor:
         self.open()
         client = self.client
         futures: dict[Any, Task] = {}
+        token = secrets.token_hex(4)
+
+        def submit(t: Task, priority: int = 0):
+            fut = client.submit(run_task, t, pure=False, priority=priority,
+                                key=f"bearing_fem-{t.case.hash[:16]}-{token}-{t.attempts}")
+            futures[fut] = t
+            return fut
+
         try:
-            token = secrets.token_hex(4)
             for i, t in enumerate(tasks):
-                fut = client.submit(run_task, t, key=f"bearing_fem-{t.case.hash[:16]}-{token}",
-                                    pure=False, priority=-i)
-                futures[fut] = t
-            for fut in as_completed(list(futures), loop=client.loop):
+                submit(t, priority=-i)
+            pending = as_completed(list(futures), loop=client.loop)
+            for fut in pending:
                 t = futures.pop(fut)
-                if fut.status == "finished":
-                    out = fut.result()
-                else:
-                    exc = fut.exception()
-                    name = type(exc).__name__
-                    why = ("its worker died each time it ran it (KilledWorker)"
-                           if name == "KilledWorker" else f"the cluster failed to run it: "
-                                                          f"{name}: {exc}")
-                    out = lost(t, why)
+                try:
+                    out = fut.result() if fut.status == "finished" else None
+                    exc = None if out is not None else fut.exception()
+                except Exception as err:  # noqa: BLE001 - e.g. the result was lost with
+                    out, exc = None, err  # its worker between completion and gathering
                 fut.release()
+                if out is None:
+                    name = type(exc).__name__
+                    if name != "KilledWorker" and t.attempts < MAX_ATTEMPTS:
+                        log.info("case %s: %s (%s), submitted again", t.case.hash[:12],
+                                 name, exc)
+                        pending.add(submit(_again(t)))
+                        continue
+                    out = lost(t, "its worker died each time it ran it (KilledWorker)"
+                               if name == "KilledWorker" else
+                               f"the cluster failed to run it {t.attempts} times; last: "
+                               f"{name}: {exc}")
                 done(t, out)
         finally:
             for fut in futures:
