@@ -82,13 +82,11 @@ def local_cluster(n_workers: int = 2, **kwargs: Any):
 
     Notes
     -----
-    The settings reach the workers through ``distributed.nanny.pre-spawn-environ``; an
-    environment variable of the same name already set in this process takes precedence
-    (Dask's rule), so they are also set in ``os.environ`` here (which Dask itself does
-    with its defaults when it starts a worker).
+    The settings are put into this process's ``os.environ``, which the workers inherit;
+    Dask's own ``distributed.nanny.pre-spawn-environ`` default for
+    ``MALLOC_TRIM_THRESHOLD_`` yields to a variable already set there (Dask's rule).
     """
     try:
-        import dask
         from distributed import LocalCluster
     except ImportError:
         raise SceneError("a local Dask cluster needs dask.distributed: "
@@ -99,9 +97,7 @@ def local_cluster(n_workers: int = 2, **kwargs: Any):
     kwargs.setdefault("threads_per_worker", 1)
     kwargs.setdefault("dashboard_address", None)
     os.environ.update(WORKER_MALLOC_ENV)
-    with dask.config.set({f"distributed.nanny.pre-spawn-environ.{k}": v
-                          for k, v in WORKER_MALLOC_ENV.items()}):
-        return LocalCluster(n_workers=n, processes=True, **kwargs)
+    return LocalCluster(n_workers=n, processes=True, **kwargs)
 
 
 def malloc_environment() -> dict[str, str | None]:
@@ -494,11 +490,10 @@ class DaskExecutor:
             pending = as_completed(list(futures), loop=client.loop)
             for fut in pending:
                 t = futures.pop(fut)
-                try:
-                    out = fut.result() if fut.status == "finished" else None
-                    exc = None if out is not None else fut.exception()
-                except Exception as err:  # noqa: BLE001 - e.g. the result was lost with
-                    out, exc = None, err  # its worker between completion and gathering
+                try:  # raises the task's error, or a gathering error (e.g. the result
+                    out, exc = fut.result(), None  # was lost with its worker)
+                except Exception as err:  # noqa: BLE001
+                    out, exc = None, err
                 fut.release()
                 if out is None:
                     name = type(exc).__name__
