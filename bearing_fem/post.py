@@ -460,6 +460,10 @@ def estimate_warnings(estimate: Mapping[str, Any] | None,
     ``threshold``."""
     if not estimate:
         return []
+    if estimate.get("levels", 0) < 2:
+        return ["no error estimate: no coarser grid of this solve converged (or the grid "
+                f"cannot be halved; {estimate.get('grids', '')}), so the discretisation "
+                "error is unknown; compare with a solve on a finer mesh (mesh.nodes)"]
     out = []
     for key in ESTIMATED_QUANTITIES:
         e = estimate.get(key)

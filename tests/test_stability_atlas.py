@@ -4,6 +4,8 @@ from __future__ import annotations
 import csv
 import math
 
+import numpy as np
+
 import bearing_fem as bf
 from bearing_fem.contacts.line import COARSEST_NODES, MAX_COARSENINGS, line_levels
 
@@ -92,11 +94,52 @@ def test_light_point_load_starts_from_a_finite_guess(load_study):
 def test_isoviscous_high_load_point_continues_in_speed(load_study):
     # M = 1160, L = 0 on 97^2 stalled from the Hertzian start and had no continuation
     # path (alpha = 0); it now continues in the entrainment speed, as line contacts do
+    # (on the wide domain it had then; the default domain is now narrower, below)
+    import dataclasses
+
+    from bearing_fem.contacts.point import ELASTIC_RANGE
+
     mod = load_study("stability_atlas")
-    r = bf.solve(mod.point_scene(1160.0, 0.0))
+    scene = mod.point_scene(1160.0, 0.0)
+    scene = dataclasses.replace(scene, mesh=dataclasses.replace(
+        scene.mesh, x_range=ELASTIC_RANGE[0], y_range=ELASTIC_RANGE[1]))
+    r = bf.solve(scene)
     assert r.status == "converged", r.message
     assert "continuation in speed" in r.message
     assert r.newton_iterations <= 150, "measured 81 (4 continuation steps)"
+
+
+def test_high_load_point_contacts_converge(load_study):
+    # M = 2000 on the default domain: L = 0 stalled on 97^2 and 129^2 (11-16 nodes per
+    # Hertz radius), L = 3.57 stalled on its 65^2 level; isoviscous scenes above
+    # HIGH_LOAD_MOES_M now take the narrow domain, and a grid sequence whose coarsest
+    # level fails starts again one level finer
+    from bearing_fem.contacts.point import (ISOVISCOUS_HIGH_LOAD_INLET,
+                                            ISOVISCOUS_HIGH_LOAD_OUTLET, PointModel)
+
+    mod = load_study("stability_atlas")
+    iso = mod.point_scene(2000.0, 0.0)
+    setup = PointModel(iso).setup
+    x = setup.grid.x / setup.x_unit
+    np.testing.assert_allclose(x[-1], ISOVISCOUS_HIGH_LOAD_OUTLET, rtol=1e-12,
+                               err_msg="narrow default domain: outlet end [Hertz radii]")
+    # the inlet end: 1.5 radii, or 8 hydrodynamic lengths beyond the Hertz edge (here
+    # 0.735 radii: -1.735), instead of -4.5
+    assert -2.0 < x[0] <= -ISOVISCOUS_HIGH_LOAD_INLET, x[0]
+    r = bf.solve(iso)
+    assert r.status == "converged", r.message
+    assert r.newton_iterations <= 100, "measured 51"
+    piezo = mod.point_scene(2000.0, 25 / 7, nodes=129)
+    events = []
+    r = bf.solve(piezo, progress=events.append)
+    assert [e["grid"] for e in events if e["event"] == "level"] == \
+        ["65x65 nodes", "129x129 nodes"], "65^2 failed, 129^2 from the Hertzian start"
+    assert r.status == "converged", r.message
+    assert r.newton_iterations <= 80, "measured 20 on 65^2 (stalled) + 14 on 129^2"
+    s = r.summary()
+    assert 0.0 < s["h_min"] <= s["h_central"]
+    # one level and no coarser grid that converges: no error estimate, and a warning
+    assert any(w.startswith("no error estimate") for w in s["warnings"]), s["warnings"]
 
 
 def test_light_line_load_starts_from_a_finite_guess(load_study):
@@ -107,3 +150,37 @@ def test_light_line_load_starts_from_a_finite_guess(load_study):
     r = bf.solve(mod.line_scene(0.01, 5.0))
     assert r.status == "converged", r.message
     assert r.newton_iterations <= 60, "measured 26"
+
+
+def test_isoviscous_line_at_the_node_cap_converges_on_a_narrow_domain(load_study):
+    # L = 0, M = 4329 and 1e4: on the default [-4.5, 1.5] b domain the capped 4001-node
+    # grid gave 667 nodes per Hertz half-width and Newton never converged (budget of 400
+    # iterations spent / stalled after 140); isoviscous scenes at the cap now use
+    # [-1.5, 1.2] b, where the inlet pressure still builds up well inside the domain
+    from bearing_fem.contacts.line import (ISOVISCOUS_CAPPED_INLET, ISOVISCOUS_CAPPED_OUTLET,
+                                           line_setup)
+    from bearing_fem.formulas import line_central_film_moes
+
+    mod = load_study("stability_atlas")
+    for M in (4329.0, 1e4):
+        scene = mod.line_scene(M, 0.0)
+        setup = line_setup(scene)
+        x = setup.disc.x / setup.x_unit
+        np.testing.assert_allclose([x[0], x[-1]], [-ISOVISCOUS_CAPPED_INLET,
+                                                   ISOVISCOUS_CAPPED_OUTLET], rtol=1e-12,
+                                   err_msg=f"M = {M}: narrowed default domain [b]")
+        r = bf.solve(scene)
+        assert r.status == "converged", r.message
+        assert r.newton_iterations <= 90, "measured 41 (M = 4329) and 45 (M = 1e4)"
+        s = r.summary()
+        lub, c = scene.lubricant, scene.contact
+        moes = line_central_film_moes(scene.load.force, c.rx, scene.e_prime, lub.viscosity,
+                                      scene.kinematics.mean_speed, 0.0)
+        np.testing.assert_allclose(s["h_central"], moes, rtol=0.15,
+                                   err_msg=f"M = {M}: central film against Moes' fit "
+                                           "(measured -5.4 % and -5.7 %; the fit's IE "
+                                           "asymptote is itself a fit)")
+        assert 0.0 < s["h_min"] <= s["h_central"]
+    # a piezo-viscous scene at the cap keeps the wide domain
+    setup = line_setup(mod.line_scene(1e4, 3.571))
+    assert setup.disc.x[0] / setup.x_unit <= -4.5 + 1e-9

@@ -158,6 +158,8 @@ class DriverOutcome:
     levels: list[LevelSolution] = field(default_factory=list)
     labels: list[str] = field(default_factory=list)
     continuation_steps: int = 0
+    #: labels of first levels that failed, after which the sequence started one finer
+    restarts: list[str] = field(default_factory=list)
 
     @property
     def converged(self) -> bool:
@@ -281,10 +283,45 @@ def solve_levels(model: ContactModel, solver: Any, *, budget: Budget,
     """
     levels = list(model.levels())
     labels = [lv.label for lv in levels]
-    st = model.settings
     total = DriverOutcome(np.zeros(0), None, "max_iterations", labels=labels)
+    start = 0
+    while True:
+        failed = _sequence(model, levels, start, solver, budget, progress, total)
+        if (failed is None or total.status in BUDGET_STATUSES or total.levels
+                or failed >= len(levels) - 1):
+            break
+        # the first level of the sequence failed from the initial guess: its grid is too
+        # coarse for the contact (measured: circular M = 2000, L = 3.57 stalled on 65^2
+        # and converges on 129^2 from the Hertzian start); start again one level finer
+        total.restarts.append(levels[failed].label)
+        start = failed + 1
+    if (not total.converged and total.status not in BUDGET_STATUSES and len(levels) > 1
+            and total.levels):
+        # a level failed after a coarser one converged: the finest grid alone, from the
+        # initial guess
+        level = levels[-1]
+        if progress is not None:
+            progress({"event": "level", "level": len(levels) - 1, "levels": len(levels),
+                      "grid": level.label})
+        problem = model.problem(level, 1.0, solver.tolerance)
+        out = attempt(model, level, problem, model.initial_guess(level, problem),
+                      solver=solver, tolerance=solver.tolerance, transferred=False,
+                      budget=budget, callback=_level_callback(progress, len(levels) - 1))
+        _accumulate(total, out, level.label)
+        if out.converged:
+            total.levels = [LevelSolution(level, problem, out.z)]
+    return total
+
+
+def _sequence(model: ContactModel, levels: list, start: int, solver: Any, budget: Budget,
+              progress: Progress | None, total: DriverOutcome) -> int | None:
+    """Solve ``levels[start:]`` coarse to fine into ``total`` (the first from the
+    initial guess, each further one from the interpolated solution of the one below);
+    return the index of the level that failed, or None."""
+    st = model.settings
     prev: LevelSolution | None = None
-    for i, level in enumerate(levels):
+    for i in range(start, len(levels)):
+        level = levels[i]
         if progress is not None:
             progress({"event": "level", "level": i, "levels": len(levels),
                       "grid": level.label})
@@ -302,25 +339,10 @@ def solve_levels(model: ContactModel, solver: Any, *, budget: Budget,
                       callback=_level_callback(progress, i))
         _accumulate(total, out, level.label)
         if not out.converged:
-            break
+            return i
         prev = LevelSolution(level, problem, out.z)
         total.levels.append(prev)
-    if (not total.converged and total.status not in BUDGET_STATUSES and len(levels) > 1
-            and total.levels):
-        # a level failed after a coarser one converged: the finest grid alone, from the
-        # initial guess
-        level = levels[-1]
-        if progress is not None:
-            progress({"event": "level", "level": len(levels) - 1, "levels": len(levels),
-                      "grid": level.label})
-        problem = model.problem(level, 1.0, solver.tolerance)
-        out = attempt(model, level, problem, model.initial_guess(level, problem),
-                      solver=solver, tolerance=solver.tolerance, transferred=False,
-                      budget=budget, callback=_level_callback(progress, len(levels) - 1))
-        _accumulate(total, out, level.label)
-        if out.converged:
-            total.levels = [LevelSolution(level, problem, out.z)]
-    return total
+    return None
 
 
 def _accumulate(total: DriverOutcome, out: DriverOutcome, label: str) -> None:
@@ -431,6 +453,8 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
     if outcome.continuation_steps:
         note = f", continuation in {parameter} ({outcome.continuation_steps} steps)"
     grids = "[" + ", ".join(lb.removesuffix(" nodes") for lb in outcome.labels) + "]"
+    for lb in outcome.restarts:
+        note += f"; {lb} failed, the sequence started again one grid finer"
     detail = f" (grids {grids}{grid_note}{note})" if outcome.labels else note
     msg = outcome_message(outcome.status, outcome.iterations, residual, solver.tolerance,
                           prefix=prefix, detail=detail, cap=solver.max_iterations)

@@ -405,6 +405,23 @@ NODES_PER_HALF_WIDTH = 300
 DENSE_MESH_MOES_M = 250.0
 #: Cap on default elastic line grids (dense compliance: memory and LU time grow as N^2, N^3).
 MAX_DEFAULT_ELASTIC_NODES = 4001
+#: Default domain of isoviscous elastic line scenes whose default grid reaches
+#: MAX_DEFAULT_ELASTIC_NODES (Moes M above ~1200): [-ISOVISCOUS_CAPPED_INLET,
+#: ISOVISCOUS_CAPPED_OUTLET] Hertz half-widths (the inlet end at least 15 hydrodynamic
+#: lengths sqrt(2 R h) beyond the Hertz edge) instead of [-4.5, 1.5], so that the capped
+#: grid keeps the density the film needs. Without piezo-viscosity the inlet pressure
+#: builds up within a few hydrodynamic lengths of the Hertz edge, which are a few
+#: thousandths of b there. Measured (``studies/stability_atlas.py``), L = 0: on
+#: [-4.5, 1.5] M = 4329 and 1e4 never converged (budget spent, or stalled, from 667 nodes
+#: per half-width); on [-1.5, 1.2] both converge (M = 4329: 3373 nodes, 41 Newton
+#: iterations; M = 1e4: 4001 nodes, 45), and M = 4329 gives h_central 2.4010e-10 m, against
+#: 2.4031e-10 m on the same domain with 4001 nodes, 2.4010e-10 m on [-1.5, 1.5] (3749
+#: nodes) and 2.4044e-10 m on [-1.2, 1.2] (4001 nodes): the inlet end does not set the
+#: film. At M = 1874 (2217 instead of 4001 nodes) h_central agrees with
+#: the wide domain's to 0.09 %. Piezo-viscous scenes keep [-4.5, 1.5]: at M = 1e4,
+#: L = 3.57 the narrow domain stalled on its coarsest level where the wide one converges.
+ISOVISCOUS_CAPPED_INLET = 1.5
+ISOVISCOUS_CAPPED_OUTLET = 1.2
 #: Default rigid-scene grid: nodes per sqrt(2 R h0).
 NODES_PER_RIGID_LENGTH = 40
 #: Stabilisation of half-space line contacts: "upwind" (first-order upwinded wedge term,
@@ -523,6 +540,11 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
         moes_m = units.moes_line(w, R, scene.e_prime, lub.viscosity, u_m,
                                  lub.effective_piezo)["M"]
         density = NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
+        capped = (x_range[1] - x_range[0]) * density > MAX_DEFAULT_ELASTIC_NODES - 1
+        if (capped and scene.mesh.x_range is None and lub.effective_piezo == 0.0
+                and model.elasticity == "half-space"):
+            hydro = 15.0 * math.sqrt(2 * R * h_est) / b
+            x_range = (-max(ISOVISCOUS_CAPPED_INLET, 1.0 + hydro), ISOVISCOUS_CAPPED_OUTLET)
     else:
         if scene.load.gap is not None:
             h0 = scene.load.gap
