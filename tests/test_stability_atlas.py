@@ -184,3 +184,21 @@ def test_isoviscous_line_at_the_node_cap_converges_on_a_narrow_domain(load_study
     # a piezo-viscous scene at the cap keeps the wide domain
     setup = line_setup(mod.line_scene(1e4, 3.571))
     assert setup.disc.x[0] / setup.x_unit <= -4.5 + 1e-9
+
+
+def test_failed_single_grid_starts_from_a_finer_solution(load_study):
+    # circular M = 2000, L = 3.57 on the atlas' 97^2 grid (one level: it cannot be
+    # halved to 65^2 or more) stalled from the Hertzian start, with M = 2000.0000000000002
+    # (the atlas' log-spaced value; M = 2000 exactly converged: a knife edge). The driver
+    # now solves 193^2 and starts 97^2 from that solution restricted to it.
+    mod = load_study("stability_atlas")
+    events = []
+    r = bf.solve(mod.point_scene(2000.0000000000002, 25 / 7), progress=events.append)
+    assert r.status == "converged", r.message
+    assert [e["grid"] for e in events if e["event"] == "level"] == \
+        ["97x97 nodes", "193x193 nodes", "97x97 nodes"]
+    assert "started from the solution on 193x193 nodes" in r.message
+    assert r.newton_iterations <= 120, "measured 63 (33 failed + 18 + 12)"
+    s = r.summary()
+    assert r.pressure.shape == (97, 97), "the result is on the requested grid"
+    assert 0.0 < s["h_min"] <= s["h_central"]

@@ -84,6 +84,9 @@ ELASTIC_NODES = 129
 ELASTIC_RANGE = ((-4.5, 1.5), (-3.0, 3.0))
 #: Grid sequencing: coarsest grid (nodes per direction) of the elastic Newton solve.
 COARSEST_NODES = 65
+#: Largest grid (nodes per direction) the driver solves first when the requested grid
+#: fails alone (``PointModel.refine``): requested grids up to 129^2 (257^2 costs ~2 s).
+REFINE_MAX_NODES = 257
 #: Moes M above which isoviscous scenes take a narrower default domain (below).
 HIGH_LOAD_MOES_M = 1000.0
 #: Default domain of isoviscous elastic scenes above HIGH_LOAD_MOES_M, in Hertz
@@ -1115,6 +1118,15 @@ class PointModel:
         while all((m - 1) % 2 == 0 and (m - 1) // 2 + 1 >= COARSEST_NODES for m in seq[-1]):
             seq.append(tuple((m - 1) // 2 + 1 for m in seq[-1]))
         return [self.level(n) for n in seq[::-1]]
+
+    def refine(self, level: PointLevel) -> PointLevel | None:
+        """The level with half the spacing (2 n - 1 nodes per direction) for the driver's
+        last resort when ``level`` fails, or None for rigid scenes and above
+        REFINE_MAX_NODES nodes per direction."""
+        nodes = tuple(2 * m - 1 for m in level.nodes)
+        if not self.elastic or max(nodes) > REFINE_MAX_NODES:
+            return None
+        return self.level(nodes)
 
     def coarsen(self, level: PointLevel) -> PointLevel | None:
         """The level with every other node in each direction, or None."""
