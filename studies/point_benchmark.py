@@ -250,7 +250,7 @@ def _table(rows: list[dict], finest: dict) -> list[str]:
 def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFAULT,
          grids: tuple[int, ...] | None = None, whole: bool = False,
          fmg: str | Path | None = None, repeats: int = 3,
-         baseline: str | Path | None = None) -> dict:
+         baseline: str | Path | None = None, ratio_repeats: int = 2) -> dict:
     """Run the benchmark; write ``point_benchmark.json``/``.txt``; return the numbers.
 
     Parameters
@@ -271,6 +271,9 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
     baseline : path, optional
         A checkout of an earlier version: every grid is also solved on that code,
         alternating with the current one.
+    ratio_repeats : int
+        Further 257^2, 513^2 pairs solved alternately; the CPU-time ratio 513^2 / 257^2
+        is the median over these and the grid rows' pair.
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -282,6 +285,13 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
         rows.append(_run_child(n, M, L))
         if whole:
             whole_rows.append(_run_child(n, M, L, symmetric=False))
+    growth = []
+    by_n0 = {r["nodes"]: r for r in rows}
+    if 257 in by_n0 and 513 in by_n0:
+        growth.append(by_n0[513]["cpu_time_s"] / by_n0[257]["cpu_time_s"])
+        for _ in range(int(ratio_repeats)):  # interleaved: one sample is at the mercy of noise
+            a, b = _run_child(257, M, L), _run_child(513, M, L)
+            growth.append(b["cpu_time_s"] / a["cpu_time_s"])
     pairs = []
     if fmg is not None and not quick:
         for _ in range(int(repeats)):
@@ -304,9 +314,10 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
                      f"unknowns ({k}): {e:.2f}")
     by_n = {r["nodes"]: r for r in rows}
     ratio = None
-    if 257 in by_n and 513 in by_n:
-        ratio = by_n[513]["cpu_time_s"] / by_n[257]["cpu_time_s"]
-        lines.append(f"CPU time 513^2 / 257^2: {ratio:.2f}")
+    if growth:
+        ratio = statistics.median(growth)
+        lines.append(f"CPU time 513^2 / 257^2: median {ratio:.2f} of {len(growth)} "
+                     f"interleaved pairs ({', '.join(f'{g:.2f}' for g in growth)})")
     lines.append(f"interpreter and imports: {rows[0]['import_rss_mb']:.0f} MB of each peak")
     if pairs:
         lines.append("multigrid program (512 x 512 intervals, start level 1, 3 W cycles) and "
@@ -335,7 +346,8 @@ def main(outdir, quick: bool = False, *, M: float = M_DEFAULT, L: float = L_DEFA
            "rows_whole_grid": whole_rows, "growth_exponent": exps["current"],
            "growth_exponent_baseline": exps.get("baseline"),
            "growth_exponent_whole_grid": exps.get("whole"),
-           "cpu_ratio_513_257": ratio, "fmg_pairs": pairs, "targets": targets,
+           "cpu_ratio_513_257": ratio, "cpu_ratio_513_257_samples": growth,
+           "fmg_pairs": pairs, "targets": targets,
            "fmg_median_cpu_ratio": (statistics.median(p["cpu_ratio"] for p in pairs)
                                     if pairs else None)}
     tmp = outdir / "point_benchmark.json.tmp"
@@ -352,6 +364,8 @@ if __name__ == "__main__":
     ap.add_argument("--whole", action="store_true", help="also solve on the whole grid")
     ap.add_argument("--fmg", default=None, help="compiled multigrid program")
     ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--ratio-repeats", type=int, default=2,
+                    help="further interleaved 257^2/513^2 pairs for the growth ratio")
     ap.add_argument("--baseline", default=None, help="checkout of an earlier version")
     ap.add_argument("--M", type=float, default=M_DEFAULT)
     ap.add_argument("--L", type=float, default=L_DEFAULT)
@@ -362,4 +376,5 @@ if __name__ == "__main__":
     else:
         main(args.outdir, args.quick, M=args.M, L=args.L,
              grids=tuple(int(g) for g in args.grids.split(",")) if args.grids else None,
-             whole=args.whole, fmg=args.fmg, repeats=args.repeats, baseline=args.baseline)
+             whole=args.whole, fmg=args.fmg, repeats=args.repeats, baseline=args.baseline,
+             ratio_repeats=args.ratio_repeats)
