@@ -110,6 +110,10 @@ class ContactModel(Protocol):
     continuation_parameter : str or None
         What the continuation parameter s in [0, 1] scales (``"alpha"``, ``"speed"``,
         ``"compliance"``), named in messages; None: no continuation.
+
+    A kind may also provide ``refine(level) -> Level | None``, the grid with half the
+    spacing of ``level`` (None: none allowed), for the driver's last resort when the
+    finest grid fails on its own (:func:`solve_levels`).
     """
 
     settings: DriverSettings
@@ -266,6 +270,14 @@ def attempt(model: ContactModel, level: Level, problem: NonlinearProblem, z0: np
 def solve_levels(model: ContactModel, solver: Any, *, budget: Budget,
                  progress: Progress | None = None) -> DriverOutcome:
     """Solve a contact model by grid sequencing, attempts and continuation.
+
+    The levels are solved coarse to fine, each from the interpolated solution of the one
+    below. Fallbacks, in this order, while the budget lasts: a first level that fails
+    from the initial guess is dropped and the sequence starts again one level finer; a
+    finer level that fails after a coarser one converged sends the finest grid alone
+    from the initial guess; if the finest grid still fails and the model has ``refine``,
+    the grid with half its spacing is solved and the finest grid started from that
+    solution.
 
     Parameters
     ----------
