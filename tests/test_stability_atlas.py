@@ -202,3 +202,19 @@ def test_failed_single_grid_starts_from_a_finer_solution(load_study):
     s = r.summary()
     assert r.pressure.shape == (97, 97), "the result is on the requested grid"
     assert 0.0 < s["h_min"] <= s["h_central"]
+
+
+def test_failed_finer_grid_leaves_the_requested_grid(load_study):
+    # the low-speed ball (M = 1.5e5 on 97^2) fails on 97^2 and on 193^2: the result is
+    # the last iterate on the requested grid, with the status of that grid's attempt
+    mod = load_study("stability_atlas")
+    case = next(c for c in mod.atlas_cases() if c["family"] == "low_speed"
+                and c["kind"] == "point")
+    events = []
+    r = bf.solve(case["builder"](), progress=events.append)
+    assert not r.success
+    assert r.status == "stalled", r.message
+    assert [e["grid"] for e in events if e["event"] == "level"] == \
+        ["97x97 nodes", "193x193 nodes"]
+    assert r.pressure.shape == (97, 97), "the requested grid, not the finer one"
+    assert np.all(np.isfinite(r.pressure)) and np.all(np.isfinite(r.film))

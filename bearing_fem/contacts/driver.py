@@ -164,8 +164,9 @@ class DriverOutcome:
     continuation_steps: int = 0
     #: labels of first levels that failed, after which the sequence started one finer
     restarts: list[str] = field(default_factory=list)
-    #: label of the finer grid solved first when the finest failed (see ``refine``)
-    refined: str | None = None
+    #: the finer grid tried when the finest failed (see ``refine``): its label and
+    #: whether it converged
+    refined: tuple[str, bool] | None = None
 
     @property
     def converged(self) -> bool:
@@ -346,11 +347,18 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
     if progress is not None:
         progress({"event": "level", "level": n - 1, "levels": n, "grid": finer.label})
     fine_problem = model.problem(finer, 1.0, solver.tolerance)
+    kept = (total.z, total.problem, total.status)
     out = attempt(model, finer, fine_problem, model.initial_guess(finer, fine_problem),
                   solver=solver, tolerance=solver.tolerance, transferred=False,
                   budget=budget, callback=_level_callback(progress, n - 1))
     _accumulate(total, out, finer.label)
+    total.refined = (finer.label, out.converged)
     if not out.converged:
+        # the result stays on the requested grid: its last iterate, and its status
+        # unless the budget ran out on the finer grid
+        total.z, total.problem = kept[0], kept[1]
+        if out.status not in BUDGET_STATUSES:
+            total.status = kept[2]
         return
     problem = model.problem(level, 1.0, solver.tolerance)
     if progress is not None:
@@ -359,7 +367,6 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
                   solver=solver, tolerance=solver.tolerance, transferred=True,
                   budget=budget, callback=_level_callback(progress, n - 1))
     _accumulate(total, out, level.label)
-    total.refined = finer.label
     if out.converged:
         total.levels = [LevelSolution(level, problem, out.z)]
 
@@ -507,8 +514,10 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
     for lb in outcome.restarts:
         note += f"; {lb} failed, the sequence started again one grid finer"
     if outcome.refined is not None:
+        label, converged = outcome.refined
         note += (f"; the finest grid failed alone and was started from the solution on "
-                 f"{outcome.refined}")
+                 f"{label}" if converged else
+                 f"; the finest grid failed alone, and so did {label} (half the spacing)")
     detail = f" (grids {grids}{grid_note}{note})" if outcome.labels else note
     msg = outcome_message(outcome.status, outcome.iterations, residual, solver.tolerance,
                           prefix=prefix, detail=detail, cap=solver.max_iterations)
