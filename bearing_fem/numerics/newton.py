@@ -327,7 +327,8 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
     prefix : str
         Text before the message (e.g. ``"steady elastic: "``).
     detail : str
-        Appended after the iteration count of a converged solve (grids, continuation).
+        Appended after the iteration count of a converged solve (grids, continuation);
+        in a failure message, the last sentence ("Tried ...").
     cap : int, optional
         Iteration cap per attempt, quoted in a failure message.
     """
@@ -335,9 +336,10 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
         return (f"{prefix}converged in {iterations} Newton iterations{detail}; residual "
                 f"{residual:.2e} <= tol {tol:.1e}")
     limit = f" (max_iterations={cap} per attempt)" if cap is not None else ""
+    tried = detail.strip().removeprefix("(").removesuffix(")").strip()
     return (f"{prefix}{status}: no converged solution after {iterations} Newton "
             f"iterations{limit}; residual {residual:.2e} > tol {tol:.1e}. Fields hold the "
-            "last admissible iterate.")
+            "last admissible iterate." + (f" Tried: {tried}." if tried else ""))
 
 
 class ForcingTerm:
