@@ -386,6 +386,11 @@ class LineProblem(ScaledResidual):
         dz, its, rel = gmres_right(matvec, precond, -f, rtol=rtol,
                                    max_iterations=REUSE_GMRES_ITERATIONS)
         self.krylov_iterations += its
+        if not math.isfinite(rel):
+            # the factors or the product overflowed: a failed linear solve (Newton takes a
+            # shifted step next), as singular factors are
+            raise np.linalg.LinAlgError("gmres: the LU preconditioner or the Jacobian "
+                                        "product gave non-finite values")
         if rel > rtol or not np.all(np.isfinite(dz)):
             return None
         return dz

@@ -947,8 +947,9 @@ class PointProblem(ScaledResidual):
         if self.iteration_sink is not None:
             self.iteration_sink[0] += its
         log.debug("gmres: %d iterations, relative residual %.2e", its, rel)
-        if not np.all(np.isfinite(dz)):
-            raise RuntimeError("gmres produced non-finite values")
+        if not math.isfinite(rel) or not np.all(np.isfinite(dz)):
+            raise RuntimeError("gmres: the preconditioner or the Jacobian product gave "
+                               "non-finite values")
         return dz
 
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import contextlib
 import logging
+import math
 import time
 from dataclasses import dataclass, field
 from typing import Callable, Iterator, Protocol
@@ -399,12 +400,15 @@ def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
 
     Returns
     -------
-    x : ndarray; iterations : int; relative residual estimate : float
+    x : ndarray; iterations : int; relative residual estimate : float (inf when the
+    preconditioner or the product gave a non-finite vector: no usable step)
     """
     bnorm = float(np.linalg.norm(b))
     if bnorm == 0.0:
         return np.zeros_like(b), 0, 0.0
     x = precond(b)
+    if not np.all(np.isfinite(x)):
+        return np.zeros_like(b), 0, math.inf
     total = 0
     rel = 1.0
     while True:
@@ -430,6 +434,11 @@ def gmres_right(matvec: Callable[[np.ndarray], np.ndarray],
                 w = w - V[:k + 1].T @ h
                 H[:k + 1, k] += h
             H[k + 1, k] = np.linalg.norm(w)
+            if not np.all(np.isfinite(H[:k + 2, k])):
+                # a preconditioner or product that overflowed (e.g. singular
+                # single-precision factors): no usable step from this basis; report it as
+                # a failed solve instead of handing NaN to LAPACK (which prints to stderr)
+                return x, total + k + 1, math.inf
             if H[k + 1, k] > 0.0:
                 V[k + 1] = w / H[k + 1, k]
             y, *_ = np.linalg.lstsq(H[:k + 2, :k + 1], e1[:k + 2], rcond=None)
