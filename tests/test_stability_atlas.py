@@ -218,3 +218,34 @@ def test_failed_finer_grid_leaves_the_requested_grid(load_study):
         ["97x97 nodes", "193x193 nodes"]
     assert r.pressure.shape == (97, 97), "the requested grid, not the finer one"
     assert np.all(np.isfinite(r.pressure)) and np.all(np.isfinite(r.film))
+
+
+def _slow_ball(u_m: float, **mesh) -> bf.Scene:
+    """A 100 N steel ball (rx = ry = 10 mm) in a thin oil (0.01 Pa s, alpha = 2e-8 1/Pa);
+    at u_m = 0.1 m/s Moes M is about 4.9e3, L 4.3: beyond the checked circular map."""
+    return bf.Scene.from_dict({
+        "contact": {"kind": "point", "rx": 0.01, "ry": 0.01},
+        "materials": {"reduced_modulus": 2.2e11},
+        "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+        "kinematics": {"u1": u_m, "u2": u_m}, "load": {"force": 100.0},
+        "mesh": {"nodes": [97, 97]} | mesh})
+
+
+def test_point_failure_above_the_checked_map_suggests_a_domain_that_converges():
+    from bearing_fem.contacts.point import CHECKED_MOES_M, HIGH_LOAD_HINT_RANGES, PointModel
+
+    failed = bf.solve(_slow_ball(0.1))
+    assert failed.status in ("stalled", "max_iterations", "budget_exhausted"), failed.message
+    assert "Moes M = " in failed.message and "mesh.x_range = [-2.5, 1.2]" in failed.message, \
+        f"a failure above M = {CHECKED_MOES_M:g} names the narrower domain: {failed.message}"
+    (x0, x1), (y0, y1) = HIGH_LOAD_HINT_RANGES
+    advised = bf.solve(_slow_ball(0.1, x_range=[x0, x1], y_range=[y0, y1]))
+    assert advised.success, f"the advised domain must converge here: {advised.message}"
+    assert "Moes M = " not in advised.message, "no advice on a converged solve"
+    assert PointModel(_slow_ball(1.0)).failure_hint == "", \
+        "inside the checked map (M ~ 850 at 1 m/s) there is no advice"
+    assert PointModel(_slow_ball(0.1, x_range=[-3.0, 1.2])).failure_hint == "", \
+        "a user's own domain gets no advice about the default one"
+    far = PointModel(_slow_ball(0.001)).failure_hint
+    assert "no domain was seen to converge" in far and "x_range" not in far, \
+        f"far above the map (M ~ 1.5e5) no domain is advised: {far}"

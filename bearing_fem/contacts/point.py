@@ -104,6 +104,20 @@ HIGH_LOAD_MOES_M = 1000.0
 ISOVISCOUS_HIGH_LOAD_INLET = 1.5
 ISOVISCOUS_HIGH_LOAD_OUTLET = 1.2
 ISOVISCOUS_HIGH_LOAD_SIDE = 1.5
+#: Largest Moes M of the circular map on which the default elastic set-up (domain, grid
+#: sequence, continuation) is checked (``studies/stability_atlas.py``: 100 % up to
+#: M = 2000). Above it a piezo-viscous scene may stall on the default domain, whose inlet
+#: then holds the narrow pressure build-up in a few cells (measured: a 100 N steel ball,
+#: rx = ry = 10 mm, eta0 = 0.01 Pa s, alpha = 2e-8 1/Pa at u_m = 0.1 m/s, M = 4.7e3,
+#: L = 4.3: stalled on the default 97^2 and 129^2 domains, converged on
+#: [-2.5, 1.2] x [-1.5, 1.5] on 129^2 and 257^2; at u_m = 0.01 m/s, M = 2.6e4, neither
+#: domain converged). A failure there says so (:attr:`PointModel.failure_hint`).
+CHECKED_MOES_M = 2000.0
+#: The narrower domain a failure above CHECKED_MOES_M suggests [Hertz semi-axes] ...
+HIGH_LOAD_HINT_RANGES = ((-2.5, 1.2), (-1.5, 1.5))
+#: ... up to this Moes M; above it neither domain was seen to converge (the measurement
+#: above), and the failure says that instead.
+HINT_MAX_MOES_M = 2e4
 #: Elastic loaded scenes with zero boundary pressure, a domain symmetric in y and an odd
 #: node count across it are solved on the half grid y >= 0 (the rolling contact is
 #: symmetric about y = 0; the y = 0 row is a symmetry line, not a boundary) and the
@@ -1084,6 +1098,30 @@ class PointModel:
         self._levels: dict[tuple[tuple[int, int], bool], PointLevel] = {}
         self._linear_iterations = [0]  # GMRES iterations of all problems of the model
         self._live: weakref.WeakSet[PointProblem] = weakref.WeakSet()
+
+    @property
+    def failure_hint(self) -> str:
+        """Advice appended to a failure message (empty if none): an elastic, loaded,
+        piezo-viscous scene on the default domain above :data:`CHECKED_MOES_M`."""
+        scene = self.scene
+        if not (self.elastic and scene.load.force is not None
+                and scene.lubricant.effective_piezo > 0.0 and scene.mesh.file is None
+                and scene.mesh.x_range is None and scene.mesh.y_range is None):
+            return ""
+        m = _moes_point_m(scene)
+        if not m > CHECKED_MOES_M:
+            return ""
+        head = (f"Moes M = {m:.4g} is above the range the default point set-up is checked "
+                f"on (M <= {CHECKED_MOES_M:g}, docs/stability.md)")
+        if m > HINT_MAX_MOES_M:
+            return (f"{head}; above M = {HINT_MAX_MOES_M:g} no domain was seen to converge "
+                    f"(estimated central film {self.setup.h_estimate:.3g} m).")
+        (x0, x1), (y0, y1) = HIGH_LOAD_HINT_RANGES
+        return (f"{head}: a narrower domain may "
+                f"converge, e.g. mesh.x_range = [{x0:g}, {x1:g}], mesh.y_range = "
+                f"[{y0:g}, {y1:g}] (in Hertz semi-axes); a short inlet can starve a "
+                "strongly piezo-viscous contact, so check that h_central changes little "
+                "with a longer one.")
 
     def _symmetric(self) -> bool:
         """True if the elastic Newton solve may run on the half grid y >= 0
