@@ -167,6 +167,9 @@ class DriverOutcome:
     #: the finer grid tried when the finest failed (see ``refine``): its label and
     #: whether it converged
     refined: tuple[str, bool] | None = None
+    #: label of the requested (finest) grid when the result is the converged solution of
+    #: the finer grid instead, because the requested grid failed even from it
+    requested: str | None = None
 
     @property
     def converged(self) -> bool:
@@ -278,7 +281,8 @@ def solve_levels(model: ContactModel, solver: Any, *, budget: Budget,
     finer level that fails after a coarser one converged sends the finest grid alone
     from the initial guess; if the finest grid still fails and the model has ``refine``,
     the grid with half its spacing is solved and the finest grid started from that
-    solution.
+    solution; if the finest grid fails even from it, the outcome is the finer grid's
+    converged solution (``DriverOutcome.requested`` names the grid asked for).
 
     Parameters
     ----------
@@ -334,7 +338,8 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
                      progress: Progress | None, total: DriverOutcome) -> None:
     """Last resort when the finest grid failed: solve the grid with half its spacing
     (``model.refine``, if the model has one and allows it) from the initial guess, and
-    start the finest grid from that solution restricted to it. For grids too coarse for
+    start the finest grid from that solution restricted to it; if that fails, the outcome
+    is the finer grid's converged solution (``total.requested`` set). For grids too coarse for
     the contact to converge from the initial guess (measured: circular M = 2000,
     L = 3.57 on 97^2 stalled from the Hertzian start; 193^2 converges in 18 iterations,
     and 97^2 from its solution in 12)."""
@@ -353,6 +358,7 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
                   budget=budget, callback=_level_callback(progress, n - 1))
     _accumulate(total, out, finer.label)
     total.refined = (finer.label, out.converged)
+    out_fine = out
     if not out.converged:
         # the result stays on the requested grid: its last iterate, and its status
         # unless the budget ran out on the finer grid
@@ -366,9 +372,17 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
     out = attempt(model, level, problem, model.transfer(out.z, fine_problem, problem),
                   solver=solver, tolerance=solver.tolerance, transferred=True,
                   budget=budget, callback=_level_callback(progress, n - 1))
+    kept_fine = (out_fine.z, out_fine.status)
     _accumulate(total, out, level.label)
     if out.converged:
         total.levels = [LevelSolution(level, problem, out.z)]
+    elif out.status not in BUDGET_STATUSES:
+        # the requested grid has no converged solution even from the finer one (measured:
+        # a 100 N ball at 0.1 m/s, M = 4.9e3, L = 4.3, on the default 129^2 grid): the
+        # result is the finer grid's converged solution, and says so
+        total.z, total.problem, total.status = kept_fine[0], fine_problem, kept_fine[1]
+        total.levels = [LevelSolution(finer, fine_problem, kept_fine[0])]
+        total.requested = level.label
 
 
 def _sequence(model: ContactModel, levels: list, start: int, solver: Any, budget: Budget,
@@ -519,6 +533,9 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
         note += (f"; the finest grid failed alone and was started from the solution on "
                  f"{label}" if converged else
                  f"; the finest grid failed alone, and so did {label} (half the spacing)")
+        if outcome.requested is not None:
+            note += (f", which failed too: the result is on {label}, not on the requested "
+                     f"{outcome.requested}")
     detail = f" (grids {grids}{grid_note}{note})" if outcome.labels else note
     msg = outcome_message(outcome.status, outcome.iterations, residual, solver.tolerance,
                           prefix=prefix, detail=detail, cap=solver.max_iterations)
@@ -595,10 +612,14 @@ def _solve_newton_model(model: Any, scene: Any, t0: float, *,
     if outcome.converged:
         for lv in estimate_levels(model, outcome, scene.solver, budget):
             coarse.append(model.solution(*model.whole(lv.problem, lv.z)))
+    notes = []
+    if outcome.requested is not None and outcome.refined is not None:
+        notes.append(f"the requested grid ({outcome.requested}) has no converged solution; "
+                     f"the result is on {outcome.refined[0]} (half the spacing)")
     return finish(scene, solution, status=outcome.status, message=message, t0=t0,
                   iterations=outcome.iterations, history=outcome.history,
                   continuation_steps=outcome.steps, coarse=coarse,
-                  estimate_note=_levels_note(coarse, solution))
+                  estimate_note=_levels_note(coarse, solution), warnings=notes)
 
 
 def solve_linear_model(model: Any, scene: Any, t0: float) -> Result:

@@ -107,14 +107,19 @@ ISOVISCOUS_HIGH_LOAD_SIDE = 1.5
 #: Largest Moes M of the circular map on which the default elastic set-up (domain, grid
 #: sequence, continuation) is checked (``studies/stability_atlas.py``: 100 % up to
 #: M = 2000). Above it a piezo-viscous scene may stall on the default domain, whose inlet
-#: then holds the narrow pressure build-up in a few cells (measured: a 100 N steel ball,
-#: rx = ry = 10 mm, eta0 = 0.01 Pa s, alpha = 2e-8 1/Pa at u_m = 0.1 m/s, M = 4.7e3,
-#: L = 4.3: stalled on the default 97^2 and 129^2 domains, converged on
-#: [-2.5, 1.2] x [-1.5, 1.5] on 129^2 and 257^2; at u_m = 0.01 m/s, M = 2.6e4, neither
-#: domain converged). A failure there says so (:attr:`PointModel.failure_hint`).
+#: then holds the narrow pressure build-up in a few cells. Measured on a 100 N steel ball
+#: (rx = ry = 10 mm, eta0 = 0.01 Pa s, alpha = 2e-8 1/Pa): at u_m = 0.1 m/s (M = 4.9e3,
+#: L = 4.3) the default 97^2 and 129^2 grids failed even from the 193^2 / 257^2 solution
+#: (the driver then returns that finer solution), x in [-2.5, 1.2], y in [-1.5, 1.5]
+#: converged on 97^2, 129^2 and 257^2; at 0.05 and 0.02 m/s (M = 8.2e3, 1.6e4) only that
+#: narrower domain on 257^2 converged (the default domain on 257^2 stalled); at 0.01 and
+#: 0.005 m/s (M = 2.7e4, 4.6e4) nothing converged. A failure there says so
+#: (:attr:`PointModel.failure_hint`).
 CHECKED_MOES_M = 2000.0
-#: The narrower domain a failure above CHECKED_MOES_M suggests [Hertz semi-axes] ...
+#: The narrower domain [Hertz semi-axes] and grid a failure above CHECKED_MOES_M
+#: suggests ...
 HIGH_LOAD_HINT_RANGES = ((-2.5, 1.2), (-1.5, 1.5))
+HIGH_LOAD_HINT_NODES = 257
 #: ... up to this Moes M; above it neither domain was seen to converge (the measurement
 #: above), and the failure says that instead.
 HINT_MAX_MOES_M = 2e4
@@ -1117,9 +1122,11 @@ class PointModel:
             return (f"{head}; above M = {HINT_MAX_MOES_M:g} no domain was seen to converge "
                     f"(estimated central film {self.setup.h_estimate:.3g} m).")
         (x0, x1), (y0, y1) = HIGH_LOAD_HINT_RANGES
-        return (f"{head}: a narrower domain may "
+        n = HIGH_LOAD_HINT_NODES
+        return (f"{head}: a narrower domain on a finer grid may "
                 f"converge, e.g. mesh.x_range = [{x0:g}, {x1:g}], mesh.y_range = "
-                f"[{y0:g}, {y1:g}] (in Hertz semi-axes); a short inlet can starve a "
+                f"[{y0:g}, {y1:g}] (in Hertz semi-axes), mesh.nodes = [{n}, {n}]; a short "
+                "inlet can starve a "
                 "strongly piezo-viscous contact, so check that h_central changes little "
                 "with a longer one.")
 
