@@ -78,6 +78,25 @@ def test_pending_then_final_replaces_the_row(tmp_path):
         assert (row["status"], row["success"], row["h_central"]) == ("max_iterations", 0, 2.0)
 
 
+def test_a_case_finished_elsewhere_since_planning_is_not_set_back_to_pending(tmp_path):
+    """Two sweeps share a store: one plans while a case is pending, the other finishes it,
+    then the first marks its cases. The finished row stays final (else the other sweep's
+    report counted it as unfinished) and the first sweep does not run it again."""
+    done, todo = (Case({"load.gap": g}, rigid(g)) for g in (1e-6, 2e-6))
+    with RunStore(tmp_path / "s.sqlite") as store:
+        store.mark_pending([done, todo])
+        planned = store.states([done.hash, todo.hash])
+        store.write(done, outcome(h_central=1.0))            # the other process
+        marked = store.mark_pending([done, todo], planned=planned)
+        assert [c.hash for c in marked] == [todo.hash], "only the still-pending case runs"
+        assert store.states([done.hash])[done.hash]["status"] == "linear"
+        # a failed row planned for a retry is replaced as before
+        store.write(todo, outcome("stalled", False))
+        planned = store.states([todo.hash])
+        assert store.mark_pending([todo], planned=planned) == [todo]
+        assert store.states([todo.hash])[todo.hash]["status"] == "pending"
+
+
 def test_filters_statuses_and_exports(tmp_path):
     path = tmp_path / "s.sqlite"
     cases = [Case({"load.gap": g}, rigid(g)) for g in (1e-6, 2e-6, 3e-6, 4e-6)]

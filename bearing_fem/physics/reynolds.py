@@ -242,7 +242,10 @@ class UpwindFluxModel(FluxModel):
         drho = (self.density(p + dp) - self.density(p - dp)) / (2 * dp)
         xi, pe = 1.0, None
         if self.upwind_compliance > 0.0:  # fade out where Poiseuille flow dominates
-            pe = self.mean_speed * rho * self.upwind_compliance * dx / (2.0 * eps)
+            # eps underflows to 0 where exp(-alpha p) does (Barus, alpha p > ~745): Pe is
+            # infinite there and xi(Pe) = 1, its limit
+            with np.errstate(divide="ignore"):
+                pe = self.mean_speed * rho * self.upwind_compliance * dx / (2.0 * eps)
             xi = upwind_factor(pe)
         return rho, eps, drho, 0.5 * self.upwind * xi * dx * self.mean_speed, pe
 
@@ -261,7 +264,12 @@ class UpwindFluxModel(FluxModel):
             out = [k3 * g for g in gq]
         out[0] = out[0] - self.mean_speed * rho + c * drho * gp[0]
         if pe is not None:
-            dc = 0.5 * self.upwind * dx * self.mean_speed * _xi_derivative(pe) * (-3.0 * pe / h)
+            # xi'(Pe) dPe/dh = -3 xi'(Pe) Pe / h ~ -3 / (Pe h) -> 0 where Pe is infinite
+            # (eps underflowed): that limit, not 0 * inf = NaN
+            with np.errstate(over="ignore", invalid="ignore"):
+                dc = (0.5 * self.upwind * dx * self.mean_speed * _xi_derivative(pe)
+                      * (-3.0 * pe / h))
+            dc = np.where(np.isfinite(dc), dc, 0.0)
             out[0] = out[0] + dc * (rho * gh[0] + h * drho * gp[0])
         return tuple(out)
 

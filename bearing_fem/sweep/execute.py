@@ -674,6 +674,7 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
                            cases=len(cases), dry_run=True, to_run=[c.hash for c in cases],
                            wall_time_s=time.perf_counter() - t0)
     with RunStore(store_path) as store:
+        planned = store.states([c.hash for c in cases])
         to_run, skipped, adoptable = plan(cases, store, results, retry_failed)
         executor = make_executor(scheduler, workers, max(1, len(to_run)))
         report = SweepReport(store=store_path, results=results,
@@ -694,7 +695,9 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
                 report.adopted += 1
             states = store.states([c.hash for c in to_run])
             attempts = {h: s["attempts"] for h, s in states.items()}
-            store.mark_pending(to_run, attempts)
+            # a case another process sharing the store finished since ``plan`` is not run
+            # again (nor set back to pending, which its report would count as unfinished)
+            to_run = store.mark_pending(to_run, attempts, planned=planned)
             blas = 1 if isinstance(executor, PoolExecutor) else None
             tasks = [Task(c, str(results / c.hash), files, blas, attempts.get(c.hash, 0) + 1)
                      for c in to_run]

@@ -305,24 +305,37 @@ class RunStore:
         except ValueError:
             return str(p)
 
-    def mark_pending(self, cases: Sequence[Any], attempts: Mapping[str, int] | None = None
-                     ) -> None:
+    def mark_pending(self, cases: Sequence[Any], attempts: Mapping[str, int] | None = None,
+                     planned: Mapping[str, Mapping[str, Any]] | None = None) -> list[Any]:
         """Record cases about to run as ``pending`` (one transaction): their parameters,
-        kind and scene; any earlier result of theirs is replaced."""
+        kind and scene; any earlier result of theirs is replaced.
+
+        ``planned``: the rows (:meth:`states`) the caller planned from. A case whose row
+        has become final since then (another process sharing the store finished it) is
+        left as it is and not returned. Returns the cases marked ``pending``.
+        """
         if not cases:
-            return
+            return []
         from .spec import canonical_json
 
         attempts = attempts or {}
         params = sorted({k for c in cases for k in c.params})
+        marked = []
         with self.transaction() as conn:
             self._ensure_columns(conn, params, "param")
+            if planned is not None:
+                now = self.states([c.hash for c in cases])
+                cases = [c for c in cases
+                         if now.get(c.hash, {}).get("status", "pending") in NON_FINAL
+                         or now.get(c.hash) == planned.get(c.hash)]
             for c in cases:
+                marked.append(c)
                 row = {"hash": c.hash, "kind": c.kind, "status": "pending", "success": None,
                        "message": f"submitted {now_utc()}", "attempts": attempts.get(c.hash, 0),
                        "scene": canonical_json(c.scene.to_dict()), "updated_at": now_utc()}
                 row.update(c.params)
                 self._upsert(conn, row)
+        return marked
 
     def fill_params(self, cases: Sequence[Any]) -> None:
         """Write the parameters of cases that are already stored (e.g. run by another
