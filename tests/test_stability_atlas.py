@@ -79,6 +79,19 @@ def test_high_load_line_converges_on_the_default_grid(load_study):
     assert math.isfinite(r.summary()["h_central"])
 
 
+def test_barus_line_where_the_film_coefficient_underflows(load_study):
+    """alpha p_h = 698 (accepted input): exp(-alpha p) underflows to 0 at the pressure
+    spike, so eps = 0 and the cell Peclet number is infinite. Its film derivative
+    xi'(Pe) dPe/dh must take its limit 0 there, not 0 * inf = NaN, which made every
+    Jacobian non-finite (stalled after 161 Newton iterations; converges in 14)."""
+    mod = load_study("stability_atlas")
+    r = bf.solve(mod.line_scene(1e4, 17.5))
+    assert r.status == "converged", r.message
+    assert r.newton_iterations <= 30, "three levels, no continuation (measured 14)"
+    s = r.summary()
+    assert all(math.isfinite(s[k]) for k in ("h_central", "h_min", "p_max")), s
+
+
 def test_light_point_load_starts_from_a_finite_guess(load_study):
     # M = 0.3 on 97^2: the default domain is about 320 Hertz radii long (8 hydrodynamic
     # lengths), 3.3 Hertz radii per cell; the Hertzian start fell between the nodes, its
