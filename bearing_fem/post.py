@@ -285,6 +285,27 @@ NEWTONIAN_FRICTION_LIMIT = 0.2
 MAX_FRICTION_COEFFICIENT = 1.0
 
 
+#: Largest double [-]: a viscosity beyond it (Barus at alpha p > 709.78) is reported
+#: clipped at it (:func:`reported_viscosity`).
+_MAX_FLOAT = float(np.finfo(float).max)
+
+
+def reported_viscosity(eta: np.ndarray) -> tuple[np.ndarray, list[str]]:
+    """The viscosity field as reported [Pa s], and warnings: where the law overflows
+    double precision (Barus at alpha p > 709.78; the film equation, in the reduced
+    pressure, is unaffected) the field is clipped at the largest double."""
+    eta = np.asarray(eta, dtype=float)
+    over = ~np.isfinite(eta)
+    if not np.any(over):
+        return eta, []
+    share = float(np.mean(over))
+    return np.where(over, _MAX_FLOAT, eta), [
+        f"the viscosity overflows double precision at {100 * share:.3g}% of the nodes "
+        f"(Barus at alpha p > {math.log(_MAX_FLOAT):.1f}): viscosity_Pa_s is clipped at "
+        f"{_MAX_FLOAT:.3g} Pa s there (the film solution, in the reduced pressure, is "
+        "not affected)"]
+
+
 def friction_coefficient(friction: float, load: float, gross: float) -> tuple[float | None,
                                                                                 list[str]]:
     """friction / load, or None with a warning when the load is not a positive net load
@@ -352,6 +373,12 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
     notes += more
     if mu is not None:
         q["friction_coefficient"] = mu
+    if not math.isfinite(d.friction_force):
+        notes.append(f"friction_force and heat_power undefined: the viscosity overflows "
+                     f"double precision in the film (Barus at alpha p > {math.log(_MAX_FLOAT):.1f}) "
+                     f"and {shear['model']} traction grows with it without bound; a limiting "
+                     "shear stress bounds it (traction.model = 'limiting' or "
+                     "'eyring-limiting')")
     ratio = d.friction_force / load if load > 0.0 else 0.0
     if (shear["model"] == "newtonian" and sliding_speed != 0.0
             and abs(ratio) > NEWTONIAN_FRICTION_LIMIT):
@@ -450,8 +477,16 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     out["order"] = orders
     out["levels"] = len(levels)
     out["grids"] = note
-    out["values"] = {k: [lv.get(k) for lv in levels] for k in ESTIMATED_QUANTITIES}
+    out["values"] = {k: [_finite_or_none(lv.get(k)) for lv in levels]
+                     for k in ESTIMATED_QUANTITIES}
     return out
+
+
+def _finite_or_none(v: Any) -> Any:
+    """``v``, or None for a non-finite number (never NaN/inf in a summary)."""
+    if isinstance(v, (int, float, np.floating)) and not math.isfinite(float(v)):
+        return None
+    return v
 
 
 def estimate_warnings(estimate: Mapping[str, Any] | None,

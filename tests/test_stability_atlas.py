@@ -92,6 +92,31 @@ def test_barus_line_where_the_film_coefficient_underflows(load_study):
     assert all(math.isfinite(s[k]) for k in ("h_central", "h_min", "p_max")), s
 
 
+def test_barus_line_beyond_the_double_precision_viscosity(load_study):
+    """alpha p_h = 997 (Moes M = 1e4, L = 25): exp(alpha p) overflows, the reduced-pressure
+    film equation does not. The scene is accepted and converges; nothing in the summary or
+    the fields is NaN/inf; the clipped viscosity field and a traction that grows without
+    bound with the viscosity are said in warnings."""
+    mod = load_study("stability_atlas")
+    scene = mod.line_scene(1e4, 25.0, srr=0.5)
+    r = bf.solve(scene)
+    assert r.status == "converged", r.message
+    assert r.newton_iterations <= 40, "three levels, no continuation (measured 16)"
+    s = r.summary()
+    assert mod._non_finite(s) == [], mod._non_finite(s)
+    assert 0.002 < s["friction_coefficient"] < 0.15, "eyring-limiting: a physical friction"
+    eta = r.extra_fields["viscosity_Pa_s"]
+    assert np.all(np.isfinite(eta)) and eta.max() == np.finfo(float).max
+    assert any("viscosity overflows double precision" in w for w in r.warnings), r.warnings
+    d = scene.to_dict()
+    d["traction"] = {"model": "newtonian"}
+    newt = bf.solve(bf.Scene.from_dict(d))
+    s = newt.summary()
+    assert newt.success and s["friction_force"] is None and s["heat_power"] is None
+    assert mod._non_finite(s) == [], "undefined numbers are None, never inf/NaN"
+    assert any("friction_force and heat_power undefined" in w for w in newt.warnings)
+
+
 def test_light_point_load_starts_from_a_finite_guess(load_study):
     # M = 0.3 on 97^2: the default domain is about 320 Hertz radii long (8 hydrodynamic
     # lengths), 3.3 Hertz radii per cell; the Hertzian start fell between the nodes, its

@@ -43,7 +43,7 @@ from ..physics.elasticity import (HalfSpaceLine, LocalCompliance, RigidComplianc
                                   kodnir_local_coefficient)
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import (FilmDissipation, film_numbers, friction_and_heat,
-                    full_film_indicator_line, outlet_position_line)
+                    full_film_indicator_line, outlet_position_line, reported_viscosity)
 from ..result import Result
 from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
 from .linear import active_set_solve, pressure_from_reduced
@@ -813,7 +813,8 @@ class LineModel:
         if outlet is not None:
             q["outlet_position"] = outlet
             q["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
-        out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p)
+        out.extra_fields["viscosity_Pa_s"], more = reported_viscosity(problem.flux.viscosity(p))
+        out.warnings += more
         return out
 
     def _friction_and_heat(self, problem: LineProblem, p: np.ndarray, h0: float,

@@ -63,7 +63,7 @@ from ..mesh import every_other
 from ..numerics.newton import ForcingTerm, blas_threads, gmres_right
 from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
-from ..post import film_numbers, friction_and_heat
+from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
 from ..scene import Scene
 from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
@@ -1327,7 +1327,9 @@ class PointModel:
         q.update(numbers)
         out.traction_model = d.shear["model"]
         out.warnings += notes + more
-        out.extra_fields["viscosity_Pa_s"] = problem.flux.viscosity(p).reshape(grid.shape)
+        eta, more = reported_viscosity(problem.flux.viscosity(p).reshape(grid.shape))
+        out.extra_fields["viscosity_Pa_s"] = eta
+        out.warnings += more
         if self.elastic:
             q["gmres_iterations"] = float(self.linear_iterations())
         return out

@@ -338,8 +338,10 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
                 f"{residual:.2e} <= tol {tol:.1e}")
     limit = f" (max_iterations={cap} per attempt)" if cap is not None else ""
     tried = detail.strip().removeprefix("(").removesuffix(")").strip()
+    resid = (f"residual {residual:.2e} > tol {tol:.1e}" if math.isfinite(residual) else
+             "the residual of the last iterate is not finite")
     return (f"{prefix}{status}: no converged solution after {iterations} Newton "
-            f"iterations{limit}; residual {residual:.2e} > tol {tol:.1e}. Fields hold the "
+            f"iterations{limit}; {resid}. Fields hold the "
             "last admissible iterate." + (f" Tried: {tried}." if tried else ""))
 
 

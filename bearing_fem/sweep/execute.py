@@ -238,17 +238,41 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
                   "run_time_s": run_time_s, "worker": worker_name()}
         (tmp / RUN_FILE).write_text(json.dumps(marker, indent=1, default=str) + "\n",
                                     encoding="utf-8")
+        if _same_outcome(run_dir, marker):
+            # another process sharing the store ran this case at the same time and has
+            # published the same outcome: keep its folder (replacing it would leave a
+            # moment without one, which that process would record as lost)
+            shutil.rmtree(tmp, ignore_errors=True)
+            return run_dir
         old = None
         if run_dir.exists():
             old = run_dir.with_name(f".{run_dir.name}.old-{token}")
             os.replace(run_dir, old)
-        os.replace(tmp, run_dir)
+        try:
+            os.replace(tmp, run_dir)
+        except OSError:
+            if not _same_outcome(run_dir, marker):  # published meanwhile by another process
+                raise
+            shutil.rmtree(tmp, ignore_errors=True)
         if old is not None:
             shutil.rmtree(old, ignore_errors=True)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     return run_dir
+
+
+def _same_outcome(run_dir: Path, marker: Mapping[str, Any]) -> bool:
+    """True when ``run_dir`` is a complete result folder of the same case with the same
+    successful status (as a concurrent run of that case writes it; an unsuccessful folder
+    is always replaced, as a retry should)."""
+    if not marker["success"] or not result_complete(run_dir, str(marker["kind"])):
+        return False
+    try:
+        theirs = json.loads((run_dir / RUN_FILE).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return all(theirs.get(k) == marker[k] for k in ("hash", "status", "success"))
 
 
 def result_complete(path: Path | None, kind: str) -> bool:
