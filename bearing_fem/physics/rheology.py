@@ -19,8 +19,14 @@ ROELANDS_LN_ETA_INF = -9.67
 
 
 def barus(p: np.ndarray, viscosity: float, piezo: float) -> np.ndarray:
-    """Barus law eta = eta0 exp(alpha p) [Pa s]."""
-    return viscosity * np.exp(piezo * p)
+    """Barus law eta = eta0 exp(alpha p) [Pa s].
+
+    Beyond alpha p = 709.78 the value overflows to inf (silently: the film equation of
+    Barus scenes uses the reduced pressure, and the callers take the limits of
+    1/eta -> 0; ``docs/scenes.md``, "Ranges").
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        return viscosity * np.exp(piezo * p)
 
 
 def roelands_index(viscosity: float, piezo: float) -> float:

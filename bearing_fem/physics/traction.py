@@ -46,8 +46,12 @@ __all__ = ["newtonian_stress", "eyring_stress", "limiting_stress", "shear_stress
 
 
 def newtonian_stress(eta: np.ndarray, shear_rate: np.ndarray) -> np.ndarray:
-    """Newtonian shear stress tau = eta gamma_dot [Pa] (eta in Pa s, gamma_dot in 1/s)."""
-    return np.asarray(eta, dtype=float) * np.asarray(shear_rate, dtype=float)
+    """Newtonian shear stress tau = eta gamma_dot [Pa] (eta in Pa s, gamma_dot in 1/s);
+    inf where the product overflows (a Barus viscosity beyond double precision: the
+    limiting models cap it, :func:`bearing_fem.post.friction_and_heat` reports an
+    unbounded friction as undefined)."""
+    with np.errstate(over="ignore"):
+        return np.asarray(eta, dtype=float) * np.asarray(shear_rate, dtype=float)
 
 
 def eyring_stress(eta: np.ndarray, shear_rate: np.ndarray, tau0: float) -> np.ndarray:
