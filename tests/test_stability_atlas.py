@@ -260,8 +260,9 @@ def test_failed_finer_grid_leaves_the_requested_grid(load_study):
     r = bf.solve(case["builder"](), progress=events.append)
     assert not r.success
     assert r.status == "stalled", r.message
-    assert [e["grid"] for e in events if e["event"] == "level"] == \
-        ["97x97 nodes", "193x193 nodes"]
+    grids = [e["grid"] for e in events if e["event"] == "level"]
+    assert grids[:2] == ["97x97 nodes", "193x193 nodes"], grids
+    assert "was tried too" in r.message, "then the high-load second solve, which fails too"
     assert r.pressure.shape == (97, 97), "the requested grid, not the finer one"
     assert np.all(np.isfinite(r.pressure)) and np.all(np.isfinite(r.film))
 
@@ -289,23 +290,37 @@ def test_point_result_on_the_finer_grid_when_the_requested_grid_fails_from_it():
     assert res.quantities["h_min"] > 0 and np.all(np.isfinite(res.pressure))
 
 
-def test_point_failure_above_the_checked_map_suggests_a_setting_that_converges():
-    from bearing_fem.contacts.point import (CHECKED_MOES_M, HIGH_LOAD_HINT_NODES,
-                                            HIGH_LOAD_HINT_RANGES, PointModel)
+def test_point_above_the_checked_map_is_solved_on_the_narrower_domain():
+    """M ~ 8.2e3 (a 100 N ball at 0.05 m/s): the default 97^2 solve and its finer-grid
+    fallback stall; the second solve on the narrower domain with 257^2 converges, and
+    the result says where it was solved and what that costs."""
+    from bearing_fem.contacts.point import (CHECKED_MOES_M, HIGH_LOAD_NODES,
+                                            HIGH_LOAD_RANGES, high_load_scene)
 
-    failed = bf.solve(_slow_ball(0.05))   # M ~ 8.2e3
-    assert failed.status in ("stalled", "max_iterations", "budget_exhausted"), failed.message
-    assert "Moes M = " in failed.message and "mesh.x_range = [-2.5, 1.2]" in failed.message, \
-        f"a failure above M = {CHECKED_MOES_M:g} names the narrower domain: {failed.message}"
-    (x0, x1), (y0, y1) = HIGH_LOAD_HINT_RANGES
-    n = HIGH_LOAD_HINT_NODES
-    advised = bf.solve(_slow_ball(0.05, x_range=[x0, x1], y_range=[y0, y1], nodes=[n, n]))
-    assert advised.success, f"the advised setting must converge here: {advised.message}"
-    assert "Moes M = " not in advised.message, "no advice on a converged solve"
-    assert PointModel(_slow_ball(1.0)).failure_hint == "", \
-        "inside the checked map (M ~ 850 at 1 m/s) there is no advice"
-    assert PointModel(_slow_ball(0.1, x_range=[-3.0, 1.2])).failure_hint == "", \
-        "a user's own domain gets no advice about the default one"
-    far = PointModel(_slow_ball(0.001)).failure_hint
-    assert "no domain was seen to converge" in far and "x_range" not in far, \
-        f"far above the map (M ~ 1.5e5) no domain is advised: {far}"
+    res = bf.solve(_slow_ball(0.05))
+    assert res.success, res.message
+    n = HIGH_LOAD_NODES
+    assert res.pressure.shape == (n, n), "the fields are those of the second solve"
+    (x0, x1), (y0, y1) = HIGH_LOAD_RANGES
+    assert res.scene.mesh.x_range == (x0, x1) and res.scene.mesh.y_range == (y0, y1), \
+        "the result's scene is the one solved (an export reproduces it)"
+    assert "the default domain failed first" in res.message, res.message
+    assert any("narrower domain" in w and "starve" in w for w in res.warnings), res.warnings
+    assert res.newton_iterations <= _slow_ball(0.05).solver.iteration_budget, \
+        "both solves share one iteration budget"
+    # where it applies, and the budget it gets
+    assert high_load_scene(_slow_ball(1.0)) is None, f"M ~ 870 <= {CHECKED_MOES_M:g}"
+    assert high_load_scene(_slow_ball(0.05, x_range=[-3.0, 1.2])) is None, \
+        "a user's own domain is not replaced"
+    left = high_load_scene(_slow_ball(0.05), spent_iterations=150).solver.iteration_budget
+    assert left == _slow_ball(0.05).solver.iteration_budget - 150
+    assert high_load_scene(_slow_ball(0.05), spent_iterations=10_000) is None, \
+        "no budget left: no second solve"
+
+
+def test_point_far_above_the_checked_map_fails_saying_what_was_tried():
+    res = bf.solve(_slow_ball(0.001))   # M ~ 1.5e5
+    assert not res.success
+    assert "the narrower domain x in [-2.5, 1.2] a_x" in res.message, res.message
+    assert res.pressure.shape == (97, 97), "a failure stays on the requested grid"
+    assert res.newton_iterations <= _slow_ball(0.001).solver.iteration_budget

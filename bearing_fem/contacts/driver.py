@@ -518,10 +518,9 @@ def _unique(items: Sequence[str]) -> list[str]:
 
 def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: Budget,
                  *, parameter: str | None = None, prefix: str = "",
-                 grid_note: str = "", hint: str = "") -> str:
+                 grid_note: str = "") -> str:
     """Status message of a Newton solve: iterations, grids, continuation (in
-    ``parameter``), residual, what was spent when the budget ran out, and (failures
-    only) the model's ``hint``."""
+    ``parameter``), residual, and what was spent when the budget ran out."""
     note = ""
     if outcome.continuation_steps:
         note = f", continuation in {parameter} ({outcome.continuation_steps} steps)"
@@ -541,8 +540,6 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
                           prefix=prefix, detail=detail, cap=solver.max_iterations)
     if outcome.status in BUDGET_STATUSES:
         msg += f" Spent {budget.describe()}."
-    if hint and outcome.status != "converged":
-        msg += " " + hint
     return msg
 
 
@@ -605,8 +602,7 @@ def _solve_newton_model(model: Any, scene: Any, t0: float, *,
     residual = float(np.max(np.abs(problem.residual(z))))
     message = outcome_text(outcome, residual, scene.solver, budget,
                            parameter=model.continuation_parameter, prefix=prefix,
-                           grid_note=getattr(model, "grid_note", ""),
-                           hint=getattr(model, "failure_hint", ""))
+                           grid_note=getattr(model, "grid_note", ""))
     solution = model.solution(problem, z)
     coarse: list[Solution] = []
     if outcome.converged:
