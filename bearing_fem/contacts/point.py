@@ -1401,7 +1401,8 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
             PointModel(narrow), narrow, t0, progress=progress))
 
 
-def high_load_scene(scene, spent_iterations: int = 0, spent_seconds: float = 0.0):
+def high_load_scene(scene: Scene, spent_iterations: int = 0,
+                    spent_seconds: float = 0.0) -> Scene | None:
     """The scene on :data:`HIGH_LOAD_RANGES` and :data:`HIGH_LOAD_NODES`, solved when the
     default set-up of a loaded, elastic, piezo-viscous scene above
     :data:`CHECKED_MOES_M` (default domain) fails; its solver budget is what the first
@@ -1426,7 +1427,7 @@ def high_load_scene(scene, spent_iterations: int = 0, spent_seconds: float = 0.0
                    solver=replace(solver, iteration_budget=left, time_limit=seconds))
 
 
-def _high_load_outcome(scene, first: Result, narrow, second: Result) -> Result:
+def _high_load_outcome(scene: Scene, first: Result, narrow: Scene, second: Result) -> Result:
     """The result of the high-load second solve (:func:`high_load_scene`) when it
     succeeded, else the first, each saying what was tried."""
     (x0, x1), (y0, y1) = HIGH_LOAD_RANGES
