@@ -73,11 +73,6 @@ def outlet_position_line(x: np.ndarray, p: np.ndarray, cavitation: str) -> float
     return float(min(xc, x[k]))
 
 
-#: h_min between the nodes more than this fraction below the nodal minimum is reported:
-#: the constriction is narrower than the grid resolves.
-SUBGRID_FILM_FRACTION = 0.01
-
-
 def parabola_vertex(x: np.ndarray, f: np.ndarray, i: int) -> tuple[float, float]:
     """Vertex (position, value) of the parabola through the nodes i-1, i, i+1 of
     (x, f); the node itself at an end of the array, for a straight line, or where the
@@ -124,13 +119,19 @@ def peak(p: np.ndarray, x: np.ndarray, y: np.ndarray | None = None) -> float:
 #: h_min between the nodes more than this fraction below the nodal minimum is reported:
 #: the constriction is narrower than the grid resolves.
 SUBGRID_FILM_FRACTION = 0.01
+#: A minimum film below this [m] is a few molecular layers of oil (5 nm): there the
+#: continuum film of the Reynolds equation, which this package solves, is doubtful and the
+#: surfaces' roughness, which it does not model, decides (mixed or boundary lubrication;
+#: Johnston, Wayte & Spikes 1991 measured EHL films departing from the continuum theory
+#: below about 5-10 nm). The result says so in its warnings.
+MOLECULAR_FILM = 5e-9
 
 
 def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
                  p_nodes: np.ndarray, load: float, x: np.ndarray,
                  y: np.ndarray | None = None) -> tuple[dict[str, float], list[str]]:
-    """h_min, h_central, p_max and load of a solution, and a warning when the minimum film
-    lies between the nodes.
+    """h_min, h_central, p_max and load of a solution, and warnings when the minimum film
+    lies between the nodes or below :data:`MOLECULAR_FILM`.
 
     h_min is the minimum of the film field: over the nodes and the quadrature points (the
     film between nodes: exact geometry plus the interpolated deformation), and never above
@@ -150,6 +151,11 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
                      f"{100 * (1 - h_min / h_node_min):.3g}% below the nodal minimum "
                      f"{h_node_min:.4g} m): the outlet constriction is not resolved by the "
                      "grid; refine the mesh")
+    if 0.0 < h_min < MOLECULAR_FILM:
+        notes.append(f"h_min = {h_min:.3g} m is below {MOLECULAR_FILM:.0e} m, a few molecular "
+                     "layers of oil: a continuum film (the Reynolds equation) is doubtful "
+                     "there, and surface roughness, not modelled, decides (mixed or boundary "
+                     "lubrication)")
     return {"h_min": h_min, "h_central": float(h_central), "p_max": peak(p_nodes, x, y),
             "load": float(load)}, notes
 

@@ -306,6 +306,8 @@ def test_point_above_the_checked_map_is_solved_on_the_narrower_domain():
         "the result's scene is the one solved (an export reproduces it)"
     assert "the default domain failed first" in res.message, res.message
     assert any("narrower domain" in w and "starve" in w for w in res.warnings), res.warnings
+    assert res.quantities["h_min"] < 5e-9 and any("molecular" in w for w in res.warnings), \
+        "a film of a few nm is flagged: the continuum model is doubtful there"
     assert res.newton_iterations <= _slow_ball(0.05).solver.iteration_budget, \
         "both solves share one iteration budget"
     # where it applies, and the budget it gets

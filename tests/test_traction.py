@@ -130,3 +130,16 @@ def test_poiseuille_conservative_form_on_exact_rigid_film():
     np.testing.assert_allclose(ops.integrate(d.poiseuille_density), d.heat_power_poiseuille,
                                rtol=1e-3, atol=1e-9 * d.heat_power_poiseuille,
                                err_msg="the h*-shifted density integrates to Q_P (int p' ~ 0)")
+
+
+def test_film_of_a_few_molecular_layers_is_flagged():
+    from bearing_fem.post import MOLECULAR_FILM, film_numbers
+
+    x = np.linspace(-1e-3, 1e-3, 5)
+    p = np.array([0.0, 1e8, 2e8, 1e8, 0.0])
+    for h_min, flagged in ((0.5 * MOLECULAR_FILM, True), (2.0 * MOLECULAR_FILM, False)):
+        h = np.full(5, 4.0 * MOLECULAR_FILM)
+        h[3] = h_min
+        nums, notes = film_numbers(h, h.copy(), 4.0 * MOLECULAR_FILM, p, 1.0, x)
+        assert nums["h_min"] == h_min
+        assert any("molecular" in n for n in notes) == flagged, (h_min, notes)
