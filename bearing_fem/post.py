@@ -294,6 +294,8 @@ MAX_FRICTION_COEFFICIENT = 1.0
 #: Largest double [-]: a viscosity beyond it (Barus at alpha p > 709.78) is reported
 #: clipped at it (:func:`reported_viscosity`).
 _MAX_FLOAT = float(np.finfo(float).max)
+#: alpha p beyond which the Barus viscosity overflows [-]: ln(_MAX_FLOAT) = 709.78.
+_BARUS_OVERFLOW = math.log(_MAX_FLOAT)
 
 
 def reported_viscosity(eta: np.ndarray) -> tuple[np.ndarray, list[str]]:
@@ -307,7 +309,7 @@ def reported_viscosity(eta: np.ndarray) -> tuple[np.ndarray, list[str]]:
     share = float(np.mean(over))
     return np.where(over, _MAX_FLOAT, eta), [
         f"the viscosity overflows double precision at {100 * share:.3g}% of the nodes "
-        f"(Barus at alpha p > {math.log(_MAX_FLOAT):.1f}): viscosity_Pa_s is clipped at "
+        f"(Barus at alpha p > {_BARUS_OVERFLOW:.1f}): viscosity_Pa_s is clipped at "
         f"{_MAX_FLOAT:.3g} Pa s there (the film solution, in the reduced pressure, is "
         "not affected)"]
 
@@ -381,7 +383,7 @@ def friction_and_heat(ops: QuadratureOperators, h_q: np.ndarray,
         q["friction_coefficient"] = mu
     if not math.isfinite(d.friction_force):
         notes.append(f"friction_force and heat_power undefined: the viscosity overflows "
-                     f"double precision in the film (Barus at alpha p > {math.log(_MAX_FLOAT):.1f}) "
+                     f"double precision in the film (Barus at alpha p > {_BARUS_OVERFLOW:.1f}) "
                      f"and {shear['model']} traction grows with it without bound; a limiting "
                      "shear stress bounds it (traction.model = 'limiting' or "
                      "'eyring-limiting')")
@@ -470,9 +472,8 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     for key in ESTIMATED_QUANTITIES:
         vals: list[float] = []
         for lv in levels:  # the trailing run of finite values, coarse to fine
-            v = lv.get(key)
-            ok = isinstance(v, (int, float, np.floating)) and math.isfinite(float(v))
-            vals = vals + [float(v)] if ok else []
+            v = _finite_or_none(lv.get(key))
+            vals = vals + [float(v)] if v is not None else []
         if not vals or len(vals) < 1 or levels[-1].get(key) is None or vals[-1] == 0.0:
             out[key], methods[key], orders[key] = None, "none", None
             continue
@@ -488,11 +489,12 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
     return out
 
 
-def _finite_or_none(v: Any) -> Any:
-    """``v``, or None for a non-finite number (never NaN/inf in a summary)."""
-    if isinstance(v, (int, float, np.floating)) and not math.isfinite(float(v)):
+def _finite_or_none(v: Any) -> float | None:
+    """``v`` as a float, or None for a missing, non-numeric or non-finite value (never
+    NaN/inf in a summary)."""
+    if not isinstance(v, (int, float, np.floating)) or not math.isfinite(float(v)):
         return None
-    return v
+    return float(v)
 
 
 def estimate_warnings(estimate: Mapping[str, Any] | None,

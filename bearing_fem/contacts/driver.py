@@ -358,7 +358,7 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
                   budget=budget, callback=_level_callback(progress, n - 1))
     _accumulate(total, out, finer.label)
     total.refined = (finer.label, out.converged)
-    out_fine = out
+    fine = out
     if not out.converged:
         # the result stays on the requested grid: its last iterate, and its status
         # unless the budget ran out on the finer grid
@@ -372,7 +372,6 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
     out = attempt(model, level, problem, model.transfer(out.z, fine_problem, problem),
                   solver=solver, tolerance=solver.tolerance, transferred=True,
                   budget=budget, callback=_level_callback(progress, n - 1))
-    kept_fine = (out_fine.z, out_fine.status)
     _accumulate(total, out, level.label)
     if out.converged:
         total.levels = [LevelSolution(level, problem, out.z)]
@@ -380,8 +379,8 @@ def _from_finer_grid(model: ContactModel, levels: list, solver: Any, budget: Bud
         # the requested grid has no converged solution even from the finer one (measured:
         # a 100 N ball at 0.1 m/s, M = 4.9e3, L = 4.3, on the default 129^2 grid): the
         # result is the finer grid's converged solution, and says so
-        total.z, total.problem, total.status = kept_fine[0], fine_problem, kept_fine[1]
-        total.levels = [LevelSolution(finer, fine_problem, kept_fine[0])]
+        total.z, total.problem, total.status = fine.z, fine_problem, fine.status
+        total.levels = [LevelSolution(finer, fine_problem, fine.z)]
         total.requested = level.label
 
 
@@ -609,7 +608,7 @@ def _solve_newton_model(model: Any, scene: Any, t0: float, *,
         for lv in estimate_levels(model, outcome, scene.solver, budget):
             coarse.append(model.solution(*model.whole(lv.problem, lv.z)))
     notes = []
-    if outcome.requested is not None and outcome.refined is not None:
+    if outcome.requested is not None:  # set together with ``refined``
         notes.append(f"the requested grid ({outcome.requested}) has no converged solution; "
                      f"the result is on {outcome.refined[0]} (half the spacing)")
     return finish(scene, solution, status=outcome.status, message=message, t0=t0,

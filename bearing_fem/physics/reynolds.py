@@ -264,12 +264,8 @@ class UpwindFluxModel(FluxModel):
             out = [k3 * g for g in gq]
         out[0] = out[0] - self.mean_speed * rho + c * drho * gp[0]
         if pe is not None:
-            # xi'(Pe) dPe/dh = -3 xi'(Pe) Pe / h ~ -3 / (Pe h) -> 0 where Pe is infinite
-            # (eps underflowed): that limit, not 0 * inf = NaN
-            with np.errstate(over="ignore", invalid="ignore"):
-                dc = (0.5 * self.upwind * dx * self.mean_speed * _xi_derivative(pe)
-                      * (-3.0 * pe / h))
-            dc = np.where(np.isfinite(dc), dc, 0.0)
+            # dPe/dh = -3 Pe / h
+            dc = 0.5 * self.upwind * dx * self.mean_speed * _xi_chain(pe, -3.0 / h)
             out[0] = out[0] + dc * (rho * gh[0] + h * drho * gp[0])
         return tuple(out)
 
@@ -333,14 +329,10 @@ class UpwindFluxModel(FluxModel):
         fx = out[0] - self.mean_speed * rho_p * h + c * dx_term
         if pe is not None:
             eta = self.viscosity(pc)
-            # Pe ~ eta; where eta overflows (Barus at alpha p > ~700) Pe is infinite and
-            # xi'(Pe) Pe' -> 0 (xi saturates at 1): the 0 * inf and inf/inf there are set
-            # to their limit 0, not NaN
+            # Pe ~ eta: dPe/dp = Pe eta'/eta
             with np.errstate(over="ignore", invalid="ignore"):
-                pe_p = pe * (np.imag(eta) / step) / np.real(eta)
-                xi_p = _xi_derivative(pe) * pe_p
-            xi_p = np.where(np.isfinite(xi_p), xi_p, 0.0)
-            c_p = 0.5 * self.upwind * dx * self.mean_speed * xi_p
+                log_slope = (np.imag(eta) / step) / np.real(eta)
+            c_p = 0.5 * self.upwind * dx * self.mean_speed * _xi_chain(pe, log_slope)
             fx = fx + c_p * (rho * gh[0] + h * drho * gp[0])
         out[0] = fx
         return tuple(out)
@@ -398,6 +390,16 @@ def _xi_real(x: np.ndarray) -> np.ndarray:
     out[big] = np.sign(xb) - 1.0 / xb
     out[mid] = 1.0 / np.tanh(xm) - 1.0 / xm
     return out
+
+
+def _xi_chain(pe: np.ndarray, log_slope) -> np.ndarray:
+    """xi'(Pe) dPe/ds for dPe/ds = Pe * ``log_slope`` (the chain rule of the upwind factor
+    in a variable s). Where Pe is infinite (eps underflowed, or the viscosity overflowed:
+    Barus at alpha p > ~710) xi saturates at 1 and xi'(Pe) Pe ~ 1/Pe, so the product
+    takes its limit 0 there, not the NaN of 0 * inf or inf/inf."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = _xi_derivative(pe) * (pe * log_slope)
+    return np.where(np.isfinite(out), out, 0.0)
 
 
 def _xi_derivative(x: np.ndarray) -> np.ndarray:

@@ -320,7 +320,6 @@ class RunStore:
 
         attempts = attempts or {}
         params = sorted({k for c in cases for k in c.params})
-        marked = []
         with self.transaction() as conn:
             self._ensure_columns(conn, params, "param")
             if planned is not None:
@@ -329,13 +328,12 @@ class RunStore:
                          if now.get(c.hash, {}).get("status", "pending") in NON_FINAL
                          or now.get(c.hash) == planned.get(c.hash)]
             for c in cases:
-                marked.append(c)
                 row = {"hash": c.hash, "kind": c.kind, "status": "pending", "success": None,
                        "message": f"submitted {now_utc()}", "attempts": attempts.get(c.hash, 0),
                        "scene": canonical_json(c.scene.to_dict()), "updated_at": now_utc()}
                 row.update(c.params)
                 self._upsert(conn, row)
-        return marked
+        return list(cases)
 
     def fill_params(self, cases: Sequence[Any]) -> None:
         """Write the parameters of cases that are already stored (e.g. run by another
