@@ -67,7 +67,8 @@ def test_fine_grid_converges_with_sequencing_and_reuse(monkeypatch):
     assert fine.status == "converged", fine.message
     assert fine.newton_iterations <= 40, "iteration cap (regression of the fine-grid fix)"
     assert [s[1] for s in fine.continuation] == [
-        "converged (501 nodes)", "converged (1001 nodes)", "converged (2001 nodes)"]
+        "converged (251 nodes)", "converged (501 nodes)", "converged (1001 nodes)",
+        "converged (2001 nodes)"]
     assert counts["krylov"] > 0, "reused factors served some Newton steps"
     assert counts["factorisations"] < fine.newton_iterations, \
         "fewer dense factorisations than Newton steps"

@@ -62,11 +62,13 @@ def test_line_levels_stop_two_halvings_below_the_grid():
     two = MAX_COARSENINGS
     assert line_levels(4001, max_coarsenings=two) == [1001, 2001, 4001], \
         "capped high-M grid: coarsest 1001"
-    assert line_levels(4001) == [501, 1001, 2001, 4001], "no limit: down to 501 nodes"
-    assert line_levels(3601, max_coarsenings=two) == line_levels(3601) == [901, 1801, 3601]
+    assert line_levels(4001) == [251, 501, 1001, 2001, 4001], "no limit: down to 251 nodes"
+    assert line_levels(3601, max_coarsenings=two) == [901, 1801, 3601]
+    assert line_levels(3601) == [226, 451, 901, 1801, 3601], "a level needs (N - 1)/2 integer"
     assert line_levels(2001, max_coarsenings=two) == [501, 1001, 2001]
-    assert line_levels(801, max_coarsenings=two) == [801]
-    assert MAX_COARSENINGS == 2 and COARSEST_NODES == 501
+    assert line_levels(801, max_coarsenings=two) == [201, 401, 801]
+    assert line_levels(301) == [301], "no level below COARSEST_NODES"
+    assert MAX_COARSENINGS == 2 and COARSEST_NODES == 201
 
 
 def test_high_load_line_converges_on_the_default_grid(load_study):
@@ -263,6 +265,8 @@ def test_failed_finer_grid_leaves_the_requested_grid(load_study):
     grids = [e["grid"] for e in events if e["event"] == "level"]
     assert grids[:2] == ["97x97 nodes", "193x193 nodes"], grids
     assert "was tried too" in r.message, "then the high-load second solve, which fails too"
+    assert f"({r.newton_iterations} in all)" in r.message, \
+        "the message ends with the iteration count the exit-3 line and the summary give"
     assert r.pressure.shape == (97, 97), "the requested grid, not the finer one"
     assert np.all(np.isfinite(r.pressure)) and np.all(np.isfinite(r.film))
 
@@ -305,6 +309,7 @@ def test_point_above_the_checked_map_is_solved_on_the_narrower_domain():
     assert res.scene.mesh.x_range == (x0, x1) and res.scene.mesh.y_range == (y0, y1), \
         "the result's scene is the one solved (an export reproduces it)"
     assert "the default domain failed first" in res.message, res.message
+    assert f"; {res.newton_iterations} in all)" in res.message, res.message
     assert any("narrower domain" in w and "starve" in w for w in res.warnings), res.warnings
     assert res.quantities["h_min"] < 5e-9 and any("molecular" in w for w in res.warnings), \
         "a film of a few nm is flagged: the continuum model is doubtful there"

@@ -453,8 +453,14 @@ REDUCED_POISEUILLE_LINE = True
 #: solved coarse-to-fine, halving the spacing each level, each level started from the
 #: interpolated solution of the one below (measured at M = 100, L = 10, 2001 nodes:
 #: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
-#: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge).
-COARSEST_NODES = 501
+#: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge). The
+#: Newton iterations from the Hertzian guess are cheapest on the coarsest level: from 201
+#: nodes (was 501) the default 1801-node solve at M = 100, L = 10 takes 6 + 5 + 7 + 4
+#: iterations on 226 .. 1801 nodes instead of 18 + 4 on 901 and 1801; over the line
+#: map of ``studies/stability_atlas.py`` (384 solves) 12 % fewer Newton iterations and
+#: 113 instead of 170 continuation steps, with the same films but in one under-resolved
+#: Roelands case (docs/stability.md, "The line grid sequence from 201 nodes").
+COARSEST_NODES = 201
 #: Grid sequencing above Moes M = DENSE_MESH_MOES_M: at most this many halvings of the
 #: spacing below the solve's grid. A coarse level must still resolve the outlet spike,
 #: which narrows with load: the default
