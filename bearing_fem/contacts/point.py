@@ -1435,16 +1435,17 @@ def _high_load_outcome(scene: Scene, first: Result, narrow: Scene, second: Resul
     where = (f"x in [{x0:g}, {x1:g}] a_x, y in [{y0:g}, {y1:g}] a_y on {n}x{n} nodes")
     m = _moes_point_m(scene)
     if not second.success:
+        first.newton_iterations += second.newton_iterations
         first.message += (f" At Moes M = {m:.4g}, above the checked M <= {CHECKED_MOES_M:g}, "
                           f"the narrower domain {where} was tried too: {second.status} "
-                          f"after {second.newton_iterations} Newton iterations.")
-        first.newton_iterations += second.newton_iterations
+                          f"after {second.newton_iterations} Newton iterations "
+                          f"({first.newton_iterations} in all).")
         first.wall_time_s = second.wall_time_s
         return first
-    second.message += (f"; the default domain failed first ({first.status} after "
-                       f"{first.newton_iterations} Newton iterations) and this result is "
-                       f"on {where}")
     second.newton_iterations += first.newton_iterations
+    second.message += (f"; the default domain failed first ({first.status} after "
+                       f"{first.newton_iterations} Newton iterations; "
+                       f"{second.newton_iterations} in all) and this result is on {where}")
     second.warnings.insert(0, (
         f"solved on the narrower domain {where}: at Moes M = {m:.4g}, above the "
         f"checked M <= {CHECKED_MOES_M:g}, the default domain failed ({first.status}); a "
