@@ -12,7 +12,9 @@ The only module of the package that prints or exits. Exit codes:
   files are still written, with the status (``plot`` of such a result writes the figure
   stamped with the status and also exits 3);
 * 130 -- interrupted (Ctrl-C): one line on stderr; an export in progress leaves no file
-  behind.
+  behind;
+* 141 -- the reader of the output closed it (``bearing-fem runs STORE | head``): no
+  traceback (128 + SIGPIPE, as the shell reports a process killed by a broken pipe).
 
 Python warnings (e.g. numpy floating-point warnings) never reach the terminal as such:
 they are logged at info level (shown with ``-v``).
@@ -33,6 +35,7 @@ EXIT_OK = 0
 EXIT_INVALID = 2
 EXIT_NO_SOLUTION = 3
 EXIT_INTERRUPTED = 130
+EXIT_BROKEN_PIPE = 141
 
 #: Default output directory of ``bearing-fem demo``.
 DEMO_DIR = "bearing_fem_demo"
@@ -261,6 +264,12 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
     path = Path(args.bearing)
     if not path.is_file() and args.bearing in example_names():
         bearing = load_example(args.bearing)
+    elif not path.exists():
+        names = example_names()
+        hint = (f" (the shipped example is named without .toml: `bearing-fem bearing "
+                f"{path.stem}`)" if path.stem in names else "")
+        raise _InputError(f"no bearing file {args.bearing!r}, and no shipped example of that "
+                          f"name; shipped examples: {', '.join(names)}{hint}")
     else:
         bearing = Bearing.from_toml(path)
     result = solve_bearing(bearing)
@@ -596,10 +605,27 @@ def main(argv: Sequence[str] | None = None) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("default")
             warnings.showwarning = _log_warning
-            return _main(sys.argv[1:] if argv is None else argv)
+            code = _main(sys.argv[1:] if argv is None else argv)
+        sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
+        return code
     except KeyboardInterrupt:
         print("bearing-fem: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+    except BrokenPipeError:
+        # the reader (``| head``) has gone: send what is still buffered nowhere, so that
+        # the interpreter's final flush of stdout does not raise (and print) again
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
+
+
+def _silence_stdout() -> None:
+    """Point the stdout file descriptor at the null device."""
+    import os
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # no real file descriptor (captured)
+        pass
 
 
 def _main(argv: Sequence[str]) -> int:

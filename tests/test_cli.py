@@ -238,6 +238,21 @@ def test_sigint_of_a_running_solve(tmp_path):
     assert not out.exists() or not any(out.iterdir())
 
 
+def test_closed_output_pipe_exits_141_without_a_traceback(tmp_path):
+    """``bearing-fem ... | head``: the reader closes the pipe before the summary is
+    printed; the files are written, the exit code is 141 and nothing is printed."""
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "bearing_fem", "solve",
+                             _write(tmp_path, RIGID_OK), "--out", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc.stdout.close()  # the reader has gone before the first line
+    err = proc.stderr.read().decode()
+    proc.wait(timeout=120)
+    assert proc.returncode == cli.EXIT_BROKEN_PIPE, err
+    assert "Traceback" not in err and "BrokenPipeError" not in err, err
+    assert (out / "summary.json").is_file(), "the files were written before the summary"
+
+
 def test_python_warnings_go_to_the_log(tmp_path, monkeypatch, capsys):
     """A numpy RuntimeWarning never reaches the terminal raw; -v shows it as a log line."""
     import bearing_fem.contacts.dispatch as dispatch
