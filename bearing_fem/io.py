@@ -684,11 +684,18 @@ def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
     import meshio
 
     outdir = Path(outdir)
-    outdir.mkdir(parents=True, exist_ok=True)
+    made: list[Path] = []  # directories this export created (removed again on failure)
+
+    def make_dir(d: Path) -> None:
+        missing = [q for q in (d, *d.parents) if not q.exists()]
+        d.mkdir(parents=True, exist_ok=True)
+        made.extend(reversed(missing))
+
+    make_dir(outdir)
     stages: list[_Staging] = []
 
     def stage(d: Path) -> _Staging:
-        d.mkdir(parents=True, exist_ok=True)
+        make_dir(d)
         st = _Staging(d)
         stages.append(st)
         return st
@@ -750,5 +757,10 @@ def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
     except BaseException:
         for st in stages:
             st.discard()
+        for d in reversed(made):  # innermost first; only what is empty again
+            try:
+                d.rmdir()
+            except OSError:
+                pass
         raise
     return files

@@ -587,8 +587,9 @@ class Kinematics:
         _bounded(self, "u1", "m/s", -MAX_SPEED, MAX_SPEED)
         _bounded(self, "u2", "m/s", -MAX_SPEED, MAX_SPEED)
         if self.mean_speed <= 0.0:
-            raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 must be > 0 m/s "
-                             f"(inlet at x < 0), got u1={self.u1!r}, u2={self.u2!r}")
+            raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 must be at least "
+                             f"{MIN_MEAN_SPEED:g} m/s (positive: the inlet is at x < 0), got "
+                             f"u1={self.u1!r}, u2={self.u2!r} m/s")
         if self.mean_speed < MIN_MEAN_SPEED:
             raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 = {self.mean_speed!r} m/s "
                              f"is below {MIN_MEAN_SPEED:g} m/s, too slow to entrain a film "

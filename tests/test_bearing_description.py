@@ -62,6 +62,9 @@ def _base() -> dict:
     ("bearing", "elements", 2.5, r"bearing\.elements must be an integer"),
     ("bearing", "inner_conformity", 0.49, r"inner_conformity = r/D_w must lie in \(0\.5, 0\.6\]"),
     ("bearing", "radial_clearance", -1e-6, r"radial_clearance must be >= 0 m"),
+    # micrometres given as millimetres: the free contact angle would pass 45 deg
+    ("bearing", "radial_clearance", 7.5e-3, r"radial_clearance = 0\.0075 m exceeds .* m, "
+                                            r"the clearance of a free contact angle of 45"),
     ("bearing", "contact_angle", 15.0, r"contact_angle applies to angular-contact"),
     ("bearing", "type", "spherical", r"bearing\.type must be one of"),
     ("bearing", "effective_length", 0.01, r"effective_length applies to roller bearings"),
@@ -94,7 +97,8 @@ def test_unknown_and_missing_keys():
         Bearing.from_dict(d)
     d = _base()
     d["contact"] = {"kind": "line"}
-    with pytest.raises(SceneError, match="looks like a contact scene file"):
+    with pytest.raises(SceneError, match="looks like a contact scene file: solve it with "
+                                         "`bearing-fem solve`"):
         Bearing.from_dict(d)
     d = _base()
     del d["operation"]
@@ -130,3 +134,28 @@ def test_cross_section_rules():
     d["model"]["thermal"] = "patch"
     with pytest.raises(SceneError, match="line contacts .* only"):
         Bearing.from_dict(d)
+
+
+def test_roller_clearance_in_the_wrong_unit_is_refused():
+    d = copy.deepcopy(load_example("nncf5040").to_dict())
+    d["bearing"]["radial_clearance"] = 0.1  # 100 um meant, given as mm
+    with pytest.raises(SceneError, match=r"bearing\.radial_clearance = 0\.1 m exceeds .* m "
+                                         r"\(0\.05 of the roller diameter\)"):
+        Bearing.from_dict(d)
+
+
+@pytest.mark.parametrize("key, value, pattern", [
+    ("inner_rpm", 1e7, r"operation\.inner_rpm = 10000000\.0 1/min gives element 0's inner "
+                       r"contact an entrainment speed of .* m/s, which its contact model "
+                       r"refuses: kinematics\.u1 must lie in"),
+    ("radial_load", 1e9, r"operation\.radial_load = 1000000000\.0 N and operation\.axial_load "
+                         r"= 0\.0 N give element 0's inner contact a load of .* N, which its "
+                         r"contact model refuses: load\.force"),
+])
+def test_contact_refusals_name_the_bearing_fields(key, value, pattern):
+    """The contact scenes' fields (kinematics.u1, load.force) are not in a bearing file:
+    a refusal names the operation field that caused it."""
+    d = _base()
+    d["operation"][key] = value
+    with pytest.raises(SceneError, match=pattern):
+        bf.solve_bearing(Bearing.from_dict(d))

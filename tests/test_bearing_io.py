@@ -37,6 +37,30 @@ def result():
     return solve_bearing(small_roller(mesh={"line_nodes": 201}))
 
 
+def test_interrupted_export_leaves_nothing(result, tmp_path, monkeypatch):
+    """Ctrl-C while the contact files are written: no file and no directory the export
+    made is left (an empty ``contacts_vtk/`` was)."""
+    calls = {"n": 0}
+
+    def interrupted(*args, **kwargs):
+        calls["n"] += 1
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(io, "write_h5", interrupted)
+    out = tmp_path / "new" / "out"
+    with pytest.raises(KeyboardInterrupt):
+        io.export_bearing(result, out)
+    assert calls["n"] == 1, "interrupted at the first contact file"
+    assert not (tmp_path / "new").exists(), [str(p) for p in tmp_path.rglob("*")]
+    # an existing output directory and its files stay
+    keep = tmp_path / "mine"
+    keep.mkdir()
+    (keep / "notes.txt").write_text("mine")
+    with pytest.raises(KeyboardInterrupt):
+        io.export_bearing(result, keep)
+    assert sorted(p.name for p in keep.iterdir()) == ["notes.txt"]
+
+
 def test_export_bearing_files(result, tmp_path):
     files = io.export_bearing(result, tmp_path)
     j = result.most_loaded_element()
@@ -101,3 +125,15 @@ def test_cli_bearing(tmp_path, capsys):
         cli.EXIT_NO_SOLUTION
     s = json.loads((out3 / "bearing_summary.json").read_text())
     assert s["status"] == "contacts_failed", "files are written with the status"
+
+
+@pytest.mark.parametrize("name, hint", [("6208", ""), ("6209.toml", "bearing-fem bearing 6209")])
+def test_cli_bearing_names_the_shipped_examples(tmp_path, monkeypatch, capsys, name, hint):
+    """Neither a file nor a shipped example: exit 2, naming the examples (and the example's
+    name without .toml when that is what was meant); nothing written."""
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["bearing", name, "--out", "o"]) == cli.EXIT_INVALID
+    err = capsys.readouterr().err
+    assert f"no bearing file {name!r}" in err and "6209, 7010-hybrid" in err, err
+    assert hint in err
+    assert not (tmp_path / "o").exists()

