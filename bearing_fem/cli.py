@@ -430,6 +430,7 @@ exit codes:
        still written and carry the status; the message gives the status, the
        iterations, the last residual and the time
   130  interrupted (Ctrl-C); no half-written file is left behind
+  141  the reader of the output closed it (| head); no traceback
 
 Scene files are TOML in SI units (m, Pa, Pa s, m/s, N; line contacts per metre of
 length). The scene format and every key are described in the package documentation
