@@ -62,9 +62,9 @@ def _base() -> dict:
     ("bearing", "elements", 2.5, r"bearing\.elements must be an integer"),
     ("bearing", "inner_conformity", 0.49, r"inner_conformity = r/D_w must lie in \(0\.5, 0\.6\]"),
     ("bearing", "radial_clearance", -1e-6, r"radial_clearance must be >= 0 m"),
-    # micrometres given as millimetres: the free contact angle would pass 45 deg
+    # micrometres given as millimetres: the free contact angle would pass 60 deg
     ("bearing", "radial_clearance", 7.5e-3, r"radial_clearance = 0\.0075 m exceeds .* m, "
-                                            r"the clearance of a free contact angle of 45"),
+                                            r"the clearance of a free contact angle of 60"),
     ("bearing", "contact_angle", 15.0, r"contact_angle applies to angular-contact"),
     ("bearing", "type", "spherical", r"bearing\.type must be one of"),
     ("bearing", "effective_length", 0.01, r"effective_length applies to roller bearings"),

@@ -54,9 +54,11 @@ def _optional_positive(obj: Any, name: str, unit: str) -> None:
 
 
 #: Largest free contact angle of a deep-groove ball bearing [deg] that its radial
-#: clearance may give (cos a0 = 1 - c_r / A): catalogue clearances give 10-20 deg; a
-#: clearance beyond this is a unit slip (micrometres given as millimetres).
-MAX_FREE_CONTACT_ANGLE = 45.0
+#: clearance may give (cos a0 = 1 - c_r / A): the 6209 example's clearance gives 9.9 deg;
+#: 60 deg leaves room for large clearance classes with close conformities, while
+#: micrometres given as millimetres put c_r far beyond 2 A, where cos a0 = 1 - c_r / A has
+#: no solution (the load distribution failed with a math domain error).
+MAX_FREE_CONTACT_ANGLE = 60.0
 #: Largest radial clearance of a roller bearing as a fraction of the roller diameter [-]:
 #: the largest catalogue clearances (C5) of cylindrical roller bearings are about 1 % of it.
 MAX_ROLLER_CLEARANCE_FRACTION = 0.05
