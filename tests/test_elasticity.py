@@ -17,6 +17,7 @@ import scipy.sparse
 
 from bearing_fem.physics.elasticity import (
     DENSE_POINT_CAP,
+    GradedHalfSpaceLine,
     HalfSpaceLine,
     HalfSpacePoint,
     LocalCompliance,
@@ -234,6 +235,32 @@ def test_line_matrix_matches_quadrature():
                                err_msg="Toeplitz matrix vs quadrature of -(4/(pi E')) int "
                                        "ln|x - s| ds over each cell; 1e-10 covers quad's "
                                        "error at the log singularity")
+
+
+def test_graded_line_matrix_matches_quadrature_and_the_uniform_operator():
+    x = 1e-5 * np.array([-1.0, -0.6, -0.35, -0.2, -0.12, -0.05, 0.0, 0.3, 0.9])
+    m = GradedHalfSpaceLine(x, E_PRIME).matrix()
+    mid = 0.5 * (x[1:] + x[:-1])
+    lo = np.concatenate(([2 * x[0] - mid[0]], mid))
+    hi = np.concatenate((mid, [2 * x[-1] - mid[-1]]))
+    ref = np.empty_like(m)
+    for i, xi in enumerate(x):
+        for j in range(x.size):
+            pts = [xi] if lo[j] < xi < hi[j] else None
+            val, _ = scipy.integrate.quad(lambda s: math.log(abs(xi - s)), lo[j], hi[j],
+                                          points=pts, epsabs=0, epsrel=1e-13, limit=200)
+            ref[i, j] = -(4.0 / (math.pi * E_PRIME)) * val
+    np.testing.assert_allclose(m, ref, rtol=1e-10, atol=0,
+                               err_msg="cell integrals between the midpoints (the end cells "
+                                       "mirrored); 1e-10 covers quad at the log singularity")
+    u = np.linspace(-4.5e-4, 1.5e-4, 301)
+    np.testing.assert_allclose(GradedHalfSpaceLine(u, E_PRIME).matrix(),
+                               HalfSpaceLine(u, E_PRIME, method="dense").matrix(), rtol=1e-12,
+                               atol=1e-12 * np.max(np.abs(HalfSpaceLine(u, E_PRIME).matrix())),
+                               err_msg="on uniform nodes the graded operator is the Toeplitz "
+                                       "one (rounding only)")
+    with pytest.raises(ValueError, match="strictly increasing"):
+        GradedHalfSpaceLine(x[::-1], E_PRIME)
 
 
 def test_line_kernel_far_form_matches_direct_form():

@@ -131,3 +131,21 @@ def test_grid_file_errors_name_the_field(tmp_path):
         with pytest.raises(SceneError, match=match):
             scene = bf.Scene.from_dict(dict(BALL, mesh=mesh))
             bf.solve(scene)
+
+
+def test_outlet_graded_nodes():
+    from bearing_fem.mesh import every_other, outlet_graded_nodes
+
+    x = outlet_graded_nodes(801, (-4.5, 1.5), centre=0.95, width=0.1, ratio=9.0)
+    assert x.size == 801 and x[0] == -4.5 and x[-1] == 1.5 and np.all(np.diff(x) > 0)
+    steps = np.diff(x)
+    np.testing.assert_allclose(steps.max() / steps.min(), 9.0, rtol=0.02,
+                               err_msg="the density ratio is the spacing ratio (2 % for the "
+                                       "discrete density)")
+    assert abs(x[np.argmin(steps)] - 0.95) < 0.01, "finest at the centre"
+    assert every_other(x, 401).size == 401, "n - 1 divisible by 4: nested coarser levels"
+    for kwargs, match in (({"nodes": 2}, "nodes"), ({"nodes": 11, "ratio": 0.5}, "ratio"),
+                          ({"nodes": 11, "width": 0.0}, "width"),
+                          ({"nodes": 11, "x_range": (1.0, -1.0)}, "x_range")):
+        with pytest.raises(ValueError, match=match):
+            outlet_graded_nodes(**kwargs)

@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 import scipy.linalg as sla
@@ -34,12 +35,12 @@ from skfem import CellBasis, ElementLineP1, MeshLine
 
 from .. import units
 from ..analytic import reduced_from_barus
-from ..errors import SceneError
 from ..formulas import line_central_film_moes
 from ..mesh import every_other
 from ..numerics.fe import QuadratureOperators, quadrature_operators
 from ..numerics.newton import ForcingTerm, gmres_right
-from ..physics.elasticity import (HalfSpaceLine, LocalCompliance, RigidCompliance,
+from ..physics.elasticity import (UNIFORMITY_TOLERANCE, GradedHalfSpaceLine, HalfSpaceLine,
+                                  LocalCompliance, RigidCompliance,
                                   kodnir_local_coefficient)
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import (FilmDissipation, film_numbers, friction_and_heat,
@@ -52,7 +53,8 @@ from .problem import ScaledResidual, fischer_burmeister
 
 @dataclass
 class LineDiscretisation:
-    """Mesh, basis and precomputed operators of a uniform 1D grid."""
+    """Mesh, basis and precomputed operators of a 1D grid (uniform, or graded from a grid
+    file)."""
 
     x: np.ndarray            # node coordinates [m]
     mesh: MeshLine
@@ -73,7 +75,22 @@ class LineDiscretisation:
 
     @property
     def spacing(self) -> float:
-        return float(self.x[1] - self.x[0])
+        """Node spacing [m]: the first one (uniform grids), the smallest on a graded grid."""
+        return float(np.min(np.diff(self.x))) if not self.is_uniform else \
+            float(self.x[1] - self.x[0])
+
+    @cached_property
+    def is_uniform(self) -> bool:
+        """True if every spacing equals the mean to UNIFORMITY_TOLERANCE."""
+        steps = np.diff(self.x)
+        mean = (self.x[-1] - self.x[0]) / (self.x.size - 1)
+        return bool(np.max(np.abs(steps - mean)) <= UNIFORMITY_TOLERANCE * mean)
+
+    @cached_property
+    def node_spacing(self) -> np.ndarray | float:
+        """Spacing at each node [m]: the grid spacing (uniform), else half the distance
+        between the neighbours (one-sided at the ends)."""
+        return self.spacing if self.is_uniform else np.gradient(self.x)
 
 
 #: Dense (half-space) Newton steps: GMRES preconditioned by the last LU factors is
@@ -189,7 +206,7 @@ class LineProblem(ScaledResidual):
         p, h0 = self.unpack(z)
         h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
         eps0 = h**3 / (12.0 * self.eta0)
-        self._row_scale = (self.disc.spacing / (2.0 * eps0 * self.p_ref))[self.free]
+        self._row_scale = (self.disc.node_spacing / (2.0 * eps0 * self.p_ref))[self.free]
 
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^2/s] (all nodes)."""
@@ -575,10 +592,7 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
     if axes is not None:  # a grid file, in units of x_unit
         x_file = axes[0]
         xs = every_other(x_file, nodes or x_file.size) * x_unit
-        if model.elasticity == "half-space" and np.ptp(np.diff(xs)) > 1e-6 * np.mean(np.diff(xs)):
-            raise SceneError(f"mesh.file {scene.mesh.file!r}: an elastic line contact needs "
-                             "uniformly spaced nodes (the half-space compliance)")
-        disc = LineDiscretisation.from_nodes(xs)
+        disc = LineDiscretisation.from_nodes(xs)  # graded nodes allowed (any model)
     else:
         if nodes is None:
             # n - 1 a multiple of 4: the grid and its two coarser grids (every other
@@ -594,12 +608,22 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
         comp = LocalCompliance(coef)
         c_stab = coef
     else:
-        comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
-        # compliance of a pressure change over one element (~ its self-influence): a
-        # contact-width compliance would over-stabilise and wash out the outlet
-        # constriction and spike (checked: h_min/h_c 0.99 instead of 0.75 at M=100, L=10)
-        c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
+        comp, c_stab = _half_space(disc, scene.e_prime)
     return LineSetup(disc, comp, p_ref, h_ref, x_unit, h_est, c_stab)
+
+
+def _half_space(disc: LineDiscretisation, e_prime: float):
+    """The half-space compliance of a grid (Toeplitz on uniform nodes, dense cell
+    integrals on graded ones) and the compliance c of the upwind Peclet fade-out [m/Pa].
+
+    c is that of a pressure change over one element (~ its self-influence), of the
+    smallest element on a graded grid: a contact-width compliance would over-stabilise
+    and wash out the outlet constriction and spike (checked: h_min/h_c 0.99 instead of
+    0.75 at M = 100, L = 10).
+    """
+    comp = (HalfSpaceLine(disc.x, e_prime, method="dense") if disc.is_uniform
+            else GradedHalfSpaceLine(disc.x, e_prime))
+    return comp, 4.0 * disc.spacing / (math.pi * e_prime)
 
 
 def is_linear(scene) -> bool:
@@ -877,8 +901,7 @@ def _regridded(scene, setup: LineSetup, x0: float, x1: float, nodes: int) -> Lin
     comp = setup.compliance
     c_stab = setup.stab_compliance
     if scene.model.elasticity == "half-space":
-        comp = HalfSpaceLine(disc.x, scene.e_prime, method="dense")
-        c_stab = 4.0 * disc.spacing / (math.pi * scene.e_prime)
+        comp, c_stab = _half_space(disc, scene.e_prime)
     return replace(setup, disc=disc, compliance=comp, stab_compliance=c_stab)
 
 

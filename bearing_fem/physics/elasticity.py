@@ -10,6 +10,8 @@ RigidCompliance     rigid    v = 0
 LocalCompliance     local    v = c p, c = A'/E (Kodnir; Yachikov & Vostrikov 2015), m/Pa
 HalfSpaceLine       half-    plane strain: v(x) = -(4/(pi E')) int p(s) ln|x - s| ds
                     space    (+ const, absorbed in h0); dense symmetric Toeplitz matrix
+GradedHalfSpaceLine half-    the same on non-uniform (graded) nodes; dense
+                    space
 HalfSpacePoint      half-    Boussinesq: v = (2/(pi E')) iint p / |r - r'| dA;
                     space    applied by zero-padded FFT (DC-FFT), never dense unless asked
 ==================  =======  ==========================================================
@@ -58,6 +60,7 @@ __all__ = [
     "RigidCompliance",
     "LocalCompliance",
     "HalfSpaceLine",
+    "GradedHalfSpaceLine",
     "HalfSpacePoint",
     "make_compliance",
     "kodnir_local_coefficient",
@@ -521,6 +524,75 @@ class HalfSpaceLine(Compliance):
     def __repr__(self) -> str:
         return (f"HalfSpaceLine(N={self.x.size}, D={self.spacing:.4g} m, "
                 f"e_prime={self.e_prime:.4g} Pa, method={self.method!r})")
+
+
+def _log_antiderivative(t: np.ndarray) -> np.ndarray:
+    """G(t) = t ln|t| - t, with G(0) = 0: an antiderivative of ln|t| [m]."""
+    return _xlogx(t) - np.asarray(t, dtype=float)
+
+
+class GradedHalfSpaceLine(Compliance):
+    """The plane-strain half-space of :class:`HalfSpaceLine` on any increasing nodes.
+
+    The pressure is constant on the cell of node j between the midpoints to its
+    neighbours (the end cells reach as far beyond the end nodes as their inner half), and
+    ``C_ij = -(4/(pi E')) [G(x_i - a_j) - G(x_i - b_j)]``, G(t) = t ln|t| - t, the exact
+    integral of ln|x_i - s| over the cell [a_j, b_j] (docs/theory.md section 12). On
+    uniform nodes this is :class:`HalfSpaceLine`'s matrix (to rounding). A graded grid
+    refined at the outlet resolves the pressure spike and the constriction with fewer
+    nodes than a uniform one (docs/line_contact.md, "Graded grids"). Dense only: memory
+    and products grow as N^2 (a few thousand nodes).
+
+    Parameters
+    ----------
+    x : array_like, shape (N,)
+        Strictly increasing node coordinates, m.
+    e_prime : float
+        Reduced modulus E', Pa.
+    """
+
+    kind = "half-space"
+
+    def __init__(self, x: np.ndarray, e_prime: float) -> None:
+        arr = np.asarray(x, dtype=float)
+        if arr.ndim != 1 or arr.size < 2 or not np.all(np.isfinite(arr)) \
+                or np.any(np.diff(arr) <= 0.0):
+            raise ValueError("x must be a strictly increasing 1D array of at least 2 finite "
+                             f"node coordinates in m, got shape {arr.shape}")
+        self.x = arr
+        self.e_prime = require_positive("e_prime", e_prime, "Pa")
+        self.shape = (arr.size,)
+        mid = 0.5 * (arr[1:] + arr[:-1])
+        a = np.concatenate(([arr[0] - (mid[0] - arr[0])], mid))
+        b = np.concatenate((mid, [arr[-1] + (arr[-1] - mid[-1])]))
+        d = arr[:, None]
+        m = -(4.0 / (math.pi * self.e_prime)) * (
+            _log_antiderivative(d - a[None, :]) - _log_antiderivative(d - b[None, :]))
+        m.setflags(write=False)
+        self._matrix = m
+
+    def apply(self, p: np.ndarray) -> np.ndarray:
+        return self._matrix @ self._check_p(p)
+
+    def diagonal(self, n: int | None = None) -> np.ndarray:
+        self._require_size(n)
+        return np.diag(self._matrix).copy()
+
+    def matrix(self, n: int | None = None) -> np.ndarray:
+        """Dense C (N, N), m/Pa (read-only)."""
+        self._require_size(n)
+        return self._matrix
+
+    def near_field(self, radius_cells: int = 1, n: int | None = None) -> scipy.sparse.csr_matrix:
+        """Band of C with ``|i - j| <= radius_cells``, csr (N, N), m/Pa."""
+        r = min(_check_radius_cells(radius_cells), self.x.size - 1)
+        self._require_size(n)
+        return scipy.sparse.csr_matrix(np.triu(np.tril(self._matrix, r), -r))
+
+    def __repr__(self) -> str:
+        steps = np.diff(self.x)
+        return (f"GradedHalfSpaceLine(N={self.x.size}, spacing {steps.min():.4g}.."
+                f"{steps.max():.4g} m, e_prime={self.e_prime:.4g} Pa)")
 
 
 class HalfSpacePoint(Compliance):
