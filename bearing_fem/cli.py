@@ -368,6 +368,12 @@ def _cmd_runs(args: argparse.Namespace) -> int:
                   + ", ".join(str(p) for p in (args.csv, args.parquet) if p))
         return EXIT_OK
     print(format_runs(rows, cols, store_units(args.store)))
+    if args.status and not rows and not args.quiet:
+        present, _ = query_runs(args.store, columns=["status"])
+        have = sorted({r["status"] for r in present})
+        print(f"no row has status {', '.join(map(repr, args.status))}; statuses in this "
+              f"store: {', '.join(have) or 'none'} (groups: success, failed, final, "
+              "unfinished)", file=sys.stderr)
     return EXIT_OK
 
 

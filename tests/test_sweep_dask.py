@@ -178,3 +178,22 @@ def test_unreachable_scheduler_is_an_input_error(tmp_path):
     with pytest.raises(SceneError, match="cannot reach the Dask scheduler at "
                                          "'tcp://127.0.0.1:1'"):
         DaskExecutor("tcp://127.0.0.1:1", timeout=1).open()
+
+
+def test_unreachable_scheduler_leaves_no_store(tmp_path, monkeypatch):
+    """An input error writes nothing: the run store the sweep would have created is
+    removed again (it was left empty)."""
+    from bearing_fem.errors import SceneError
+    from bearing_fem.sweep import execute
+
+    init = execute.DaskExecutor.__init__
+    monkeypatch.setattr(execute.DaskExecutor, "__init__",
+                        lambda self, scheduler, timeout=1.0: init(self, scheduler, timeout))
+    scene = bf.Scene.from_dict({"contact": {"kind": "line", "rx": 0.01},
+                                "lubricant": {"viscosity": 0.05},
+                                "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": 1e-6},
+                                "model": {"elasticity": "rigid"}})
+    store = tmp_path / "never.sqlite"
+    with pytest.raises(SceneError, match="cannot reach the Dask scheduler"):
+        bf.sweep([({"load.gap": 1e-6}, scene)], store=store, scheduler="tcp://127.0.0.1:1")
+    assert not store.exists() and not list(tmp_path.iterdir()), list(tmp_path.iterdir())

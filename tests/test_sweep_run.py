@@ -198,6 +198,39 @@ def test_cli_sweep_and_runs(tmp_path, capsys):
     assert main(["runs", str(tmp_path / "none.sqlite")]) == 2
 
 
+def test_unguarded_script_stops_with_the_reason(tmp_path):
+    """A script calling bf.sweep() at its top level: each worker process imports it again
+    (forkserver/spawn). The sweep stops after two broken pools with the cause and the
+    remedy, instead of restarting the pool for every case; the cases stay pending."""
+    path = write_sweep(tmp_path)
+    script = tmp_path / "run_it.py"
+    script.write_text("import bearing_fem as bf\n"
+                      f"bf.sweep({str(path)!r}, store={str(tmp_path / 's.sqlite')!r}, "
+                      "workers=2)\n", encoding="utf-8")
+    proc = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                          timeout=300, cwd=tmp_path)
+    assert proc.returncode == 1
+    last = proc.stderr.strip().splitlines()
+    assert any("died 2 times before finishing any case" in ln and
+               'if __name__ == "__main__":' in ln for ln in last), proc.stderr[-2000:]
+    assert proc.stderr.count("Traceback") <= 6, "bounded output, not one per restart"
+    with RunStore(tmp_path / "s.sqlite") as store:
+        assert {r["status"] for r in store.rows()} == {"pending"}, "resumable"
+
+
+def test_cli_runs_options(tmp_path, capsys):
+    path = write_sweep(tmp_path)
+    store = tmp_path / "o.sqlite"
+    assert main(["sweep", str(path), "--store", str(store), "--workers", "1", "-q"]) == 3
+    capsys.readouterr()
+    assert main(["runs", str(store), "--status", "bogus"]) == 0
+    out, err = capsys.readouterr()
+    assert "(0 rows)" in out and "no row has status 'bogus'; statuses in this store: " \
+        "linear, no_solution" in err, err
+    assert main(["runs", str(store), "--limit", "-1"]) == 2
+    assert "limit must be a positive whole number of rows, got -1" in capsys.readouterr().err
+
+
 def test_cli_retry_failed_and_quiet(tmp_path, capsys):
     path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml", "store": "q.sqlite"},
                                   "axes": {"load.gap": [1e-7, 1e-6]}})

@@ -163,6 +163,31 @@ def test_not_a_store(tmp_path):
         RunStore(tmp_path)
 
 
+def test_another_sqlite_database_is_refused_untouched(tmp_path):
+    for name, schema in (("other.sqlite", "CREATE TABLE x (a INTEGER)"),
+                         ("lookalike.sqlite", "CREATE TABLE runs (id INTEGER, name TEXT)")):
+        path = tmp_path / name
+        con = sqlite3.connect(path)
+        con.execute(schema)
+        con.commit()
+        con.close()
+        before = path.read_bytes()
+        with pytest.raises(SceneError, match=r"is an SQLite database but not a bearing_fem "
+                                             r"run store \(its tables: "):
+            RunStore(path)
+        assert path.read_bytes() == before, f"{name}: not changed (no tables, no WAL mode)"
+
+
+def test_status_and_limit_arguments(tmp_path):
+    with RunStore(tmp_path / "s.sqlite") as store:
+        store.write(Case({"i": 1}, rigid(1e-6)), outcome())
+        assert len(store.rows(status="linear")) == 1, "a single status, not its characters"
+        assert store.rows(status="li") == []
+        for bad in (0, -1, 2.5, True):
+            with pytest.raises(SceneError, match="limit must be a positive whole number"):
+                store.rows(limit=bad)
+
+
 # ---------------------------------------------------------------------------------------
 # several processes writing one store at once
 # ---------------------------------------------------------------------------------------

@@ -21,7 +21,8 @@ from pathlib import Path
 from typing import Any, Callable, Mapping, Sequence
 
 from ..errors import SceneError
-from .execute import WORKER_MALLOC_ENV, SweepReport, local_cluster, run_cases
+from .execute import (WORKER_MALLOC_ENV, SweepReport, in_worker_bootstrap, local_cluster,
+                      run_cases)
 from .progress import SolveProgress, SweepProgress, solve_progress
 from .spec import Axis, Case, SweepSpec, ZipAxis, cases_of, check_workers, scene_hash
 from .store import RunStore, export_csv, export_parquet, parse_filter
@@ -89,6 +90,9 @@ def sweep(spec: Any, store: str | Path | None = None, *, scheduler: Any = None,
         and the unit), a store that cannot be opened, or a scheduler that cannot be
         reached. Unsuccessful solves do not raise: they are rows with their status.
     """
+    if in_worker_bootstrap():
+        raise SceneError("bearing_fem.sweep() was called while a worker process imported the "
+                         "main script: call it under `if __name__ == \"__main__\":`")
     if isinstance(spec, (str, Path)):
         spec = SweepSpec.from_toml(spec)
         default_store = Path(spec.source).with_suffix(".sqlite")
@@ -127,7 +131,7 @@ def _open_existing(path: str | Path) -> RunStore:
     return RunStore(p)
 
 
-def query_runs(path: str | Path, *, status: Sequence[str] | None = None,
+def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
                where: Sequence[str | tuple[str, str, Any]] | None = None,
                columns: Sequence[str] | str | None = None, limit: int | None = None
                ) -> tuple[list[dict[str, Any]], list[str]]:
@@ -137,7 +141,7 @@ def query_runs(path: str | Path, *, status: Sequence[str] | None = None,
     ----------
     path : path
         An existing run store.
-    status : sequence of str, optional
+    status : str or sequence of str, optional
         Statuses to keep (also the groups ``success``, ``failed``, ``final``,
         ``unfinished``; see :meth:`RunStore.rows`).
     where : sequence, optional

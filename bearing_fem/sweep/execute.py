@@ -326,6 +326,26 @@ class SerialExecutor:
             done(t, run_task(t))
 
 
+#: The local pool broke this many times before any case finished: the sweep stops with
+#: :data:`_POOL_START_MESSAGE` (the cases stay pending) instead of restarting it again.
+POOL_START_FAILURES = 2
+_POOL_START_MESSAGE = (
+    "the local pool's worker processes died {breaks} times before finishing any case: "
+    "they could not start, or ran out of memory. A script that calls bearing_fem.sweep() "
+    "must call it under `if __name__ == \"__main__\":` (each worker process imports the "
+    "main script); the cases are still pending, and running the sweep again resumes them")
+
+
+def in_worker_bootstrap() -> bool:
+    """True in a worker process of a pool (spawn or forkserver start) while it imports
+    the parent's main script: a sweep started there would start a pool of its own."""
+    import multiprocessing as mp
+
+    # multiprocessing's own test (spawn._check_not_importing_main): the flag is set while
+    # a child process runs its preparation, which imports the main script
+    return bool(getattr(mp.current_process(), "_inheriting", False))
+
+
 class PoolExecutor:
     """A local process pool (``concurrent.futures``; forkserver start where available).
 
@@ -371,6 +391,7 @@ class PoolExecutor:
         queue = deque(tasks)
         inflight: dict[Any, Task] = {}
         pool = self._pool()
+        finished_any, breaks = False, 0
         try:
             while queue or inflight:
                 while queue and len(inflight) < self.workers:
@@ -395,7 +416,11 @@ class PoolExecutor:
                                         f"{type(exc).__name__}: {exc}"))
                         continue
                     done(t, out)
+                    finished_any = True
                 if broken:
+                    breaks += 1
+                    if not finished_any and breaks >= POOL_START_FAILURES:
+                        raise SceneError(_POOL_START_MESSAGE.format(breaks=breaks))
                     log.warning("a worker process died; restarting the local pool")
                     for f, t in list(inflight.items()):  # they died with the pool
                         inflight.pop(f)
@@ -653,6 +678,15 @@ def plan(cases: Sequence[Case], store: RunStore, results: Path, retry_failed: bo
     return run, skip, adopted
 
 
+def _remove_store_files(path: Path) -> None:
+    """Delete a store file this run created (and SQLite's -wal and -shm files)."""
+    for p in (path, path.with_name(path.name + "-wal"), path.with_name(path.name + "-shm")):
+        try:
+            p.unlink()
+        except FileNotFoundError:
+            pass
+
+
 def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | Path | None = None,
               files: str = "all", scheduler: Any = None, workers: int | None = None,
               retry_failed: bool = False, progress: bool = False, dry_run: bool = False,
@@ -697,6 +731,7 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
         return SweepReport(store=store_path, results=results, executor=executor.name,
                            cases=len(cases), dry_run=True, to_run=[c.hash for c in cases],
                            wall_time_s=time.perf_counter() - t0)
+    created = not store_path.exists()
     with RunStore(store_path) as store:
         planned = store.states([c.hash for c in cases])
         to_run, skipped, adoptable = plan(cases, store, results, retry_failed)
@@ -710,7 +745,13 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
             report.wall_time_s = time.perf_counter() - t0
             return report
         if to_run:
-            executor.open()  # e.g. reach the scheduler before anything is written
+            try:
+                executor.open()  # e.g. reach the scheduler before anything is written
+            except SceneError:
+                if created:  # an input error writes nothing: not even an empty store
+                    store.close()
+                    _remove_store_files(store_path)
+                raise
         bar = SweepProgress(len(to_run), enabled=None if progress else False)
         try:
             store.fill_params(skipped)

@@ -511,9 +511,10 @@ def parse_axes(axes: Any, zipped: Any, source: str = "<sweep>"
             values = axis_values(key, rest if len(rest) != 1 or "values" not in rest
                                  else rest["values"])
         else:
-            raise SceneError(f"zip {key!r}: give the leader axis ('{key}' = 'load.force') or "
-                             "a table with = 'leader.key' and values = [...] (or linspace/"
-                             f"logspace), got {shown(spec)}")
+            raise SceneError(f"zip {key!r}: give the name of its leader axis ('{key}' = "
+                             "'kinematics.u1': the same values), or a table "
+                             "{ with = 'kinematics.u1', values = [...] } (or linspace/logspace "
+                             f"instead of values), got {shown(spec)}")
         if leader not in leaders:
             raise SceneError(f"zip {key!r}: the leader {shown(leader)} is not an axis of "
                              f"[axes] (axes: {', '.join(leaders) or 'none'})")

@@ -59,6 +59,8 @@ CORE_UNITS = {"wall_time_s": "s", "run_time_s": "s"}
 NON_FINAL = ("pending", "lost")
 #: Status of a case whose solve raised an exception (final; ``retry_failed`` reruns it).
 ERROR_STATUS = "error"
+#: The tables of a run store.
+STORE_TABLES = frozenset({"runs", "columns", "meta"})
 #: Schema version written to the ``meta`` table.
 SCHEMA_VERSION = 1
 #: Default busy timeout [s]: how long a writer waits for another one's transaction.
@@ -205,6 +207,15 @@ class RunStore:
     def _setup(self) -> None:
         c = self.conn
         c.execute(f"PRAGMA busy_timeout = {int(self.timeout * 1000)}")
+        # another application's database is neither changed nor used (not even its
+        # journal mode): a store has exactly these tables, or none yet
+        tables = {r[0] for r in c.execute(
+            "SELECT name FROM sqlite_master WHERE type = 'table'")}
+        if tables and (tables - STORE_TABLES or "meta" not in tables or not c.execute(
+                "SELECT 1 FROM meta WHERE key = 'schema_version'").fetchone()):
+            raise SceneError(f"{str(self.path)!r} is an SQLite database but not a "
+                             f"bearing_fem run store (its tables: {', '.join(sorted(tables))}); "
+                             "give the sweep a new file name")
         mode = self._retrying(lambda: c.execute("PRAGMA journal_mode = WAL").fetchone()[0])
         if str(mode).lower() != "wal":  # pragma: no cover - e.g. a network filesystem
             raise SceneError(f"the run store {str(self.path)!r} cannot use write-ahead "
@@ -397,7 +408,7 @@ class RunStore:
 
         Parameters
         ----------
-        status : sequence of str, optional
+        status : str or sequence of str, optional
             Keep rows whose status is one of these; the groups ``success`` (success = 1),
             ``failed`` (final and not successful), ``final`` and ``unfinished``
             (``pending`` or ``lost``) may be named too.
@@ -407,9 +418,15 @@ class RunStore:
         columns : sequence of str, optional
             Columns to return (default all).
         limit : int, optional
+            At most this many rows (>= 1).
         order : sequence of str, optional
             Sort by these columns (ascending); default: the order the rows were written.
         """
+        if isinstance(status, str):  # one status, not its characters
+            status = (status,)
+        if limit is not None and (isinstance(limit, bool) or not isinstance(limit, int)
+                                  or limit < 1):
+            raise SceneError(f"limit must be a positive whole number of rows, got {limit!r}")
         have = self.columns()
         cols = list(columns) if columns else have
         missing = [c for c in cols if c not in have]
