@@ -530,6 +530,11 @@ def read_result(path: str | Path) -> dict[str, Any]:
         fields); ``units`` (dataset name -> unit); ``scene`` (dict with the TOML
         layout) and ``scene_toml`` (text); ``summary`` (dict); ``history``,
         ``newton_iterations``, ``linear_solves``, ``wall_time_s``, ``continuation``.
+
+    Raises
+    ------
+    ValueError
+        If ``path`` does not exist, is not HDF5, or is not a contact result.
     """
     import h5py
 
@@ -541,9 +546,24 @@ def read_result(path: str | Path) -> dict[str, Any]:
     path = Path(path)
     if path.is_dir():
         path = path / FILES["h5"]
+    if not path.is_file():
+        raise ValueError(f"no result file {str(path)!r} (a result.h5 written by "
+                         "bearing_fem.export or 'bearing-fem solve', or its folder)")
+    try:
+        f = h5py.File(path, "r")
+    except OSError as exc:
+        raise ValueError(f"{str(path)!r} is not an HDF5 file ({exc}); read_result reads a "
+                         "result.h5 written by bearing_fem.export") from None
     out: dict[str, Any] = {}
-    with h5py.File(path, "r") as f:
+    with f:
         a = f.attrs
+        missing = [k for k in ("kind", "status", "success", "message", "version", "h0",
+                               "scene", "summary") if k not in a]
+        if missing:
+            raise ValueError(f"{str(path)!r} is an HDF5 file but not a contact result "
+                             f"written by bearing_fem.export (no attribute(s) "
+                             f"{', '.join(missing)}): series and bearing outputs have files "
+                             "of their own")
         out["kind"] = str(a["kind"])
         out["status"] = str(a["status"])
         out["success"] = bool(a["success"])

@@ -504,9 +504,11 @@ def estimate_warnings(estimate: Mapping[str, Any] | None,
     if not estimate:
         return []
     if estimate.get("levels", 0) < 2:
+        grids = estimate.get("grids") or ""
         return ["no error estimate: no coarser grid of this solve converged (or the grid "
-                f"cannot be halved; {estimate.get('grids', '')}), so the discretisation "
-                "error is unknown; compare with a solve on a finer mesh (mesh.nodes)"]
+                "cannot be halved" + (f"; {grids}" if grids else "") + "), so the "
+                "discretisation error is unknown; compare with a solve on a finer mesh "
+                "(mesh.nodes)"]
     out = []
     for key in ESTIMATED_QUANTITIES:
         e = estimate.get(key)

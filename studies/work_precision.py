@@ -35,8 +35,10 @@ finest solve as the reference uncertainty):
 
 * ``line_ehl``: Moes M = 100, L = 10 line contact (R = 10 mm, E' = 2.2e11 Pa,
   alpha = 2e-8 1/Pa, eta0 = 0.01 Pa s, pure rolling; ``line_ehl_map.scene_for``),
-  uniform node counts 2^k 100 + 1 times Newton tolerances 1e-4, 1e-6, 1e-8, and the
-  defaults (no mesh or solver section).
+  uniform node counts 2^k 100 + 1 times Newton tolerances 1e-4, 1e-6, 1e-8, grids
+  refined at the outlet spike (``bearing_fem.mesh.outlet_graded_nodes`` as grid files in
+  ``OUTDIR/meshes``; the *grading* setting of lines), and the defaults (no mesh or
+  solver section).
 * ``circular_ehl``: Moes M = 100, L = 10 circular contact (``point_ehl_map.moes_scene``),
   n^2 grids, n = 2^k + 1, times tolerances; and the defaults.
 * ``ellipse_ehl``: the same groups with ry/rx = 4.
@@ -317,6 +319,27 @@ def _with_solver(scene: Scene, tol: float | None) -> Scene:
     return replace(scene, solver=SolverSpec() if tol is None else SolverSpec(tolerance=tol))
 
 
+#: Folder of the graded line grid files (set by :func:`main` to ``OUTDIR/meshes``).
+MESH_DIR = Path("out/work_precision/meshes")
+
+
+def graded_line_scene(M: float, L: float, nodes: int) -> Scene:
+    """The Moes (M, L) line scene on a grid of ``nodes`` refined at the outlet spike
+    (``bearing_fem.mesh.outlet_graded_nodes`` over the default domain, as a grid file in
+    :data:`MESH_DIR`; docs/line_contact.md, "Graded grids")."""
+    from skfem import MeshLine
+
+    from bearing_fem.contacts.line import line_setup
+    from bearing_fem.mesh import outlet_graded_nodes, write_mesh
+
+    base = line_moes_scene(M, L)
+    setup = line_setup(base)
+    x0, x1 = (float(v) / setup.x_unit for v in setup.disc.x[[0, -1]])
+    path = write_mesh(MeshLine(outlet_graded_nodes(nodes, (x0, x1))),
+                      MESH_DIR / f"line_graded_M{M:g}_L{L:g}_{nodes}.vtu")
+    return replace(base, mesh=MeshSpec(file=str(path)))
+
+
 def line_ehl_case(quick: bool) -> Case:
     grids = (201, 401, 801, 1601, 3201) if quick else (201, 401, 801, 1601, 3201, 6401, 12801)
     tols = (1e-5, 1e-8) if quick else (1e-4, 1e-6, 1e-8)
@@ -326,6 +349,10 @@ def line_ehl_case(quick: bool) -> Case:
     for n in ((601,) if quick else (601, 1201, 2401)):
         settings.append(Setting(f"n={n} tol=1e-08", (lambda n=n: (_with_solver(
             line_moes_scene(MOES_M, MOES_L, n), 1e-8), {})), None, n, 1e-8))
+    # grids refined at the outlet spike (grid files), at the default tolerance
+    for n in ((401, 801) if quick else (401, 801, 1601)):
+        settings.append(Setting(f"graded n={n}", (lambda n=n: (
+            graded_line_scene(MOES_M, MOES_L, n), {})), "graded", n, 1e-8))
     settings.append(Setting("defaults", lambda: (line_moes_scene(MOES_M, MOES_L), {}),
                             None, None, None, default=True))
     return Case("line_ehl", "EHL line contact, Moes M = 100, L = 10", solve_contact, settings,
@@ -829,8 +856,10 @@ def machine() -> dict:
 
 def main(outdir, quick: bool = False, verbose: bool = False) -> dict:
     """Run the study; write its tables and figures into ``outdir``; return the numbers."""
+    global MESH_DIR
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
+    MESH_DIR = out / "meshes"
     log = print if verbose else (lambda s: None)
     results: dict[str, Any] = {"quick": quick, "machine": machine(), "cases": {},
                                "targets": {}}

@@ -116,6 +116,21 @@ def test_line_round_trip(line_result, tmp_path):
                                   line_result.extra_fields["test_temperature_K"])
 
 
+def test_read_result_on_other_files_says_what_it_reads(line_result, tmp_path):
+    import h5py
+
+    io.export(line_result, tmp_path)
+    with h5py.File(tmp_path / "other.h5", "w") as f:
+        f.attrs["eps"] = 0.3
+    for path, match in ((tmp_path / "summary.json", "is not an HDF5 file"),
+                        (tmp_path / "other.h5", r"not a contact result written by "
+                                                 r"bearing_fem.export \(no attribute\(s\) "
+                                                 r"kind, status"),
+                        (tmp_path / "nothing", "no result file")):
+        with pytest.raises(ValueError, match=match):
+            io.read_result(path)
+
+
 def test_read_result_accepts_directory(line_result, tmp_path):
     bf.export(line_result, tmp_path)
     np.testing.assert_array_equal(io.read_result(tmp_path)["pressure_Pa"],

@@ -288,7 +288,9 @@ def test_point_result_on_the_finer_grid_when_the_requested_grid_fails_from_it():
     res = bf.solve(_slow_ball(0.1))
     assert res.success, res.message
     assert res.pressure.shape == (193, 193), "the result holds the finer grid's fields"
-    assert "the result is on 193x193 nodes, not on the requested 97x97 nodes" in res.message
+    assert "the result is that solution on 193x193 nodes, not one on the requested 97x97 " \
+        "nodes" in res.message, res.message
+    assert "failed too" not in res.message, "the finer grid converged: no 'failed too'"
     assert any("requested grid (97x97 nodes) has no converged solution" in w
                for w in res.warnings), res.warnings
     assert res.quantities["h_min"] > 0 and np.all(np.isfinite(res.pressure))

@@ -528,12 +528,14 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
         note += f"; {lb} failed, the sequence started again one grid finer"
     if outcome.refined is not None:
         label, converged = outcome.refined
-        note += (f"; the finest grid failed alone and was started from the solution on "
-                 f"{label}" if converged else
-                 f"; the finest grid failed alone, and so did {label} (half the spacing)")
         if outcome.requested is not None:
-            note += (f", which failed too: the result is on {label}, not on the requested "
-                     f"{outcome.requested}")
+            note += (f"; the requested grid failed alone, and again when started from the "
+                     f"converged solution on {label} (half the spacing): the result is that "
+                     f"solution on {label}, not one on the requested {outcome.requested}")
+        else:
+            note += (f"; the finest grid failed alone and was started from the solution on "
+                     f"{label}" if converged else
+                     f"; the finest grid failed alone, and so did {label} (half the spacing)")
     detail = f" (grids {grids}{grid_note}{note})" if outcome.labels else note
     msg = outcome_message(outcome.status, outcome.iterations, residual, solver.tolerance,
                           prefix=prefix, detail=detail, cap=solver.max_iterations)

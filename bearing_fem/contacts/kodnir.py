@@ -461,7 +461,9 @@ def _finish(res: KodnirResult, prob: KodnirProblem, u: np.ndarray) -> KodnirResu
 # ----------------------------------------------------------------------------------------
 # Driver
 # ----------------------------------------------------------------------------------------
-def _check(C: float, b_alpha: float, z_b: float, nodes: int) -> None:
+def _check(C: float, b_alpha: float, z_b: float, nodes: int, coarse_nodes: int = 401,
+           tol: float = 1e-10, max_iterations: int = 60,
+           z_min: float | None = None) -> None:
     for name, val in (("C", C), ("b_alpha", b_alpha), ("z_b", z_b)):
         if not isinstance(val, (int, float, np.floating, np.integer)) or not math.isfinite(val):
             raise ValueError(f"{name} must be a finite number (dimensionless), got {val!r}")
@@ -471,8 +473,18 @@ def _check(C: float, b_alpha: float, z_b: float, nodes: int) -> None:
         raise ValueError(f"b_alpha (dimensionless B alpha) must be >= 0, got {b_alpha}")
     if z_b <= 0:
         raise ValueError(f"z_b (dimensionless inlet position) must be > 0, got {z_b}")
-    if int(nodes) < 50:
-        raise ValueError(f"nodes must be >= 50, got {nodes}")
+    for name, val, least in (("nodes", nodes, 50), ("coarse_nodes", coarse_nodes, 50),
+                             ("max_iterations", max_iterations, 1)):
+        if isinstance(val, bool) or not isinstance(val, (int, np.integer)) or val < least:
+            raise ValueError(f"{name} must be a whole number >= {least}, got {val!r}")
+    if not (isinstance(tol, (int, float, np.floating, np.integer)) and math.isfinite(tol)
+            and tol > 0):
+        raise ValueError(f"tol (Newton tolerance, units of k) must be a finite number > 0, "
+                         f"got {tol!r}")
+    if z_min is not None and not (isinstance(z_min, (int, float, np.floating, np.integer))
+                                  and math.isfinite(z_min) and z_min <= -1.0):
+        raise ValueError(f"z_min (dimensionless left end of the grid) must be a finite "
+                         f"number <= -1 (the contact lies in |z| < 1), got {z_min!r}")
 
 
 def _initial_guess(prob: KodnirProblem) -> np.ndarray:
@@ -582,8 +594,8 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
     coarse_nodes : int
         Nodes of the first (continuation) grid.
     z_min : float or None
-        Left end of the first grid (default -3, moved left automatically if the outlet
-        comes close to it).
+        Left end of the first grid, <= -1 (default -(2 + 0.1 C + 0.2 b_alpha), moved
+        left automatically if the outlet comes close to it).
     tol : float
         Newton tolerance on the max-norm of the scaled residual (units of k).
     max_iterations : int
@@ -598,7 +610,8 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
     Raises
     ------
     ValueError
-        For C < 0, b_alpha < 0, z_b <= 0 (the message names the argument).
+        For C < 0, b_alpha < 0, z_b <= 0, non-integer or too small node counts and
+        iteration caps, tol <= 0, z_min > -1 (the message names the argument).
 
     Notes
     -----
@@ -607,7 +620,7 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
     then build the final grid around the outlet found, interpolate, and finish with Newton
     at the target (marching again on the fine grid only if the direct step fails).
     """
-    _check(C, b_alpha, z_b, nodes)
+    _check(C, b_alpha, z_b, nodes, coarse_nodes, tol, max_iterations, z_min)
     C, b_alpha, z_b = float(C), float(b_alpha), float(z_b)
     res = KodnirResult(success=False, status="no_convergence", message="", C=C,
                        b_alpha=b_alpha, z_b=z_b)

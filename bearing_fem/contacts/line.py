@@ -35,6 +35,7 @@ from skfem import CellBasis, ElementLineP1, MeshLine
 
 from .. import units
 from ..analytic import reduced_from_barus
+from ..errors import SceneError
 from ..formulas import line_central_film_moes
 from ..mesh import every_other
 from ..numerics.fe import QuadratureOperators, quadrature_operators
@@ -591,6 +592,11 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
     axes = scene.mesh.axes()
     if axes is not None:  # a grid file, in units of x_unit
         x_file = axes[0]
+        repeated = np.flatnonzero(np.diff(x_file) <= 0.0)
+        if repeated.size:
+            raise SceneError(f"mesh.file {scene.mesh.file!r}: the nodes must be distinct; "
+                             f"x = {x_file[repeated[0]]!r} (in the units of mesh.x_range) "
+                             f"appears {int(np.sum(x_file == x_file[repeated[0]]))} times")
         xs = every_other(x_file, nodes or x_file.size) * x_unit
         disc = LineDiscretisation.from_nodes(xs)  # graded nodes allowed (any model)
     else:
@@ -929,4 +935,34 @@ def solve_line(scene, *, boundary_pressure: tuple[float, float] | None = None,
     model = LineModel(scene, (0.0, 0.0) if boundary_pressure is None else boundary_pressure)
     if is_linear(scene):
         return solve_linear_model(model, scene, t0)
-    return solve_newton_model(model, scene, t0, progress=progress)
+    return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress))
+
+
+#: alpha p beyond which the reduced pressure q = (1 - exp(-alpha p))/alpha equals 1/alpha
+#: to double precision (exp(-36) = 2e-16): a rigid Barus solution there sits at Kapitsa's
+#: existence limit alpha q_max = 1, its pressure set by rounding, not by the equations.
+RIGID_BARUS_RESOLVABLE_ALPHA_P = 36.0
+
+
+def rigid_barus_beyond_limit(result: Result) -> Result:
+    """A converged rigid Barus solve of a load (not a gap) whose pressure peak lies beyond
+    :data:`RIGID_BARUS_RESOLVABLE_ALPHA_P` is no solution: the load exceeds what the
+    rigid piezo-viscous contact can carry (Kapitsa: alpha q_max < 1). Other results are
+    returned unchanged."""
+    scene = result.scene
+    lub = scene.lubricant
+    if not (result.success and scene.model.elasticity == "rigid"
+            and scene.load.force is not None and lub.viscosity_law == "barus"
+            and lub.effective_piezo > 0.0):
+        return result
+    alpha_p = lub.effective_piezo * float(np.max(result.pressure))
+    if alpha_p <= RIGID_BARUS_RESOLVABLE_ALPHA_P:
+        return result
+    message = (f"no_solution: load.force = {scene.load.force:.4g} N/m exceeds what the rigid "
+               f"Barus contact can carry: the converged discrete pressure peaks at alpha p = "
+               f"{alpha_p:.4g} (> {RIGID_BARUS_RESOLVABLE_ALPHA_P:g}), where the reduced "
+               "pressure q = (1 - exp(-alpha p))/alpha equals 1/alpha to double precision: "
+               "Kapitsa's existence limit alpha q_max < 1 (docs/theory.md). Lower the load, "
+               "give the gap (load.gap) instead, or model the elasticity")
+    return replace(result, success=False, status="no_solution", message=message,
+                   error_estimate=None)

@@ -1385,6 +1385,10 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
     if not math.isfinite(sq):
         raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
     if max_iterations is not None:
+        if isinstance(max_iterations, bool) or not isinstance(max_iterations, (int, np.integer)) \
+                or max_iterations < 1:
+            raise ValueError(f"max_iterations must be a whole number >= 1 (Newton iterations "
+                             f"per attempt), got {max_iterations!r}")
         scene = replace(scene, solver=replace(scene.solver, max_iterations=int(max_iterations)))
     t0 = time.perf_counter()
     with blas_threads(BLAS_THREADS):

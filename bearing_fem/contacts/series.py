@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..result import SUCCESS_STATUSES, number_or_none
+from ..validation import shown
 from ..version import VERSION
 from .driver import solve_linear_model
 from .point import PointModel, is_linear
@@ -153,7 +154,14 @@ def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
         if not isinstance(n_steps, int) or n_steps < 1:
             raise ValueError(f"n_steps must be a positive integer, got {n_steps!r}")
         times = np.arange(n_steps) * (2 * math.pi / omega) / n_steps
-    times = np.asarray(times, dtype=float).ravel()
+    try:
+        times = np.asarray(times, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise ValueError(f"times must be an array of instants in s, got {shown(times)}") \
+            from None
+    if times.size == 0 or not np.all(np.isfinite(times)):
+        raise ValueError(f"times must hold at least one finite instant (s), got "
+                         f"{shown(times)}")
     gaps = h0 * (1.0 + eps * np.cos(omega * times))
     rates = -h0 * eps * omega * np.sin(omega * times)
     results = []
