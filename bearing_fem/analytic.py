@@ -68,6 +68,8 @@ def reduced_from_barus(p: _Any, piezo: _Any) -> np.ndarray:
         alpha [1/Pa], >= 0.
     """
     require_nonnegative("piezo", piezo, "1/Pa")
+    if isinstance(p, (str, bytes)):
+        raise ValueError(f"p must be a number in Pa, got {p!r}")
     p = np.asarray(p, dtype=float)
     alpha = np.asarray(piezo, dtype=float)
     safe_alpha = np.where(alpha > 0.0, alpha, 1.0)

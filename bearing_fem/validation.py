@@ -26,7 +26,7 @@ def shown(value: Any) -> str:
 
 
 def _as_float(name: str, value: Any, unit: str, error: type[Exception]) -> Any:
-    if isinstance(value, (bool, np.bool_)):
+    if isinstance(value, (bool, np.bool_, str, bytes)):  # "1e8" is a unit slip or a typo
         raise error(f"{name} must be a number in {unit}, got {shown(value)}")
     try:
         arr = np.asarray(value, dtype=float)

@@ -133,8 +133,10 @@ def test_set_dotted_refuses_a_path_through_a_value():
 ])
 def test_bad_sweep_files_name_the_key(tmp_path, sweep, match):
     path = write_sweep(tmp_path, sweep)
-    with pytest.raises(SceneError, match=match):
+    with pytest.raises(SceneError, match=match) as err:
         SweepSpec.from_toml(path)
+    if "missing.toml" not in match:
+        assert str(err.value).startswith(str(path)), f"names the sweep file: {err.value}"
 
 
 def test_bad_case_value_names_key_value_and_unit(tmp_path):

@@ -377,9 +377,9 @@ class SweepSpec:
         cases = []
         for i, p in enumerate(self.params()):
             data = copy.deepcopy(dict(self.base))
-            for key, value in p.items():
-                set_dotted(data, key, value)
             try:
+                for key, value in p.items():
+                    set_dotted(data, key, value)
                 target = build_target(data)
             except SceneError as exc:
                 raise SceneError(f"{self.source}: case {i} ({_params_text(p)}): {exc}") from None
@@ -466,7 +466,13 @@ class SweepSpec:
             raise SceneError(f"{source}: sweep.retry_failed must be true or false, got "
                              f"{shown(retry)}")
         kw["retry_failed"] = retry
-        kw["axes"], kw["zipped"] = parse_axes(data.get("axes", {}), data.get("zip", {}), source)
+        try:
+            kw["axes"], kw["zipped"] = parse_axes(data.get("axes", {}), data.get("zip", {}),
+                                                  source)
+        except SceneError as exc:  # every message names the sweep file
+            text = str(exc)
+            raise SceneError(text if text.startswith(f"{source}:") else f"{source}: {text}") \
+                from None
         spec = cls(**kw)
         if len(spec) > MAX_CASES:
             raise SceneError(f"{source}: the axes make {len(spec)} cases, more than "
