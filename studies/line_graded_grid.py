@@ -53,7 +53,7 @@ QUICK_REFERENCE_GRIDS = (1601, 3201)
 QUANTITIES = ("h_central", "h_min", "friction_force")
 
 
-def _graded_scene(base: bf.Scene, nodes: int, folder: Path) -> bf.Scene:
+def graded_scene(base: bf.Scene, nodes: int, folder: Path) -> bf.Scene:
     """``base`` on a graded grid over its default domain, written to ``folder``."""
     from skfem import MeshLine
 
@@ -82,9 +82,9 @@ def run_case(M: float, L: float, grids, ref_grids, folder: Path) -> list[dict]:
     rows = []
     for n in grids:
         rows.append({"M": M, "L": L, "grid": "uniform", **_solve(scene_for(M, L, n))})
-        rows.append({"M": M, "L": L, "grid": "graded", **_solve(_graded_scene(base, n, folder))})
+        rows.append({"M": M, "L": L, "grid": "graded", **_solve(graded_scene(base, n, folder))})
     refs = [{"M": M, "L": L, "grid": "graded (reference)",
-             **_solve(_graded_scene(base, n, folder))} for n in ref_grids]
+             **_solve(graded_scene(base, n, folder))} for n in ref_grids]
     rows += refs
     ok = all(r["status"] == "converged" for r in refs)
     coarse, fine = refs

@@ -324,20 +324,11 @@ MESH_DIR = Path("out/work_precision/meshes")
 
 
 def graded_line_scene(M: float, L: float, nodes: int) -> Scene:
-    """The Moes (M, L) line scene on a grid of ``nodes`` refined at the outlet spike
-    (``bearing_fem.mesh.outlet_graded_nodes`` over the default domain, as a grid file in
-    :data:`MESH_DIR`; docs/line_contact.md, "Graded grids")."""
-    from skfem import MeshLine
+    """The Moes (M, L) line scene on a grid of ``nodes`` refined at the outlet spike (a
+    grid file in :data:`MESH_DIR`; ``line_graded_grid.graded_scene``)."""
+    from line_graded_grid import graded_scene
 
-    from bearing_fem.contacts.line import line_setup
-    from bearing_fem.mesh import outlet_graded_nodes, write_mesh
-
-    base = line_moes_scene(M, L)
-    setup = line_setup(base)
-    x0, x1 = (float(v) / setup.x_unit for v in setup.disc.x[[0, -1]])
-    path = write_mesh(MeshLine(outlet_graded_nodes(nodes, (x0, x1))),
-                      MESH_DIR / f"line_graded_M{M:g}_L{L:g}_{nodes}.vtu")
-    return replace(base, mesh=MeshSpec(file=str(path)))
+    return graded_scene(line_moes_scene(M, L), nodes, MESH_DIR / f"M{M:g}_L{L:g}")
 
 
 def line_ehl_case(quick: bool) -> Case:
