@@ -421,7 +421,12 @@ def _pyvista_surface(d: PlotData, out: Path, window_size) -> None:
     plotter.view_isometric()
     plotter.add_text(figure_title(d, "pressure surface"), font_size=10,
                      color="black" if d.success else "red")
-    plotter.show_bounds(xtitle="x [mm]", ytitle="y [mm]", ztitle="p (scaled)", color="black")
+    # the heights are the pressure scaled to the plan size: label the z axis with the
+    # pressure itself (axes_ranges maps the bounds linearly onto the given ranges)
+    plotter.show_bounds(xtitle="x [mm]", ytitle="y [mm]", ztitle=label, color="black",
+                        axes_ranges=[float(X.min()), float(X.max()), float(Y.min()),
+                                     float(Y.max()), float(p_mpa.min()), float(p_mpa.max())],
+                        fmt="%.3g")
     plotter.screenshot(str(out))
     plotter.close()
 
