@@ -473,7 +473,7 @@ def error_estimate(levels: Sequence[Mapping[str, Any]], note: str = "") -> dict[
         vals: list[float] = []
         for lv in levels:  # the trailing run of finite values, coarse to fine
             v = _finite_or_none(lv.get(key))
-            vals = vals + [float(v)] if v is not None else []
+            vals = vals + [v] if v is not None else []
         if not vals or len(vals) < 1 or levels[-1].get(key) is None or vals[-1] == 0.0:
             out[key], methods[key], orders[key] = None, "none", None
             continue

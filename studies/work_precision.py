@@ -319,19 +319,15 @@ def _with_solver(scene: Scene, tol: float | None) -> Scene:
     return replace(scene, solver=SolverSpec() if tol is None else SolverSpec(tolerance=tol))
 
 
-#: Folder of the graded line grid files (set by :func:`main` to ``OUTDIR/meshes``).
-MESH_DIR = Path("out/work_precision/meshes")
-
-
-def graded_line_scene(M: float, L: float, nodes: int) -> Scene:
+def graded_line_scene(M: float, L: float, nodes: int, mesh_dir: Path) -> Scene:
     """The Moes (M, L) line scene on a grid of ``nodes`` refined at the outlet spike (a
-    grid file in :data:`MESH_DIR`; ``line_graded_grid.graded_scene``)."""
+    grid file in ``mesh_dir``; ``line_graded_grid.graded_scene``)."""
     from line_graded_grid import graded_scene
 
-    return graded_scene(line_moes_scene(M, L), nodes, MESH_DIR / f"M{M:g}_L{L:g}")
+    return graded_scene(line_moes_scene(M, L), nodes, mesh_dir / f"M{M:g}_L{L:g}")
 
 
-def line_ehl_case(quick: bool) -> Case:
+def line_ehl_case(quick: bool, mesh_dir: Path) -> Case:
     grids = (201, 401, 801, 1601, 3201) if quick else (201, 401, 801, 1601, 3201, 6401, 12801)
     tols = (1e-5, 1e-8) if quick else (1e-4, 1e-6, 1e-8)
     settings = grid_tolerance_settings(
@@ -343,7 +339,7 @@ def line_ehl_case(quick: bool) -> Case:
     # grids refined at the outlet spike (grid files), at the default tolerance
     for n in ((401, 801) if quick else (401, 801, 1601)):
         settings.append(Setting(f"graded n={n}", (lambda n=n: (
-            graded_line_scene(MOES_M, MOES_L, n), {})), "graded", n, 1e-8))
+            graded_line_scene(MOES_M, MOES_L, n, mesh_dir), {})), "graded", n, 1e-8))
     settings.append(Setting("defaults", lambda: (line_moes_scene(MOES_M, MOES_L), {}),
                             None, None, None, default=True))
     return Case("line_ehl", "EHL line contact, Moes M = 100, L = 10", solve_contact, settings,
@@ -417,9 +413,9 @@ def bearing_case(quick: bool) -> Case:
                        "h_central, h_min: most loaded inner contact; p_max: the bearing's largest"])
 
 
-def cases(quick: bool) -> list[Case]:
+def cases(quick: bool, mesh_dir: Path = Path("out/work_precision/meshes")) -> list[Case]:
     out = [kapitsa_line_case(quick), kapitsa_point_case(quick), martin_case(quick),
-           line_ehl_case(quick), point_ehl_case(quick)]
+           line_ehl_case(quick, mesh_dir), point_ehl_case(quick)]
     if not quick:
         out += [point_ehl_case(quick, ry_over_rx=4.0), thermal_case(quick), bearing_case(quick)]
     return out
@@ -847,15 +843,13 @@ def machine() -> dict:
 
 def main(outdir, quick: bool = False, verbose: bool = False) -> dict:
     """Run the study; write its tables and figures into ``outdir``; return the numbers."""
-    global MESH_DIR
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    MESH_DIR = out / "meshes"
     log = print if verbose else (lambda s: None)
     results: dict[str, Any] = {"quick": quick, "machine": machine(), "cases": {},
                                "targets": {}}
     all_rows: list[dict] = []
-    for case in cases(quick):
+    for case in cases(quick, out / "meshes"):
         rows = run_case(case, log)
         ref = add_errors(case, rows)
         orders = fitted_orders(case, rows)

@@ -77,6 +77,7 @@ from .problem import fischer_burmeister
 from ..numerics.newton import NewtonOutcome, damped_newton
 from ..post import parabola_vertex
 from ..physics.reynolds import upwind_factor
+from ..validation import require_finite, require_int, require_positive
 
 log = logging.getLogger(__name__)
 
@@ -473,18 +474,13 @@ def _check(C: float, b_alpha: float, z_b: float, nodes: int, coarse_nodes: int =
         raise ValueError(f"b_alpha (dimensionless B alpha) must be >= 0, got {b_alpha}")
     if z_b <= 0:
         raise ValueError(f"z_b (dimensionless inlet position) must be > 0, got {z_b}")
-    for name, val, least in (("nodes", nodes, 50), ("coarse_nodes", coarse_nodes, 50),
-                             ("max_iterations", max_iterations, 1)):
-        if isinstance(val, bool) or not isinstance(val, (int, np.integer)) or val < least:
-            raise ValueError(f"{name} must be a whole number >= {least}, got {val!r}")
-    if not (isinstance(tol, (int, float, np.floating, np.integer)) and math.isfinite(tol)
-            and tol > 0):
-        raise ValueError(f"tol (Newton tolerance, units of k) must be a finite number > 0, "
-                         f"got {tol!r}")
-    if z_min is not None and not (isinstance(z_min, (int, float, np.floating, np.integer))
-                                  and math.isfinite(z_min) and z_min <= -1.0):
-        raise ValueError(f"z_min (dimensionless left end of the grid) must be a finite "
-                         f"number <= -1 (the contact lies in |z| < 1), got {z_min!r}")
+    require_int("nodes", nodes, 50, what="nodes")
+    require_int("coarse_nodes", coarse_nodes, 50, what="nodes")
+    require_int("max_iterations", max_iterations, 1, what="Newton iterations")
+    require_positive("tol (Newton tolerance)", tol, "(units of k)")
+    if z_min is not None and require_finite("z_min", z_min, "(dimensionless)") > -1.0:
+        raise ValueError(f"z_min (dimensionless left end of the grid) must be <= -1 (the "
+                         f"contact lies in |z| < 1), got {z_min!r}")
 
 
 def _initial_guess(prob: KodnirProblem) -> np.ndarray:

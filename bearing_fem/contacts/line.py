@@ -42,7 +42,7 @@ from ..numerics.fe import QuadratureOperators, quadrature_operators
 from ..numerics.newton import ForcingTerm, gmres_right
 from ..physics.elasticity import (UNIFORMITY_TOLERANCE, GradedHalfSpaceLine, HalfSpaceLine,
                                   LocalCompliance, RigidCompliance,
-                                  kodnir_local_coefficient)
+                                  kodnir_local_coefficient, spacing_deviation)
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import (FilmDissipation, film_numbers, friction_and_heat,
                     full_film_indicator_line, outlet_position_line, reported_viscosity)
@@ -83,9 +83,7 @@ class LineDiscretisation:
     @cached_property
     def is_uniform(self) -> bool:
         """True if every spacing equals the mean to UNIFORMITY_TOLERANCE."""
-        steps = np.diff(self.x)
-        mean = (self.x[-1] - self.x[0]) / (self.x.size - 1)
-        return bool(np.max(np.abs(steps - mean)) <= UNIFORMITY_TOLERANCE * mean)
+        return spacing_deviation(self.x) <= UNIFORMITY_TOLERANCE
 
     @cached_property
     def node_spacing(self) -> np.ndarray | float:

@@ -65,6 +65,7 @@ from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
+from ..validation import require_int
 from ..scene import Scene
 from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
 from .linear import active_set_solve, pressure_from_reduced
@@ -1385,11 +1386,9 @@ def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None
     if not math.isfinite(sq):
         raise ValueError(f"squeeze_velocity must be finite (m/s), got {squeeze_velocity!r}")
     if max_iterations is not None:
-        if isinstance(max_iterations, bool) or not isinstance(max_iterations, (int, np.integer)) \
-                or max_iterations < 1:
-            raise ValueError(f"max_iterations must be a whole number >= 1 (Newton iterations "
-                             f"per attempt), got {max_iterations!r}")
-        scene = replace(scene, solver=replace(scene.solver, max_iterations=int(max_iterations)))
+        max_iterations = require_int("max_iterations", max_iterations, 1,
+                                     what="Newton iterations per attempt")
+        scene = replace(scene, solver=replace(scene.solver, max_iterations=max_iterations))
     t0 = time.perf_counter()
     with blas_threads(BLAS_THREADS):
         model = PointModel(scene, boundary_pressure, sq)

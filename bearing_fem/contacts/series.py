@@ -18,7 +18,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..result import SUCCESS_STATUSES, number_or_none
-from ..validation import shown
+from ..validation import require_finite
 from ..version import VERSION
 from .driver import solve_linear_model
 from .point import PointModel, is_linear
@@ -154,14 +154,7 @@ def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
         if not isinstance(n_steps, int) or n_steps < 1:
             raise ValueError(f"n_steps must be a positive integer, got {n_steps!r}")
         times = np.arange(n_steps) * (2 * math.pi / omega) / n_steps
-    try:
-        times = np.asarray(times, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise ValueError(f"times must be an array of instants in s, got {shown(times)}") \
-            from None
-    if times.size == 0 or not np.all(np.isfinite(times)):
-        raise ValueError(f"times must hold at least one finite instant (s), got "
-                         f"{shown(times)}")
+    times = np.atleast_1d(require_finite("times", times, "s")).ravel()
     gaps = h0 * (1.0 + eps * np.cos(omega * times))
     rates = -h0 * eps * omega * np.sin(omega * times)
     results = []

@@ -68,6 +68,7 @@ __all__ = [
     "point_kernel",
     "DENSE_POINT_CAP",
     "UNIFORMITY_TOLERANCE",
+    "spacing_deviation",
 ]
 
 #: Largest number of unknowns for which a dense 2D (point) matrix is formed on request.
@@ -84,8 +85,8 @@ LINE_DENSE_AUTO_CAP = 4096
 # Validation helpers
 # ----------------------------------------------------------------------------------------
 
-def _check_grid(name: str, values: np.ndarray) -> tuple[np.ndarray, float]:
-    """Return (float array, spacing in m) of a uniform, strictly increasing 1D node array."""
+def _check_increasing(name: str, values: np.ndarray) -> np.ndarray:
+    """Return the float array of a strictly increasing 1D node array (>= 2 finite nodes)."""
     arr = np.asarray(values, dtype=float)
     if arr.ndim != 1 or arr.size < 2:
         raise ValueError(
@@ -93,11 +94,24 @@ def _check_grid(name: str, values: np.ndarray) -> tuple[np.ndarray, float]:
             f"got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must contain finite node coordinates in m, got non-finite values")
-    steps = np.diff(arr)
-    spacing = (arr[-1] - arr[0]) / (arr.size - 1)
-    if not spacing > 0.0 or np.any(steps <= 0.0):
+    if np.any(np.diff(arr) <= 0.0):
         raise ValueError(f"{name} must be strictly increasing (node coordinates in m)")
-    deviation = float(np.max(np.abs(steps - spacing)) / spacing)
+    return arr
+
+
+def spacing_deviation(x: np.ndarray) -> float:
+    """Largest deviation of a node spacing from the mean spacing, relative to it [-], of
+    increasing nodes ``x`` (0 on a uniform grid; see :data:`UNIFORMITY_TOLERANCE`)."""
+    x = np.asarray(x, dtype=float)
+    mean = (x[-1] - x[0]) / (x.size - 1)
+    return float(np.max(np.abs(np.diff(x) - mean)) / mean)
+
+
+def _check_grid(name: str, values: np.ndarray) -> tuple[np.ndarray, float]:
+    """Return (float array, spacing in m) of a uniform, strictly increasing 1D node array."""
+    arr = _check_increasing(name, values)
+    spacing = (arr[-1] - arr[0]) / (arr.size - 1)
+    deviation = spacing_deviation(arr)
     if deviation > UNIFORMITY_TOLERANCE:
         raise ValueError(
             f"{name} must be uniformly spaced: the spacing deviates by {deviation:.3g} "
@@ -554,11 +568,7 @@ class GradedHalfSpaceLine(Compliance):
     kind = "half-space"
 
     def __init__(self, x: np.ndarray, e_prime: float) -> None:
-        arr = np.asarray(x, dtype=float)
-        if arr.ndim != 1 or arr.size < 2 or not np.all(np.isfinite(arr)) \
-                or np.any(np.diff(arr) <= 0.0):
-            raise ValueError("x must be a strictly increasing 1D array of at least 2 finite "
-                             f"node coordinates in m, got shape {arr.shape}")
+        arr = _check_increasing("x", x)
         self.x = arr
         self.e_prime = require_positive("e_prime", e_prime, "Pa")
         self.shape = (arr.size,)
