@@ -172,9 +172,12 @@ class Result:
 
 
 def number_or_none(value: Any) -> Any:
-    """A float, a string label as it is, or None for a missing or non-finite number."""
+    """A float (an integer count stays an int), a string label as it is, or None for a
+    missing or non-finite number."""
     if value is None or isinstance(value, str):
         return value
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+        return int(value)
     v = float(value)
     return v if np.isfinite(v) else None
 

@@ -118,6 +118,9 @@ def test_coupled_solve_converges_to_a_fixed_point(eyring_result):
                                rtol=1e-12, err_msg="eta0 from the Prokofiev law at T_contact")
     assert 0 < q["contact_temperature_rise"] < q["contact_temperature_rise_max"]
     assert q["peclet_min"] > 5, "high-Peclet regime (Jaeger formula valid)"
+    n_it = r.summary()["thermal_iterations"]
+    assert isinstance(n_it, int) and n_it >= 1, \
+        f"the thermal loop count is a whole number in the summary, got {n_it!r}"
 
 
 def test_energy_heat_into_bodies_equals_heat_power(eyring_result):

@@ -169,7 +169,7 @@ def solve_thermal(scene: Scene) -> Result:
     newton_its = 0
     res = None
     status, converged = "max_iterations", False
-    info: dict[str, float] = {}
+    info: dict[str, float | int] = {}
     notes: list[str] = []
     temps: list[np.ndarray] = []
     q_e = np.zeros(0)
@@ -228,7 +228,7 @@ def solve_thermal(scene: Scene) -> Result:
             "contact_viscosity": eta0,
             "contact_piezo": alpha,
             "peclet_min": float(peclet),
-            "thermal_iterations": float(it),
+            "thermal_iterations": int(it),
             "thermal_residual": float(abs(delta)),
         }
         heat = res.quantities["heat_power"]
@@ -287,8 +287,9 @@ def solve_thermal(scene: Scene) -> Result:
                        "contact_temperature_rise": float(T - t_oil),
                        "contact_viscosity": contact_viscosity(scene, T),
                        "contact_piezo": contact_piezo(scene, T),
-                       "thermal_iterations": float(len(history) or 1)})
-    quantities.update({k: float(v) for k, v in info.items() if np.isfinite(v)})
+                       "thermal_iterations": int(len(history) or 1)})
+    quantities.update({k: (v if k == "thermal_iterations" else float(v))
+                       for k, v in info.items() if np.isfinite(v)})
     extra = dict(res.extra_fields)
     if info and res.success and temps:
         extra["surface_temperature_rise_body1_K"] = temps[0]
