@@ -422,6 +422,8 @@ MAX_HERTZ_RATIO = 0.5
 #: alpha p_h = 712, 855, 997 (Moes M = 1e4, L = 17.9 .. 25) converge in 14-17 Newton
 #: iterations (``studies/stability_atlas.py``).
 MAX_VISCOSITY_RATIO = math.exp(700.0)
+#: Node spacings of ``mesh.grading``.
+GRADINGS = ("uniform", "outlet")
 #: Largest |start|, |end| of mesh.x_range and mesh.y_range [Hertz half-widths or
 #: sqrt(2 r h0)].
 MAX_RANGE = 1e3
@@ -678,6 +680,12 @@ class MeshSpec:
         contact (uniform for elastic scenes: the half-space compliance needs it). It
         replaces ``nodes`` and the ranges. A relative path in a scene file is relative to
         that file.
+    grading : {"uniform", "outlet"} or None
+        Node spacing of an elastic (half-space) line contact under load: ``"uniform"``
+        (the default, None) or ``"outlet"``: the grid refined around the outlet pressure
+        spike, located by a solve on a coarse uniform grid first
+        (:func:`bearing_fem.contacts.line.solve_line`); same node count as the uniform
+        grid. Not with ``file``.
     """
 
     _section = "mesh"
@@ -685,8 +693,13 @@ class MeshSpec:
     x_range: tuple[float, float] | None = None
     y_range: tuple[float, float] | None = None
     file: str | None = None
+    grading: str | None = None
 
     def __post_init__(self) -> None:
+        if self.grading is not None and (not isinstance(self.grading, str)
+                                         or self.grading not in GRADINGS):
+            raise SceneError(f"mesh.grading must be one of {', '.join(map(repr, GRADINGS))}, "
+                             f"got {show_value(self.grading)}")
         if self.file is not None:
             self._check_file()
         n = self.nodes
@@ -711,7 +724,8 @@ class MeshSpec:
         f = self.file
         if not isinstance(f, str) or not f or "\x00" in f:
             raise SceneError(f"mesh.file must be a file name, got {show_value(f)}")
-        given = [k for k in ("nodes", "x_range", "y_range") if getattr(self, k) is not None]
+        given = [k for k in ("nodes", "x_range", "y_range", "grading")
+                 if getattr(self, k) is not None]
         if given:
             raise SceneError(f"mesh.file replaces {', '.join('mesh.' + k for k in given)}: give "
                              "either the file or those keys")
@@ -1016,6 +1030,15 @@ class Scene:
             if want_two != isinstance(nodes, tuple) or (want_two and len(nodes) != 2):
                 raise SceneError(f"mesh.nodes must be {'[nx, ny]' if want_two else 'one integer'} "
                                  f"for a {self.contact.kind} contact, got {list(nodes) if isinstance(nodes, tuple) else nodes!r}")
+        if self.mesh.grading == "outlet" and not (
+                self.contact.kind == "line" and self.model.elasticity == "half-space"
+                and self.load.force is not None):
+            raise SceneError("mesh.grading = 'outlet' refines the grid at the outlet pressure "
+                             "spike of an elastic line contact under load: it needs "
+                             "contact.kind = 'line', model.elasticity = 'half-space' and "
+                             f"load.force (N/m); got contact.kind = {self.contact.kind!r}, "
+                             f"model.elasticity = {self.model.elasticity!r}"
+                             + (", load.gap" if self.load.gap is not None else ""))
         axes = self.mesh.axes()
         if axes is not None and (axes[1] is None) != (self.contact.kind == "line"):
             want = "a 1D mesh" if self.contact.kind == "line" else "quads on a tensor grid"

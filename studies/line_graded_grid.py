@@ -17,8 +17,16 @@ Reference
     Richardson extrapolation (p = 2) of the two finest graded grids; the study prints the
     order the three finest graded grids show.
 
+Automatic grading (``mesh.grading = "outlet"``)
+    The solver's own option: the spike located on a uniform 401-node grid, then the
+    default node count refined there. Over Moes points (M 20-1000, L 0-10) it is compared
+    with the default uniform grid of the same node count; both against the graded solve
+    on 2N - 1 nodes (same refinement, twice finer), whose change from the graded N-node
+    solve is reported too, with the graded solve's own error estimate.
+
 Run ``python studies/line_graded_grid.py OUTDIR [--quick]``; writes ``runs.csv``,
-``line_graded_grid.md``, ``summary.json`` and ``line_graded_grid.png`` into OUTDIR.
+``auto.csv``, ``line_graded_grid.md``, ``summary.json`` and ``line_graded_grid.png`` into
+OUTDIR.
 """
 from __future__ import annotations
 
@@ -51,6 +59,9 @@ QUICK_GRIDS = (401, 801)
 REFERENCE_GRIDS = (3201, 6401)
 QUICK_REFERENCE_GRIDS = (1601, 3201)
 QUANTITIES = ("h_central", "h_min", "friction_force")
+#: Moes points of the automatic-grading comparison.
+AUTO_CASES = tuple((M, L) for M in (20.0, 100.0, 500.0, 1000.0) for L in (0.0, 5.0, 10.0))
+QUICK_AUTO_CASES = ((100.0, 10.0),)
 
 
 def graded_scene(base: bf.Scene, nodes: int, folder: Path) -> bf.Scene:
@@ -108,6 +119,48 @@ def run_case(M: float, L: float, grids, ref_grids, folder: Path) -> list[dict]:
         r["reference"] = json.dumps(reference)
         r["graded_orders"] = json.dumps(orders)
     return rows
+
+
+def auto_case(M: float, L: float) -> dict:
+    """Default uniform grid and ``mesh.grading = "outlet"`` on the same node count, both
+    against the graded solve on 2N - 1 nodes."""
+    base = scene_for(M, L)
+
+    def graded(nodes=None):
+        return replace(base, mesh=MeshSpec(grading="outlet", nodes=nodes))
+
+    uni = _solve(base)
+    t0 = time.perf_counter()
+    gra = bf.solve(graded())
+    graded_seconds = time.perf_counter() - t0
+    n = int(gra.x.size)
+    ref = _solve(graded(2 * n - 1))
+    row = {"M": M, "L": L, "nodes": n, "uniform_status": uni["status"],
+           "graded_status": gra.status, "reference_status": ref["status"],
+           "uniform_seconds": uni["seconds"], "graded_seconds": graded_seconds,
+           "uniform_newton": uni["newton_iterations"], "graded_newton": gra.newton_iterations}
+    est = gra.error_estimate or {}
+    for k in QUANTITIES:
+        r, g, u = ref[k], gra.quantities.get(k) if gra.success else None, uni[k]
+        row[f"{k}_uniform_error"] = abs(u / r - 1.0) if None not in (u, r) else None
+        row[f"{k}_graded_change"] = abs(g / r - 1.0) if None not in (g, r) else None
+        row[f"{k}_graded_estimate"] = est.get(k)
+    return row
+
+
+def auto_markdown(rows: list[dict]) -> str:
+    out = ["| M | L | nodes | time s uniform / outlet | h_central err uniform / outlet | "
+           "h_min err uniform / outlet | friction err uniform / outlet | "
+           "outlet estimate h_min / friction |", "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        out.append(
+            f"| {r['M']:g} | {r['L']:g} | {r['nodes']} | {r['uniform_seconds']:.3f} / "
+            f"{r['graded_seconds']:.3f} | "
+            + " | ".join(f"{_fmt(r[f'{k}_uniform_error'])} / {_fmt(r[f'{k}_graded_change'])}"
+                         for k in QUANTITIES)
+            + f" | {_fmt(r['h_min_graded_estimate'])} / "
+              f"{_fmt(r['friction_force_graded_estimate'])} |")
+    return "\n".join(out) + "\n"
 
 
 def _fmt(v, spec=".2e") -> str:
@@ -176,9 +229,18 @@ def main(outdir: str | Path = "out/line_graded_grid", quick: bool = False) -> di
         w.writeheader()
         for r in rows:
             w.writerow({c: r.get(c) for c in cols})
-    (outdir / "line_graded_grid.md").write_text(markdown(rows), encoding="utf-8")
+    auto = [auto_case(M, L) for M, L in (QUICK_AUTO_CASES if quick else AUTO_CASES)]
+    with open(outdir / "auto.csv", "w", newline="", encoding="utf-8") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(auto[0]))
+        w.writeheader()
+        w.writerows(auto)
+    text = (markdown(rows) + "\n## Automatic grading (mesh.grading = 'outlet')\n\n"
+            "Errors against the graded solve on 2N - 1 nodes (for 'outlet': its change to "
+            "that solve).\n\n" + auto_markdown(auto))
+    (outdir / "line_graded_grid.md").write_text(text, encoding="utf-8")
     figure(outdir / "line_graded_grid.png", rows)
-    summary = {"quick": quick, "seconds": time.perf_counter() - t0, "rows": rows}
+    summary = {"quick": quick, "seconds": time.perf_counter() - t0, "rows": rows,
+               "auto": auto}
     (outdir / "summary.json").write_text(json.dumps(summary, indent=1), encoding="utf-8")
     return summary
 
@@ -190,4 +252,5 @@ if __name__ == "__main__":
     args = ap.parse_args()
     res = main(args.outdir, args.quick)
     print(markdown(res["rows"]))
+    print(auto_markdown(res["auto"]))
     print(f"{res['seconds']:.1f} s")

@@ -2,6 +2,12 @@
 from __future__ import annotations
 
 
+def rows_auto(folder):
+    import json
+
+    return json.loads((folder / "summary.json").read_text())["auto"]
+
+
 def test_graded_grid_study_quick(load_study, tmp_path):
     mod = load_study("line_graded_grid")
     rows = mod.main(tmp_path, quick=True)["rows"]
@@ -16,7 +22,14 @@ def test_graded_grid_study_quick(load_study, tmp_path):
             f"{n} nodes: graded friction (measured 4.5e-3 vs 3.3e-2, 1.1e-3 vs 1.2e-2)"
         assert gra["h_central_error"] < 5e-3, "h_central within 0.5 % (measured 3.7e-3 on 401)"
         assert gra["estimate_h_min"] is not None, "nested levels: the error estimate exists"
-    for name in ("runs.csv", "line_graded_grid.md", "summary.json", "line_graded_grid.png"):
+    (auto,) = rows_auto(tmp_path)
+    assert auto["graded_status"] == "converged" and auto["uniform_status"] == "converged"
+    assert auto["h_min_graded_change"] < 0.1 * auto["h_min_uniform_error"], \
+        "mesh.grading = 'outlet' at M = 100, L = 10: h_min (measured 2.9e-6 vs 9.6e-4)"
+    assert auto["friction_force_graded_change"] < 0.2 * auto["friction_force_uniform_error"], \
+        "friction (measured 1.8e-4 vs 2.7e-3)"
+    for name in ("runs.csv", "auto.csv", "line_graded_grid.md", "summary.json",
+                 "line_graded_grid.png"):
         assert (tmp_path / name).stat().st_size > 100
 
 
@@ -64,3 +77,76 @@ def test_rigid_barus_line_beyond_its_load_limit_is_no_solution():
     assert "exceeds what the rigid Barus contact can carry" in over.message
     assert 2e-8 * over.pressure.max() > RIGID_BARUS_RESOLVABLE_ALPHA_P
     assert over.summary()["error_estimate"] is None
+
+
+def _moes_line(mesh=None, **over):
+    """The Moes M = 100, L = 10 line contact of the studies."""
+    import bearing_fem as bf
+    from bearing_fem import units
+
+    par = units.line_scene_from_moes(100.0, 10.0)
+    d = {"contact": {"kind": "line", "rx": par["radius"]},
+         "materials": {"reduced_modulus": par["e_prime"]},
+         "lubricant": {"viscosity": par["viscosity"], "piezo": par["piezo"]},
+         "kinematics": {"u1": par["mean_speed"], "u2": par["mean_speed"]},
+         "load": {"force": par["load_per_length"]}}
+    d.update(over)
+    if mesh is not None:
+        d["mesh"] = mesh
+    return bf.Scene.from_dict(d)
+
+
+def test_outlet_grading_locates_the_spike_and_refines_there():
+    """mesh.grading = 'outlet': the uniform and the graded solve on the same node count;
+    the graded one has its finest spacing at the smallest film, a far smaller h_min and
+    friction error estimate, and the same films to the uniform grid's accuracy."""
+    import numpy as np
+
+    import bearing_fem as bf
+
+    uni = bf.solve(_moes_line())
+    gra = bf.solve(_moes_line({"grading": "outlet"}))
+    assert uni.success and gra.success, (uni.message, gra.message)
+    assert gra.x.size == uni.x.size, "same node count as the default uniform grid"
+    steps = np.diff(gra.x)
+    x_fine = gra.x[np.argmin(steps)]
+    x_hmin = gra.x[np.argmin(gra.film)]
+    b = (x_hmin - x_fine)  # distance between the refinement centre and the minimum film
+    assert abs(b) < 0.02 * gra.x[-1], \
+        f"refined where the film is smallest (centre {x_fine:.3e} m, h_min at {x_hmin:.3e} m)"
+    assert steps.max() / steps.min() > 5, "graded (density ratio 9)"
+    assert "grid refined at the outlet spike" in gra.message
+    assert gra.newton_iterations > uni.newton_iterations // 2, \
+        "the locator's iterations are counted"
+    eu, eg = uni.error_estimate, gra.error_estimate
+    assert eg["h_min"] < 0.1 * eu["h_min"], \
+        f"h_min estimate {eg['h_min']:.2e} vs uniform {eu['h_min']:.2e} (measured 3e-6 vs 2e-3)"
+    assert eg["friction_force"] < 0.2 * eu["friction_force"], \
+        "friction estimate (measured 2.3e-4 vs 8.4e-3)"
+    for k in ("h_central", "h_min", "friction_force"):
+        np.testing.assert_allclose(gra.quantities[k], uni.quantities[k],
+                                   rtol=3 * eu[k] + 1e-4,
+                                   err_msg=f"{k}: graded and uniform agree within the "
+                                           "uniform grid's estimated error")
+
+
+def test_outlet_grading_is_refused_where_it_has_no_meaning(tmp_path):
+    import pytest
+    from skfem import MeshLine
+
+    from bearing_fem.errors import SceneError
+    from bearing_fem.mesh import outlet_graded_nodes, write_mesh
+
+    with pytest.raises(SceneError, match=r"mesh.grading must be one of 'uniform', "
+                                         r"'outlet', got 'graded'"):
+        _moes_line({"grading": "graded"})
+    with pytest.raises(SceneError, match=r"mesh.grading = 'outlet' .* model.elasticity = "
+                                         r"'rigid'"):
+        _moes_line({"grading": "outlet"}, model={"elasticity": "rigid"})
+    with pytest.raises(SceneError, match=r"contact.kind = 'point'"):
+        _moes_line({"grading": "outlet"}, contact={"kind": "point", "rx": 0.01,
+                                                   "ry": 0.01})
+    path = write_mesh(MeshLine(outlet_graded_nodes(401)), tmp_path / "g.vtu")
+    with pytest.raises(SceneError, match=r"mesh.file replaces mesh.grading"):
+        _moes_line({"grading": "outlet", "file": str(path)})
+    assert _moes_line({"grading": "uniform"}).mesh.grading == "uniform"

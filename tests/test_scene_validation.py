@@ -197,6 +197,10 @@ CASES = [
     _case("mesh.y_range-order", {"mesh.y_range": [0.0, 3.0]}, "mesh.y_range",
           base="point"),
     _case("mesh.y_range-type", {"mesh.y_range": "wide"}, "mesh.y_range", base="point"),
+    _case("mesh.grading-value", {"mesh.grading": "graded"}, "mesh.grading", "'outlet'"),
+    _case("mesh.grading-type", {"mesh.grading": 1}, "mesh.grading"),
+    _case("mesh.grading-outlet-on-point", {"mesh.grading": "outlet"}, "mesh.grading",
+          "contact.kind = 'point'", base="point"),
     # --- solver ----------------------------------------------------------------------
     _case("solver.tolerance-sign", {"solver.tolerance": -1e-8}, "solver.tolerance"),
     _case("solver.tolerance-zero", {"solver.tolerance": 0.0}, "solver.tolerance"),

@@ -546,10 +546,14 @@ def kodnir_coefficient(scene) -> float:
     return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
 
 
-def line_setup(scene, nodes: int | None = None) -> LineSetup:
+def line_setup(scene, nodes: int | None = None,
+               x_nodes: np.ndarray | None = None) -> LineSetup:
     """Reference scales, default mesh and compliance operator of a line scene.
 
-    ``nodes`` overrides the node count (grid sequencing) on the same interval.
+    ``nodes`` overrides the node count (grid sequencing) on the same interval;
+    ``x_nodes`` (increasing, in units of the length unit: Hertz half-widths when elastic
+    and loaded) replaces the grid as a ``mesh.file`` would (every other node of it for
+    coarser levels).
     """
     R = scene.contact.rx
     lub, kin, model = scene.lubricant, scene.kinematics, scene.model
@@ -587,8 +591,8 @@ def line_setup(scene, nodes: int | None = None) -> LineSetup:
         density = NODES_PER_RIGID_LENGTH
     width = x_range[1] - x_range[0]
     cap = 20001 if model.elasticity == "rigid" else MAX_DEFAULT_ELASTIC_NODES
-    axes = scene.mesh.axes()
-    if axes is not None:  # a grid file, in units of x_unit
+    axes = (np.asarray(x_nodes, dtype=float), None) if x_nodes is not None else scene.mesh.axes()
+    if axes is not None:  # a grid file (or given nodes), in units of x_unit
         x_file = axes[0]
         repeated = np.flatnonzero(np.diff(x_file) <= 0.0)
         if repeated.size:
@@ -684,10 +688,12 @@ class LineModel:
 
     settings = LINE_DRIVER
 
-    def __init__(self, scene, boundary_pressure: tuple[float, float] = (0.0, 0.0)) -> None:
+    def __init__(self, scene, boundary_pressure: tuple[float, float] = (0.0, 0.0),
+                 x_nodes: np.ndarray | None = None) -> None:
         self.scene = scene
         self.bp = tuple(float(v) for v in boundary_pressure)
-        self.setup = line_setup(scene)
+        self.x_nodes = x_nodes
+        self.setup = line_setup(scene, x_nodes=x_nodes)
         piezo = scene.lubricant.effective_piezo > 0.0
         self.continuation_parameter = "alpha" if piezo else "speed"
         self._setups = {self.setup.disc.x.size: self.setup}
@@ -697,8 +703,8 @@ class LineModel:
         """The scene on a grid of ``nodes`` nodes over the same interval (uniform, or every
         other node of a grid file; cached: the driver recognises a level by identity)."""
         if nodes not in self._setups:
-            if self.scene.mesh.file is not None:
-                self._setups[nodes] = line_setup(self.scene, nodes)
+            if self.scene.mesh.file is not None or self.x_nodes is not None:
+                self._setups[nodes] = line_setup(self.scene, nodes, x_nodes=self.x_nodes)
             else:
                 x = self.setup.disc.x
                 self._setups[nodes] = _regridded(self.scene, self.setup, float(x[0]),
@@ -930,10 +936,75 @@ def solve_line(scene, *, boundary_pressure: tuple[float, float] | None = None,
         Never raises for non-convergence or non-existence: see ``result.status``.
     """
     t0 = time.perf_counter()
-    model = LineModel(scene, (0.0, 0.0) if boundary_pressure is None else boundary_pressure)
+    bp = (0.0, 0.0) if boundary_pressure is None else boundary_pressure
+    if scene.mesh.grading == "outlet":
+        return _solve_outlet_graded(scene, bp, t0, progress)
+    model = LineModel(scene, bp)
     if is_linear(scene):
         return solve_linear_model(model, scene, t0)
     return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress))
+
+
+#: ``mesh.grading = "outlet"``: node count of the uniform grid whose solution locates the
+#: outlet spike (its spacing, 0.015 b on the default [-4.5, 1.5] b, is well below the
+#: refinement width), and the refinement of :func:`bearing_fem.mesh.outlet_graded_nodes`:
+#: density ratio and width [b] (the study of docs/line_contact.md, "Graded grids").
+SPIKE_LOCATOR_NODES = 401
+OUTLET_GRADING_RATIO = 9.0
+OUTLET_GRADING_WIDTH = 0.1
+
+
+def locate_outlet_spike(scene) -> tuple[float | None, Result]:
+    """Where the outlet constriction of an elastic line scene lies: x of the smallest
+    film of a solve on a uniform grid of :data:`SPIKE_LOCATOR_NODES` nodes over the
+    scene's domain, in Hertz half-widths [-] (None if that solve failed), and that
+    result."""
+    mesh = replace(scene.mesh, grading=None, nodes=SPIKE_LOCATOR_NODES)
+    coarse = solve_line(replace(scene, mesh=mesh))
+    if not coarse.success:
+        return None, coarse
+    b = line_setup(scene).x_unit
+    return float(coarse.x[int(np.argmin(coarse.film))] / b), coarse
+
+
+def outlet_graded_grid(scene, centre: float) -> np.ndarray:
+    """Nodes [Hertz half-widths] of ``scene``'s grid (its node count and domain) refined
+    around x = ``centre`` b by :func:`bearing_fem.mesh.outlet_graded_nodes`; the node count
+    rounded up to 4k + 1 so that the two coarser levels nest."""
+    from ..mesh import outlet_graded_nodes
+
+    setup = line_setup(scene)
+    x = setup.disc.x / setup.x_unit
+    n = 4 * math.ceil((x.size - 1) / 4) + 1
+    lo, hi = float(x[0]), float(x[-1])
+    return outlet_graded_nodes(n, (lo, hi), centre=min(max(centre, lo), hi),
+                               width=OUTLET_GRADING_WIDTH, ratio=OUTLET_GRADING_RATIO)
+
+
+def _solve_outlet_graded(scene, bp, t0: float, progress) -> Result:
+    """``mesh.grading = "outlet"``: locate the spike on a coarse uniform grid, then solve on
+    the grid refined there; the locator's iterations and time count in the result (and
+    against ``solver.iteration_budget`` and ``time_limit``)."""
+    centre, coarse = locate_outlet_spike(scene)
+    if centre is None:
+        message = (f"mesh.grading = 'outlet': the solve on a uniform grid of "
+                   f"{SPIKE_LOCATOR_NODES} nodes that locates the outlet spike ended with "
+                   f"{coarse.status}: {coarse.message}")
+        return replace(coarse, scene=scene, message=message,
+                       wall_time_s=time.perf_counter() - t0)
+    solver = scene.solver
+    spent = coarse.newton_iterations
+    left = dict(iteration_budget=max(1, solver.iteration_budget - spent))
+    if solver.time_limit is not None:
+        left["time_limit"] = max(1e-3, solver.time_limit - (time.perf_counter() - t0))
+    graded = replace(scene, solver=replace(solver, **left))
+    model = LineModel(graded, bp, x_nodes=outlet_graded_grid(scene, centre))
+    res = rigid_barus_beyond_limit(solve_newton_model(
+        model, graded, t0, progress=progress,
+        prefix=f"grid refined at the outlet spike, x = {centre:.4g} b "
+               f"(located in {spent} Newton iterations on {SPIKE_LOCATOR_NODES} uniform "
+               "nodes); "))
+    return replace(res, scene=scene, newton_iterations=res.newton_iterations + spent)
 
 
 #: alpha p beyond which the reduced pressure q = (1 - exp(-alpha p))/alpha equals 1/alpha
