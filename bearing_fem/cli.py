@@ -1,4 +1,5 @@
-"""Command line: ``bearing-fem solve | demo | plot`` (see ``docs/cli.md``).
+"""Command line: ``bearing-fem solve | demo | plot | bearing | bench | sweep | runs`` (see
+``docs/cli.md``).
 
 The only module of the package that prints or exits. Exit codes:
 
@@ -261,6 +262,7 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
     from .bearing import Bearing, example_names, load_example, solve_bearing
     from .io import export_bearing
 
+    out = _out_dir(args.out)
     path = Path(args.bearing)
     if not path.is_file() and args.bearing in example_names():
         bearing = load_example(args.bearing)
@@ -273,7 +275,6 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
     else:
         bearing = Bearing.from_toml(path)
     result = solve_bearing(bearing)
-    out = Path(args.out)
     try:
         files = export_bearing(result, out)
         if not args.no_figures:
@@ -283,6 +284,17 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
     except OSError as exc:
         raise _InputError(f"cannot write results to {str(out)!r}: {exc.strerror or exc}") \
             from None
+    if not args.quiet:
+        _print_bearing(bearing, result, files)
+    if result.success:
+        return EXIT_OK
+    print(f"bearing-fem: no complete bearing solution (status {result.status}): "
+          f"{result.message}", file=sys.stderr)
+    return EXIT_NO_SOLUTION
+
+
+def _print_bearing(bearing: Any, result: Any, files: dict[str, Path]) -> None:
+    """The summary table of ``bearing-fem bearing`` on stdout."""
     s = result.summary()
     print(bearing.title or bearing.geometry.type)
     loc = s.get("h_min_location") or {}
@@ -302,11 +314,6 @@ def _cmd_bearing(args: argparse.Namespace) -> int:
     for w in s["warnings"]:
         print(f"  {'warning':<24} {w}")
     print(f"  {'wrote':<24} " + ", ".join(str(p) for p in files.values()))
-    if result.success:
-        return EXIT_OK
-    print(f"bearing-fem: no complete bearing solution (status {result.status}): "
-          f"{result.message}", file=sys.stderr)
-    return EXIT_NO_SOLUTION
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
@@ -483,7 +490,8 @@ def split_verbosity(argv: Sequence[str]) -> tuple[list[str], int]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``bearing-fem`` (subcommands solve, demo, plot)."""
+    """The argument parser of ``bearing-fem`` (subcommands solve, demo, plot, bearing, bench,
+    sweep, runs)."""
     from .version import VERSION as package_version
 
     parser = argparse.ArgumentParser(
@@ -516,8 +524,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", "-o", metavar="DIR", default=DEMO_DIR,
                    help=f"output directory (default: {DEMO_DIR}/)")
     p.add_argument("--nodes", type=int, default=None, metavar="N",
-                   help="override the mesh node count (default: the scene's automatic "
-                        "mesh); a coarse mesh, e.g. 401, gives a quick look")
+                   help="override the mesh node count (default: the scene's own mesh, "
+                        "1201 nodes); a coarse mesh, e.g. 401, gives a quick look")
     p.set_defaults(func=_cmd_demo)
 
     p = sub.add_parser("plot", help="plot a result.h5",

@@ -295,7 +295,19 @@ class _Staging:
 # writers
 # ---------------------------------------------------------------------------------------
 def write_summary(result: Any, path: str | Path) -> Path:
-    """Write ``result.summary()`` as strict JSON to ``path`` (not atomic; see :func:`export`)."""
+    """Write ``result.summary()`` as strict JSON to ``path`` (not atomic; see :func:`export`).
+
+    Parameters
+    ----------
+    result : Result
+        Any result with ``summary()`` (numbers in SI units, named in its ``units``).
+    path : str or Path
+        The JSON file; a non-finite number is written as ``null``.
+
+    Returns
+    -------
+    Path
+    """
     path = Path(path)
     text = json.dumps(json_safe(result.summary()), indent=2, allow_nan=False)
     path.write_text(text + "\n", encoding="utf-8")
@@ -307,6 +319,18 @@ def write_h5(result: Any, path: str | Path) -> Path:
 
     The layout is described in the module docstring. Not atomic on its own; use
     :func:`export` for that.
+
+    Parameters
+    ----------
+    result : Result
+        Coordinates [m], ``pressure`` [Pa], ``film`` [m] and the extra fields (their
+        names carry their units) are written as datasets, the summary as attributes.
+    path : str or Path
+        The HDF5 file.
+
+    Returns
+    -------
+    Path
     """
     import h5py
 

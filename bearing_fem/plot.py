@@ -33,9 +33,12 @@ import logging
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from .result import Result
 
 log = logging.getLogger(__name__)
 
@@ -150,8 +153,24 @@ def _from_result(res) -> PlotData:
                     success=bool(getattr(res, "success", True)), semi_axes=axes)
 
 
-def load_plot_data(result_or_path) -> PlotData:
-    """A :class:`~bearing_fem.result.Result`, a ``result.h5`` path or its directory."""
+def load_plot_data(result_or_path: Result | str | os.PathLike) -> PlotData:
+    """The fields and metadata a plot needs.
+
+    Parameters
+    ----------
+    result_or_path : Result or path
+        A :class:`~bearing_fem.result.Result`, a ``result.h5`` path or its directory.
+
+    Returns
+    -------
+    PlotData
+        Coordinates [m], pressure [Pa], film [m], kind, status and success.
+
+    Raises
+    ------
+    TypeError
+        Neither a result nor a path.
+    """
     if isinstance(result_or_path, (str, os.PathLike)):
         return _from_h5(Path(result_or_path))
     if hasattr(result_or_path, "pressure") and hasattr(result_or_path, "x"):
@@ -188,7 +207,8 @@ def offscreen_backend() -> str | None:
     return None
 
 
-def plot_result(result_or_path, out_png: str | os.PathLike, kind: str | None = None, *,
+def plot_result(result_or_path: Result | str | os.PathLike, out_png: str | os.PathLike,
+                kind: str | None = None, *,
                 window_size: tuple[int, int] = (1000, 750)) -> Path:
     """Draw a result to a PNG file, off-screen.
 

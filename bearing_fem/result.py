@@ -3,12 +3,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Mapping
+from typing import TYPE_CHECKING, Any, Mapping
 
 import numpy as np
 
 from .errors import SolveError
 from .version import VERSION
+
+if TYPE_CHECKING:
+    from .scene import Scene
 
 
 def json_safe(value: Any) -> Any:
@@ -37,7 +40,9 @@ _UNITS_POINT = {
     "h_min": "m", "h_central": "m", "p_max": "Pa", "h0": "m", "load": "N",
     "friction_force": "N", "friction_force_surface2": "N", "rolling_resistance": "N",
     "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
-    "heat_power_couette": "W", "heat_power_poiseuille": "W", "outlet_position": "m",
+    "heat_power_couette": "W", "heat_power_poiseuille": "W",
+    "heat_power_poiseuille_direct": "W", "heat_power_stabilisation": "W",
+    "outlet_position": "m",
     "h_outlet": "m",
     # thermal coupling (bearing_fem.contacts.coupling)
     "contact_temperature": "degC", "contact_temperature_rise": "K",
@@ -71,7 +76,8 @@ class Result:
     success : bool
     status : str
         ``converged`` (Newton), ``linear`` (solved by linear solves, no Newton),
-        ``no_solution`` (proved not to exist), ``max_iterations``, ``stalled``, ``diverged``.
+        ``no_solution`` (proved not to exist), ``max_iterations``, ``stalled``, ``diverged``,
+        ``budget_exhausted`` (``solver.iteration_budget`` spent), ``time_limit``.
     message : str
         Human-readable, with numbers.
     scene : Scene
@@ -182,8 +188,21 @@ def number_or_none(value: Any) -> Any:
     return v if np.isfinite(v) else None
 
 
-def dimensionless_groups(scene) -> dict[str, float]:
-    """Moes/Hamrock groups of a loaded elastic scene (empty where not defined)."""
+def dimensionless_groups(scene: Scene) -> dict[str, float]:
+    """Moes/Hamrock groups of a loaded elastic scene (empty where not defined).
+
+    Parameters
+    ----------
+    scene : Scene
+
+    Returns
+    -------
+    dict
+        The dimensionless groups [-] that :func:`bearing_fem.units.moes_line` (line) or
+        :func:`bearing_fem.units.moes_point` (point) define among Moes ``M``, ``L`` and
+        the Hamrock-Dowson ``W``, ``U``, ``G``. Empty without a load or an elastic
+        modulus (rigid scenes, a prescribed gap).
+    """
     from . import units
 
     if scene.load.force is None or scene.e_prime is None:

@@ -1152,12 +1152,46 @@ class Scene:
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> "Scene":
-        """Build a scene from a nested mapping with the TOML layout (docs/scenes.md)."""
+        """Build a scene from a nested mapping with the TOML layout (docs/scenes.md).
+
+        Parameters
+        ----------
+        data : mapping
+            ``{"contact": {...}, "lubricant": {...}, ...}``: section tables of keys in SI
+            units (lengths in m, pressures in Pa, viscosities in Pa s, speeds in m/s).
+
+        Returns
+        -------
+        Scene
+            Validated.
+
+        Raises
+        ------
+        SceneError
+            An unknown section or key, a missing required one, or a value out of its
+            range; the message names the field, the value and the unit.
+        """
         return cls(**sections_from_dict(data, _TABLES, _REQUIRED, "scene"))
 
     @classmethod
     def from_toml(cls, path: str | Path) -> "Scene":
-        """Read and validate a TOML scene file."""
+        """Read and validate a TOML scene file.
+
+        Parameters
+        ----------
+        path : str or Path
+            A UTF-8 TOML file (a byte-order mark is accepted); a relative ``mesh.file``
+            in it is relative to the file's folder.
+
+        Returns
+        -------
+        Scene
+
+        Raises
+        ------
+        SceneError
+            An unreadable or malformed file, or an invalid scene (see :meth:`from_dict`).
+        """
         path = Path(path)
         return cls.from_toml_string(read_text_file(path, "scene file"), source=str(path),
                                     base_dir=path.parent)
@@ -1165,8 +1199,26 @@ class Scene:
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>",
                          base_dir: str | Path | None = None) -> "Scene":
-        """Parse and validate a scene given as TOML text; a relative ``mesh.file`` is
-        taken relative to ``base_dir`` (the scene file's folder) when given."""
+        """Parse and validate a scene given as TOML text.
+
+        Parameters
+        ----------
+        text : str
+            TOML text with the layout of docs/scenes.md.
+        source : str
+            Name of the text in error messages.
+        base_dir : str or Path, optional
+            Folder that a relative ``mesh.file`` is taken relative to (the scene file's).
+
+        Returns
+        -------
+        Scene
+
+        Raises
+        ------
+        SceneError
+            Malformed TOML (with the line), or an invalid scene (see :meth:`from_dict`).
+        """
         data = parse_toml(text, source, "a scene")
         mesh = data.get("mesh")
         if (base_dir is not None and isinstance(mesh, dict) and isinstance(mesh.get("file"), str)

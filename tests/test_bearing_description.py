@@ -57,6 +57,10 @@ def _base() -> dict:
 
 @pytest.mark.parametrize("section, key, value, pattern", [
     ("bearing", "bore", -0.045, r"bearing\.bore must be > 0 m, got -0\.045"),
+    # millimetres given as metres
+    ("bearing", "bore", 45, r"bearing\.bore = 45\.0 m lies outside the plausible "
+                            r"\[0\.0001, 10\] m; dimensions are in metres"),
+    ("bearing", "element_diameter", 12.7, r"bearing\.element_diameter = 12\.7 m lies outside"),
     ("bearing", "outside_diameter", 0.04, r"outside_diameter = 0\.04 m must exceed"),
     ("bearing", "elements", 40, r"elements = 40 elements of 0\.0127 m do not fit"),
     ("bearing", "elements", 2.5, r"bearing\.elements must be an integer"),

@@ -125,6 +125,21 @@ def test_cli_bearing(tmp_path, capsys):
         cli.EXIT_NO_SOLUTION
     s = json.loads((out3 / "bearing_summary.json").read_text())
     assert s["status"] == "contacts_failed", "files are written with the status"
+    capsys.readouterr()
+    out4 = tmp_path / "out4"
+    assert cli.main(["bearing", str(path), "--out", str(out4), "--no-figures", "-q"]) == \
+        cli.EXIT_OK
+    printed = capsys.readouterr()
+    assert printed.out == "" and printed.err == "", "-q prints errors only (docs/cli.md)"
+    assert (out4 / "bearing_summary.json").is_file()
+
+
+def test_cli_bearing_refuses_an_empty_out(tmp_path, monkeypatch, capsys):
+    """--out "" wrote every file into the current folder with exit 0."""
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["bearing", "6209", "--out", ""]) == cli.EXIT_INVALID
+    assert "--out must name a directory" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == [], "nothing written"
 
 
 @pytest.mark.parametrize("name, hint", [("6208", ""), ("6209.toml", "bearing-fem bearing 6209")])

@@ -329,3 +329,26 @@ def test_scene_to_toml_round_trip():
                                        ("heat_flux_W_m2", "W/m^2"), ("shape", "")])
 def test_field_unit(name, unit):
     assert io.field_unit(name) == unit
+
+
+def test_every_dimensional_summary_number_has_a_unit():
+    """Every float in the summary of an elastic line and point solve has its unit in
+    summary["units"] (heat_power_poiseuille_direct and heat_power_stabilisation had none);
+    counts (iterations, unknowns) are whole numbers."""
+    import bearing_fem as bf
+
+    def base(kind):
+        contact = {"kind": kind, "rx": 0.01} | ({"ry": 0.01} if kind == "point" else {})
+        return bf.Scene.from_dict({
+            "contact": contact, "materials": {"reduced_modulus": 2.2e11},
+            "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+            "kinematics": {"u1": 1.0, "u2": 1.0},
+            "load": {"force": 2e5 if kind == "line" else 50.0},
+            "mesh": {"nodes": 401 if kind == "line" else [33, 33]}})
+
+    for kind in ("line", "point"):
+        s = bf.solve(base(kind)).summary()
+        missing = [k for k, v in s.items() if isinstance(v, float) and k not in s["units"]]
+        assert not missing, f"{kind}: summary numbers without a unit: {missing}"
+        for k in ("newton_iterations", "dofs"):
+            assert isinstance(s[k], int), f"{kind}: {k} is a count"

@@ -53,6 +53,25 @@ def _optional_positive(obj: Any, name: str, unit: str) -> None:
         field_positive(obj, name, unit)
 
 
+#: Plausible bearing dimensions [m] (bore, outside, pitch and element diameters, widths
+#: and roller lengths): from miniature bearings (0.6 mm bores, 0.3 mm balls) to slewing
+#: and tunnel-boring bearings of several metres. Beyond it the value is almost surely in
+#: millimetres (a 45 mm bore given as 45).
+BEARING_LENGTH_RANGE = (1e-4, 10.0)
+
+
+def _length(obj: Any, name: str) -> float:
+    """Field ``name`` as a length in :data:`BEARING_LENGTH_RANGE` [m], else SceneError
+    naming it (a millimetre value given as metres, mostly)."""
+    value = field_positive(obj, name, "m")
+    lo, hi = BEARING_LENGTH_RANGE
+    if not lo <= value <= hi:
+        raise SceneError(f"bearing.{name} = {value!r} m lies outside the plausible "
+                         f"[{lo:g}, {hi:g}] m; dimensions are in metres (a 45 mm bore is "
+                         "0.045)")
+    return value
+
+
 #: Largest free contact angle of a deep-groove ball bearing [deg] that its radial
 #: clearance may give (cos a0 = 1 - c_r / A): the 6209 example's clearance gives 9.9 deg;
 #: 60 deg leaves room for large clearance classes with close conformities, while
@@ -140,16 +159,16 @@ class Geometry:
 
     def __post_init__(self) -> None:
         field_choice(self, "type", BEARING_TYPES)
-        d = field_positive(self, "bore", "m")
-        big_d = field_positive(self, "outside_diameter", "m")
+        d = _length(self, "bore")
+        big_d = _length(self, "outside_diameter")
         if big_d <= d:
             raise SceneError(f"bearing.outside_diameter = {big_d!r} m must exceed "
                              f"bearing.bore = {d!r} m")
-        dw = field_positive(self, "element_diameter", "m")
+        dw = _length(self, "element_diameter")
         field_integer(self, "elements", 3, 500, "rolling elements per row")
         field_integer(self, "rows", 1, 8, "rows")
         if self.pitch_diameter is not None:
-            dm = field_positive(self, "pitch_diameter", "m")
+            dm = _length(self, "pitch_diameter")
             if not d < dm < big_d:
                 raise SceneError(f"bearing.pitch_diameter = {dm!r} m must lie between the "
                                  f"bore {d!r} m and the outside diameter {big_d!r} m")
@@ -161,7 +180,8 @@ class Geometry:
         if z * dw > math.pi * dm * (1.0 + 1e-9):
             raise SceneError(f"bearing.elements = {z} elements of {dw!r} m do not fit on "
                              f"the pitch circle pi d_m = {math.pi * dm!r} m")
-        _optional_positive(self, "width", "m")
+        if self.width is not None:
+            _length(self, "width")
         alpha = field_number(self, "contact_angle", "deg")
         field_nonnegative(self, "radial_clearance", "m")
         field_number(self, "first_element_azimuth", "deg")
@@ -217,7 +237,7 @@ class Geometry:
         if self.effective_length is None:
             raise SceneError(f"bearing.effective_length (m) is required for a {self.type} "
                              "bearing")
-        lw = field_positive(self, "effective_length", "m")
+        lw = _length(self, "effective_length")
         limit = MAX_ROLLER_CLEARANCE_FRACTION * self.element_diameter
         if self.radial_clearance > limit:
             raise SceneError(f"bearing.radial_clearance = {self.radial_clearance!r} m exceeds "

@@ -20,10 +20,13 @@ Only math/numpy and :mod:`bearing_fem.formulas` here.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .. import formulas
 from ..validation import require_nonnegative, require_positive
+
+if TYPE_CHECKING:
+    from .description import Bearing
 
 __all__ = ["palmgren_friction_torque", "palmgren_heat_power", "palmgren_torque",
            "palmgren_f1", "palmgren_equivalent_load", "PALMGREN_F0",
@@ -37,7 +40,9 @@ __all__ = ["palmgren_friction_torque", "palmgren_heat_power", "palmgren_torque",
 def torque_to_heat_power(torque_nmm: float, rpm: float) -> float:
     """Heat power Q = M omega [W] of a friction torque M [N mm] at n [1/min]:
     Q = 1.047e-4 M n (1.047e-4 = 2 pi/60/1000; Yachikov & Vostrikov 2015)."""
-    return 2.0 * math.pi / 60.0 / 1000.0 * float(torque_nmm) * float(rpm)
+    torque = require_nonnegative("torque_nmm", torque_nmm, "N mm")
+    n = require_nonnegative("rpm", rpm, "1/min")
+    return 2.0 * math.pi / 60.0 / 1000.0 * torque * n
 
 
 def _palmgren_viscous(kinematic_viscosity_mm2s: float, rpm: float, mean_diameter_mm: float,
@@ -445,7 +450,8 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
 # ---------------------------------------------------------------------------------------
 # all models for one bearing, in SI
 # ---------------------------------------------------------------------------------------
-def empirical_models(bearing, loaded_contact_angle_deg: float = 0.0) -> dict[str, Any]:
+def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
+                     ) -> dict[str, Any]:
     """Every applicable empirical model for a :class:`~bearing_fem.bearing.Bearing` [SI].
 
     Parameters

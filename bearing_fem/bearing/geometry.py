@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import units
+from ..validation import require_finite, require_positive
 from .description import Bearing
 
 __all__ = ["ContactGeometry", "contact_geometry", "contact_radii", "reduced_modulus",
@@ -107,22 +108,40 @@ class ContactGeometry:
     element_radius: float
 
 
-def contact_radii(pitch_diameter: float, element_diameter: float, alpha_inner,
-                  alpha_outer) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def contact_radii(pitch_diameter: float, element_diameter: float,
+                  alpha_inner: float | np.ndarray, alpha_outer: float | np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(r_i, r_o, R_x,inner, R_x,outer) [m] at contact angles ``alpha_inner``, ``alpha_outer``.
 
     r_i,o = (d_m -+ D_w cos alpha)/2 (raceway radius at the contact, from the bearing
     axis); R_x = D_w (1 -+ gamma)/2, gamma = D_w cos(alpha)/d_m: the element radius D_w/2
     and the raceway's normal-section radius r/cos(alpha) (convex inner, concave outer).
+
+    Parameters
+    ----------
+    pitch_diameter, element_diameter : float
+        d_m > D_w > 0 [m].
+    alpha_inner, alpha_outer : float or array
+        Contact angles [rad], finite.
+
+    Raises
+    ------
+    ValueError
+        Naming the argument, its value and unit.
     """
-    dm, dw = float(pitch_diameter), float(element_diameter)
-    ci = np.cos(np.asarray(alpha_inner, dtype=float))
-    co = np.cos(np.asarray(alpha_outer, dtype=float))
+    dm = require_positive("pitch_diameter", pitch_diameter, "m")
+    dw = require_positive("element_diameter", element_diameter, "m")
+    if dw >= dm:
+        raise ValueError(f"element_diameter must be smaller than pitch_diameter (m), got "
+                         f"{dw!r} m >= {dm!r} m")
+    ci = np.cos(require_finite("alpha_inner", alpha_inner, "rad"))
+    co = np.cos(require_finite("alpha_outer", alpha_outer, "rad"))
     return (0.5 * (dm - dw * ci), 0.5 * (dm + dw * co), 0.5 * dw * (1.0 - dw * ci / dm),
             0.5 * dw * (1.0 + dw * co / dm))
 
 
-def contact_geometry(bearing: Bearing, alpha_inner, alpha_outer) -> ContactGeometry:
+def contact_geometry(bearing: Bearing, alpha_inner: float | np.ndarray,
+                     alpha_outer: float | np.ndarray) -> ContactGeometry:
     """Contact radii at the contact angles ``alpha_inner``, ``alpha_outer`` [rad] (arrays)."""
     g = bearing.geometry
     dm, dw = g.mean_diameter, g.element_diameter

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import require_positive
+from ..validation import require_finite, require_positive
 from .geometry import contact_radii
 
 __all__ = ["RollerContacts", "cylindrical_roller_contacts", "max_line_load",
@@ -119,7 +119,8 @@ class ElementKinematics:
 
 
 def element_kinematics(inner_speed: float, pitch_diameter: float, element_diameter: float,
-                       alpha_inner, alpha_outer) -> ElementKinematics:
+                       alpha_inner: float | np.ndarray,
+                       alpha_outer: float | np.ndarray) -> ElementKinematics:
     """Pure-rolling kinematics at the given contact angles.
 
     Parameters
@@ -134,8 +135,13 @@ def element_kinematics(inner_speed: float, pitch_diameter: float, element_diamet
     Returns
     -------
     ElementKinematics
+
+    Raises
+    ------
+    ValueError
+        A non-finite speed, a diameter <= 0 or D_w >= d_m, a non-finite angle.
     """
-    wi = float(inner_speed)
+    wi = require_finite("inner_speed", inner_speed, "rad/s")
     ri, ro, rxi, rxo = contact_radii(pitch_diameter, element_diameter, alpha_inner,
                                      alpha_outer)
     wc = wi * ri / (ri + ro)

@@ -238,6 +238,12 @@ def solve_bearing(bearing: Bearing, *,
     -------
     BearingResult
         Never raises for an unsuccessful solve: see ``status`` and ``message``.
+
+    Raises
+    ------
+    SceneError
+        ``bearing`` is not a Bearing, or a contact scene built from it is refused (the
+        message names the bearing's field: ``operation.inner_rpm``, the loads, ...).
     """
     if not isinstance(bearing, Bearing):
         raise SceneError(f"solve_bearing() needs a Bearing, got {type(bearing).__name__}")

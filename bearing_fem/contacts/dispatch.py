@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import logging
 import warnings
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
@@ -31,6 +31,10 @@ from ..checks import input_warnings
 from ..errors import SceneError
 from ..result import Result
 from ..scene import Scene
+from ..validation import require_finite, shown
+
+if TYPE_CHECKING:  # the series modules are imported by the series path only
+    from .series import SqueezeSeries
 
 log = logging.getLogger(__name__)
 
@@ -67,6 +71,8 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
     if boundary_pressure is not None and (scene.contact.kind != "line"
                                           or scene.model.thermal != "none"):
         raise SceneError("boundary_pressure (Pa) applies to isothermal line contacts only")
+    if boundary_pressure is not None:
+        boundary_pressure = _end_pressures(boundary_pressure)
     with np.errstate(all="ignore"), warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         result = _route(scene, boundary_pressure, progress)
@@ -76,6 +82,15 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
     if notes:
         result.warnings = notes + [w for w in result.warnings if w not in notes]
     return result
+
+
+def _end_pressures(value: Any) -> tuple[float, float]:
+    """``boundary_pressure`` as two finite floats [Pa], or SceneError naming it."""
+    values = require_finite("boundary_pressure", value, "Pa", error=SceneError)
+    if np.ndim(values) != 1 or np.size(values) != 2:
+        raise SceneError(f"boundary_pressure must be two pressures (inlet, outlet) in Pa, "
+                         f"got {shown(value)}")
+    return float(values[0]), float(values[1])
 
 
 def _route(scene: Scene, boundary_pressure, progress) -> Result:
@@ -96,7 +111,8 @@ def _route(scene: Scene, boundary_pressure, progress) -> Result:
     return solve_line(scene, boundary_pressure=boundary_pressure, progress=progress)
 
 
-def solve_series(scene: Scene, *, progress: Callable[[dict[str, Any]], None] | None = None):
+def solve_series(scene: Scene, *, progress: Callable[[dict[str, Any]], None] | None = None
+                 ) -> SqueezeSeries:
     """Solve the squeeze series of a scene with a ``[transient]`` section.
 
     h0(t) = h0 (1 + amplitude cos(omega t)) with ``load.gap`` = h0: ``transient.steps``

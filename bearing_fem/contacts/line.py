@@ -37,7 +37,7 @@ from .. import units
 from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import line_central_film_moes
-from ..mesh import every_other
+from ..mesh import every_other, outlet_graded_nodes
 from ..numerics.fe import QuadratureOperators, quadrature_operators
 from ..numerics.newton import ForcingTerm, gmres_right
 from ..physics.elasticity import (UNIFORMITY_TOLERANCE, GradedHalfSpaceLine, HalfSpaceLine,
@@ -47,7 +47,9 @@ from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import (FilmDissipation, film_numbers, friction_and_heat,
                     full_film_indicator_line, outlet_position_line, reported_viscosity)
 from ..result import Result
-from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
+from ..scene import Scene
+from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
+                     solve_newton_model)
 from .linear import active_set_solve, pressure_from_reduced
 from .problem import ScaledResidual, fischer_burmeister
 
@@ -915,8 +917,8 @@ def _regridded(scene, setup: LineSetup, x0: float, x1: float, nodes: int) -> Lin
     return replace(setup, disc=disc, compliance=comp, stab_compliance=c_stab)
 
 
-def solve_line(scene, *, boundary_pressure: tuple[float, float] | None = None,
-               progress=None) -> Result:
+def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
+               progress: Progress | None = None) -> Result:
     """Solve a line-contact scene (the linear path or damped Newton by the shared
     driver, :mod:`bearing_fem.contacts.driver`).
 
@@ -971,8 +973,6 @@ def outlet_graded_grid(scene, centre: float) -> np.ndarray:
     """Nodes [Hertz half-widths] of ``scene``'s grid (its node count and domain) refined
     around x = ``centre`` b by :func:`bearing_fem.mesh.outlet_graded_nodes`; the node count
     rounded up to 4k + 1 so that the two coarser levels nest."""
-    from ..mesh import outlet_graded_nodes
-
     setup = line_setup(scene)
     x = setup.disc.x / setup.x_unit
     n = 4 * math.ceil((x.size - 1) / 4) + 1

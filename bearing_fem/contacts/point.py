@@ -67,7 +67,8 @@ from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
 from ..validation import require_int
 from ..scene import Scene
-from .driver import DriverSettings, Solution, solve_linear_model, solve_newton_model
+from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
+                     solve_newton_model)
 from .linear import active_set_solve, pressure_from_reduced
 from .point_grid import LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates
 from .problem import ScaledResidual, fischer_burmeister
@@ -1341,9 +1342,9 @@ class PointModel:
 # ---------------------------------------------------------------------------------------
 # public API
 # ---------------------------------------------------------------------------------------
-def solve_point(scene, *, boundary_pressure: Callable | np.ndarray | None = None,
+def solve_point(scene: Scene, *, boundary_pressure: Callable | np.ndarray | None = None,
                 squeeze_velocity: float = 0.0, max_iterations: int | None = None,
-                progress=None) -> Result:
+                progress: Progress | None = None) -> Result:
     """Solve a point/elliptical contact scene under a load, or a rigid one with a gap.
 
     Parameters

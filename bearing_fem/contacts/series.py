@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..result import SUCCESS_STATUSES, number_or_none
+from ..scene import Scene
 from ..validation import require_finite
 from ..version import VERSION
 from .driver import solve_linear_model
@@ -104,7 +105,7 @@ class SqueezeSeries:
         }
 
 
-def solve_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
+def solve_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = None,
                          times: np.ndarray | None = None, n_steps: int = 16, *,
                          boundary_pressure: Callable | None = None) -> SqueezeSeries:
     """Quasi-steady rigid series for h0(t) = h0 (1 + eps cos(omega t)).

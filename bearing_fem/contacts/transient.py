@@ -74,7 +74,8 @@ from ..numerics.newton import BUDGET_STATUSES, damped_newton, outcome_message
 from ..physics.elasticity import HalfSpacePoint
 from ..result import Result
 from ..scene import Scene
-from .driver import DriverSettings, finish, make_budget, solve_levels, solve_newton_model
+from .driver import (DriverSettings, Progress, finish, make_budget, solve_levels,
+                     solve_newton_model)
 from .point import (PointLevel, PointModel, PointProblem, PointSetup, boundary_values,
                     flux_model, rigid_start)
 from .point_grid import PointGrid
@@ -392,9 +393,10 @@ class ElasticGapModel(PointModel):
         return rigid_start(self.scene, level.setup, problem, self.gap)
 
 
-def solve_elastic_gap(scene, *, squeeze_velocity: float = 0.0,
+def solve_elastic_gap(scene: Scene, *, squeeze_velocity: float = 0.0,
                       boundary_pressure: Callable | np.ndarray | None = None,
-                      max_iterations: int | None = None, progress=None) -> Result:
+                      max_iterations: int | None = None,
+                      progress: Progress | None = None) -> Result:
     """Steady elastic point contact with a prescribed rigid offset h0 = ``load.gap``.
 
     The film is h = h0 + g + v[p] (half-space compliance) and the steady Reynolds equation
@@ -458,7 +460,7 @@ def _step_result(scene, model: ElasticGapModel, problem: TransientPointProblem,
     return res
 
 
-def solve_elastic_squeeze_series(scene, eps: float = 0.3, omega: float | None = None,
+def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = None,
                                  n_steps: int = 32, periods: int = 1, *,
                                  scheme: str = "bdf2", t0: float = 0.0,
                                  boundary_pressure: Callable | None = None,

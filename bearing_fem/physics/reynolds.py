@@ -36,6 +36,9 @@ from typing import Callable
 
 import numpy as np
 
+#: Gradient (or flux) components at the quadrature points, x first.
+Grad = tuple[np.ndarray, ...]
+
 from .rheology import density_function, viscosity_function
 
 _STEP = 1e-20  # complex-step size relative to the largest magnitude of the variable
@@ -77,7 +80,8 @@ class FluxModel:
         """eps = rho h^3 / (12 eta) [m^3/(Pa s)]."""
         return self.density(p) * h**3 / (12.0 * self.viscosity(p))
 
-    def flux(self, p, h, gp, gh, dx):
+    def flux(self, p: np.ndarray, h: np.ndarray, gp: Grad, gh: Grad,
+             dx: np.ndarray) -> Grad:
         """Flux F at quadrature points [m^2/s].
 
         Parameters
@@ -107,7 +111,8 @@ class FluxModel:
             out[0] = out[0] + 0.5 * dx * upwind_factor(pe) * strong
         return tuple(out)
 
-    def galerkin_flux(self, p, h, gp, gq=None):
+    def galerkin_flux(self, p: np.ndarray, h: np.ndarray, gp: Grad,
+                      gq: Grad | None = None) -> Grad:
         """The flux without stabilisation, rho h^3/(12 eta) grad p - u_m rho h e_x, at the
         quadrature points [m^2/s] (``gq`` is not used here; see
         :meth:`UpwindFluxModel.galerkin_flux`)."""
@@ -116,7 +121,8 @@ class FluxModel:
         out[0] = out[0] - self.mean_speed * rho * h
         return tuple(out)
 
-    def stabilisation_flux(self, p, h, gp, gh, dx, gq=None):
+    def stabilisation_flux(self, p: np.ndarray, h: np.ndarray, gp: Grad, gh: Grad,
+                           dx: np.ndarray, gq: Grad | None = None) -> Grad:
         """What the stabilisation adds to the flux [m^2/s]: :meth:`flux` minus
         :meth:`galerkin_flux`. Its integral against grad p is the numerical dissipation of
         the scheme (``bearing_fem.post``)."""
@@ -124,7 +130,7 @@ class FluxModel:
                                                                         gq=gq)
         return tuple(f - g for f, g in zip(full, self.galerkin_flux(p, h, gp, gq)))
 
-    def _log_slopes(self, p):
+    def _log_slopes(self, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """d ln(rho)/dp and d ln(eta)/dp [1/Pa] by a central difference on the laws.
 
         Used only inside the stabilisation term; the complex-step derivative of the whole
@@ -135,7 +141,8 @@ class FluxModel:
         le = (np.log(self.viscosity(p + dp)) - np.log(self.viscosity(p - dp))) / (2 * dp)
         return lr, le
 
-    def flux_and_derivatives(self, p, h, gp, gh, dx):
+    def flux_and_derivatives(self, p: np.ndarray, h: np.ndarray, gp: Grad, gh: Grad,
+                             dx: np.ndarray) -> tuple:
         """Flux and its exact partial derivatives (complex step) at each quadrature point.
 
         Returns
@@ -269,7 +276,8 @@ class UpwindFluxModel(FluxModel):
             out[0] = out[0] + dc * (rho * gh[0] + h * drho * gp[0])
         return tuple(out)
 
-    def galerkin_flux(self, p, h, gp, gq=None):
+    def galerkin_flux(self, p: np.ndarray, h: np.ndarray, gp: Grad,
+                      gq: Grad | None = None) -> Grad:
         """The flux without the upwind term [m^2/s]: the Poiseuille term (with ``gq``,
         rho h^3/(12 eta0) grad q) minus the wedge term u_m rho h e_x."""
         if gq is None:
@@ -280,7 +288,8 @@ class UpwindFluxModel(FluxModel):
         out[0] = out[0] - self.mean_speed * rho * h
         return tuple(out)
 
-    def flux(self, p, h, gp, gh, dx, gq=None):
+    def flux(self, p: np.ndarray, h: np.ndarray, gp: Grad, gh: Grad, dx: np.ndarray,
+             gq: Grad | None = None) -> Grad:
         """Flux at the quadrature points [m^2/s]; with ``gq`` (gradient of the
         interpolated nodal reduced pressure [Pa/m]) the Poiseuille term is
         rho h^3/(12 eta0) grad q instead of eps grad p."""
@@ -296,7 +305,8 @@ class UpwindFluxModel(FluxModel):
         out[0] = out[0] + c * (rho * gh[0] + h * drho * gp[0])
         return tuple(out)
 
-    def flux_and_derivatives_reduced(self, p, h, gp, gh, dx, gq):
+    def flux_and_derivatives_reduced(self, p: np.ndarray, h: np.ndarray, gp: Grad,
+                                     gh: Grad, dx: np.ndarray, gq: Grad) -> tuple:
         """Flux with the reduced-pressure Poiseuille term and its derivatives: as
         :meth:`flux_and_derivatives`, plus dF/d(grad q) (list over gradient components
         of tuples over flux components) as a sixth item."""
@@ -337,7 +347,8 @@ class UpwindFluxModel(FluxModel):
         out[0] = fx
         return tuple(out)
 
-    def flux_and_derivatives(self, p, h, gp, gh, dx):
+    def flux_and_derivatives(self, p: np.ndarray, h: np.ndarray, gp: Grad, gh: Grad,
+                             dx: np.ndarray) -> tuple:
         """As :meth:`FluxModel.flux_and_derivatives`; the flux is affine in grad p and
         grad h at fixed (p, h), so those derivatives are the coefficients themselves
         (dF_x/dp_x = eps + c h drho/dp, dF_x/dh_x = c rho, dF_y/dp_y = eps, others 0);
@@ -362,7 +373,7 @@ def _diagonal(dim: int, first: np.ndarray, others: np.ndarray) -> list[tuple]:
             for k in range(dim)]
 
 
-def upwind_factor(pe):
+def upwind_factor(pe: np.ndarray) -> np.ndarray:
     """xi(Pe) = coth(Pe) - 1/Pe, stable for small and huge Pe (real or complex-step input).
 
     Complex input is a complex step Pe = x + i s (s tiny): the result is

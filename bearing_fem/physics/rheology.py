@@ -13,6 +13,8 @@ from typing import Callable
 
 import numpy as np
 
+from ..validation import require_finite, require_positive
+
 #: Roelands reference pressure p0 [Pa] and the constant 9.67 of ln(eta_inf) = -9.67 (Pa s).
 ROELANDS_P0 = 1.96e8
 ROELANDS_LN_ETA_INF = -9.67
@@ -73,8 +75,25 @@ def density_function(law: str) -> Callable[[np.ndarray], np.ndarray]:
 
 def prokofiev(t_celsius: float | np.ndarray, viscosity_ref: float, t_ref_celsius: float,
               exponent: float) -> float | np.ndarray:
-    """Prokofiev temperature law eta0(t) = eta_ref (t_ref / t)^n [Pa s], t in deg C (Yachikov & Vostrikov 2015)."""
-    t = np.asarray(t_celsius, dtype=float)
-    if np.any(t <= 0.0):
-        raise ValueError(f"Prokofiev law needs t > 0 deg C, got {t_celsius!r} deg C")
-    return viscosity_ref * (t_ref_celsius / t) ** exponent
+    """Prokofiev temperature law eta0(t) = eta_ref (t_ref / t)^n [Pa s], t in deg C
+    (Yachikov & Vostrikov 2015).
+
+    Parameters
+    ----------
+    t_celsius : float or array
+        Temperature t > 0 [deg C].
+    viscosity_ref : float
+        eta_ref > 0 [Pa s] at ``t_ref_celsius`` > 0 [deg C].
+    exponent : float
+        n [-], finite.
+
+    Raises
+    ------
+    ValueError
+        Naming the argument, its value and unit.
+    """
+    t = require_positive("t_celsius", t_celsius, "deg C (the Prokofiev law needs t > 0)")
+    eta = require_positive("viscosity_ref", viscosity_ref, "Pa s")
+    t_ref = require_positive("t_ref_celsius", t_ref_celsius, "deg C")
+    n = require_finite("exponent", exponent, "dimensionless")
+    return eta * (t_ref / t) ** n
