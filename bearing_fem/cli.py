@@ -298,12 +298,18 @@ def _print_bearing(bearing: Any, result: Any, files: dict[str, Path]) -> None:
     s = result.summary()
     print(bearing.title or bearing.geometry.type)
     loc = s.get("h_min_location") or {}
+    est = s.get("error_estimate") or {}
+
+    def bar(key: str) -> str:
+        e = est.get(key)
+        return f" (estimated error {100 * e:.2g} %)" if e is not None else ""
+
     rows = [("status", f"{s['status']} ({'success' if s['success'] else 'no success'})"),
-            ("friction torque", _fmt(s["friction_torque"], "N m")),
-            ("heat power", _fmt(s["heat_power"], "W")),
-            ("h_min", _fmt(s["h_min"], "m") + (f" (element {loc['element']}, "
-                                                f"{loc['raceway']})" if loc else "")),
-            ("p_max", _fmt(s["p_max"], "Pa"))]
+            ("friction torque", _fmt(s["friction_torque"], "N m") + bar("friction_torque")),
+            ("heat power", _fmt(s["heat_power"], "W") + bar("heat_power")),
+            ("h_min", _fmt(s["h_min"], "m") + bar("h_min")
+             + (f" (element {loc['element']}, {loc['raceway']})" if loc else "")),
+            ("p_max", _fmt(s["p_max"], "Pa") + bar("p_max"))]
     for name, m in s["empirical"].items():
         if m.get("torque") is not None:
             rows.append((f"{name} torque", _fmt(m["torque"], "N m")))

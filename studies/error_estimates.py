@@ -21,14 +21,19 @@ order is not observable. Does it predict the true error?
    the change to a solve on a twice-finer grid. Target: within a factor 3 in at least
    90% of the cases, per quantity. Pairs where both the estimate and the change are
    below ``FLOOR`` (the Newton tolerance's reach) count as agreeing.
-3. **Energy balance** of the same map solves: the heat power uses the conservative
+3. **Bearings**: the error bar of a bearing's friction torque, heat power, h_min and
+   p_max (from its contacts' estimates, ``BearingResult.summary()["error_estimate"]``)
+   against the change to the same bearing with twice-finer contact grids: the 6209 ball
+   bearing at its default 129^2 (against 257^2) and the NNCF 5040 roller bearing on its
+   default line grids (against 2N - 1 nodes, ~80 s); quick: 6209 only.
+4. **Energy balance** of the same map solves: the heat power uses the conservative
    Poiseuille form Q_P = u_m int h dp/dx dA; the discrete physical dissipation
    int h^3 |grad p|^2/(12 eta) dA plus the numerical dissipation of the stabilisation
    must add up to it (the discrete weak form tested with the pressure itself), and Q_P
    must be grid-converged (its change to the twice-finer grid).
 
 Run ``python studies/error_estimates.py OUT [--quick]``; writes ``oracles.csv``,
-``maps.csv``, ``summary.json`` and ``estimates.png`` into OUT.
+``maps.csv``, ``bearings.csv``, ``summary.json`` and ``estimates.png`` into OUT.
 """
 from __future__ import annotations
 
@@ -242,6 +247,67 @@ def run_maps(quick: bool) -> list[dict]:
     return rows
 
 
+#: Bearing checks: (example, contact grid or None for the defaults, quick).
+BEARING_CASES = (("6209", 129, True), ("nncf5040", None, False))
+BEARING_QUANTITIES = ("friction_torque", "heat_power", "h_min", "p_max")
+
+
+def _bearing_on(name: str, nodes: int | None, finer: bool = False):
+    """A shipped bearing example with its contact grids set (``nodes``: point grids n^2;
+    None: the defaults) or twice finer (2n - 1 per direction, or 2N - 1 line nodes)."""
+    from bearing_fem.bearing import load_example
+    from bearing_fem.contacts.line import line_setup
+
+    b = load_example(name)
+    if b.geometry.is_ball:
+        n = nodes or 129
+        n = 2 * n - 1 if finer else n
+        return replace(b, mesh=replace(b.mesh, point_nodes=(n, n)))
+    if not finer:
+        return b
+    from bearing_fem.bearing.contacts import contact_specs
+    from bearing_fem.bearing.kinematics import element_kinematics
+    from bearing_fem.bearing.loads import distribute_loads
+
+    dist = distribute_loads(b)
+    g, op = b.geometry, b.operation
+    kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
+                             dist.alpha_inner, dist.alpha_outer)
+    sizes = {line_setup(sc).disc.x.size for spec in contact_specs(b, dist, kin)
+             if spec.excluded is None for sc in spec.scenes}
+    if len(sizes) != 1:  # one line_nodes for every contact: only "twice finer" if one size
+        raise ValueError(f"{name}: default line grids of {sorted(sizes)} nodes")
+    return replace(b, mesh=replace(b.mesh, line_nodes=2 * sizes.pop() - 1))
+
+
+def run_bearings(quick: bool) -> list[dict]:
+    """Each bearing's estimate against the change to twice-finer contact grids."""
+    from bearing_fem.bearing import solve_bearing
+
+    rows = []
+    for name, nodes, in_quick in BEARING_CASES:
+        if quick and not in_quick:
+            continue
+        coarse = solve_bearing(_bearing_on(name, nodes))
+        fine = solve_bearing(_bearing_on(name, nodes, finer=True))
+        sc, sf = coarse.summary(), fine.summary()
+        row = {"bearing": name, "contacts": f"{nodes}^2" if nodes else "defaults",
+               "status": coarse.status, "fine_status": fine.status,
+               "seconds": coarse.wall_time_s, "fine_seconds": fine.wall_time_s}
+        est = sc.get("error_estimate") or {}
+        for k in BEARING_QUANTITIES:
+            c, f = sc.get(k), sf.get(k)
+            truth = abs(c / f - 1.0) if (c is not None and f) else math.nan
+            row[f"{k}_change"] = truth
+            row[f"{k}_estimate"] = est.get(k)
+            row[f"{k}_agree"] = agree(est.get(k), truth)
+        rows.append(row)
+        print(f"bearing {name} {row['contacts']}: " + "  ".join(
+            f"{k} {row[f'{k}_change']:.1e}/{row[f'{k}_estimate'] or float('nan'):.1e}"
+            for k in BEARING_QUANTITIES), flush=True)
+    return rows
+
+
 def _brief(row: dict) -> str:
     parts = [f"{row['kind']} M={row['M']:g} L={row['L']:g} {row['status']}"]
     for k in QUANTITIES:
@@ -261,8 +327,10 @@ def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dic
     oracles += [kapitsa_case(n) for n in (resolutions["kapitsa"][:1] if quick
                                           else resolutions["kapitsa"])]
     maps = run_maps(quick)
+    bearings = run_bearings(quick)
     _write_csv(outdir / "oracles.csv", oracles)
     _write_csv(outdir / "maps.csv", maps)
+    _write_csv(outdir / "bearings.csv", bearings)
     summary: dict = {"oracle_agreement": {}, "map_agreement": {}, "energy": {}}
     for k in ("p_max", "friction_force", "heat_power"):
         summary["oracle_agreement"][k] = [r[f"{k}_agree"] for r in oracles]
@@ -288,10 +356,12 @@ def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dic
                                               default=math.nan),
             "max_direct_vs_conservative": max((abs(r["direct_vs_conservative"]) for r in sel),
                                               default=math.nan)}
+    summary["bearing_agreement"] = {
+        k: [r[f"{k}_agree"] for r in bearings] for k in BEARING_QUANTITIES}
     summary["seconds"] = time.perf_counter() - t0
     (outdir / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
     _figure(outdir / "estimates.png", maps, oracles)
-    return {"oracles": oracles, "maps": maps, "summary": summary}
+    return {"oracles": oracles, "maps": maps, "bearings": bearings, "summary": summary}
 
 
 def _write_csv(path: Path, rows: list[dict]) -> None:

@@ -133,6 +133,32 @@ def test_sliced_roller_and_reuse():
     assert c["p_max"] >= mid["p_max"] - 1e-9 * mid["p_max"]
 
 
+def test_bearing_error_estimate(r6209):
+    """The bearing's error bars come from the contacts': the torque's is the torque-
+    weighted mean of the contacts' friction estimates (each within the range of those),
+    h_min's that of the contact where h_min lies; above 5 % a warning names them."""
+    s = r6209.summary()
+    est = s["error_estimate"]
+    assert set(est) == {"friction_torque", "heat_power", "h_min", "p_max"}
+    loaded = [c for e in s["elements"] for c in (e["inner"], e["outer"])
+              if c["status"] != "excluded"]
+    fr = [c["error_estimate"]["friction_force"] for c in loaded]
+    assert min(fr) <= est["friction_torque"] <= max(fr), \
+        "a weighted mean of the contacts' friction estimates"
+    heats = [c["heat_power"] for c in loaded]
+    expected = sum(h * c["error_estimate"]["heat_power"] for h, c in zip(heats, loaded)) \
+        / sum(heats)
+    np.testing.assert_allclose(est["heat_power"], expected, rtol=1e-12,
+                               err_msg="heat-power-weighted contact estimates")
+    loc = s["h_min_location"]
+    where = s["elements"][loc["element"]][loc["raceway"]]
+    assert est["h_min"] == where["error_estimate"]["h_min"]
+    high = [k for k, v in est.items() if v > 0.05]
+    warned = [w for w in s["warnings"] if w.startswith("estimated discretisation error")]
+    assert bool(high) == bool(warned) and all(k in warned[0] for k in high), (high, warned)
+    json.dumps(s, allow_nan=False)
+
+
 def test_failed_contacts_are_a_status_not_nan():
     b = small_roller(solver={"max_iterations": 1, "continuation": False,
                              "iteration_budget": 1})
@@ -140,6 +166,7 @@ def test_failed_contacts_are_a_status_not_nan():
     assert not r.success and r.status == "contacts_failed"
     s = r.summary()
     assert s["friction_torque"] is None and s["heat_power"] is None, "no totals from failures"
+    assert s["error_estimate"] is None, "no error bars without totals"
     json.dumps(s, allow_nan=False)
     assert any(e["inner"]["success"] is False for e in s["elements"] if e["in_load_zone"])
 

@@ -47,3 +47,10 @@ def test_quick_study(tmp_path):
             est = row[f"{q}_estimate"]
             assert est is not None and np.isfinite(est) and est >= 0.0, (row["kind"], q)
     assert (tmp_path / "maps.csv").is_file() and (tmp_path / "estimates.png").is_file()
+    (b,) = out["bearings"]
+    assert b["status"] == "converged" and b["fine_status"] == "converged"
+    for k in ("friction_torque", "heat_power"):
+        assert b[f"{k}_agree"], (
+            f"6209 bearing {k}: estimate {b[f'{k}_estimate']:.2e} within a factor 3 of the "
+            f"change to 257^2 contacts {b[f'{k}_change']:.2e} (measured 5.9e-2 vs 3.6e-2)")
+    assert (tmp_path / "bearings.csv").is_file()

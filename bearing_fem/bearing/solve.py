@@ -25,6 +25,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ..errors import SceneError
+from ..post import ERROR_WARNING_THRESHOLD
 from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing
@@ -161,8 +162,10 @@ class BearingResult:
         ``friction_torque`` [N m], ``heat_power`` [W], ``h_min`` [m], ``p_max`` [Pa],
         ``radial_load``, ``axial_load`` [N], ``inner_rpm``, ``elements`` (per element:
         ``azimuth_deg``, ``load`` [N], ``contact_angle_deg``, ``inner``/``outer`` contact
-        summaries ...), ``empirical`` (models' ``torque`` and ``heat_power``), and the
-        per-raceway totals, the energy balance, the locations of h_min and p_max, the
+        summaries ...), ``empirical`` (models' ``torque`` and ``heat_power``),
+        ``error_estimate`` (relative discretisation errors of ``friction_torque``,
+        ``heat_power``, ``h_min`` and ``p_max`` from the contacts' estimates; None when
+        the totals are not formed), and the per-raceway totals, the energy balance, the locations of h_min and p_max, the
         load balance, the load distribution, the kinematics, the film formulas at the
         most loaded element, ``units``, ``version`` and ``bearing``.
         """
@@ -186,6 +189,7 @@ class BearingResult:
             "h_min_location": t.get("h_min_location"),
             "p_max_location": t.get("p_max_location"),
             "film_parameter_min": t.get("film_parameter_min"),
+            "error_estimate": t.get("error_estimate"),
             "elements": self.elements, "empirical": self.empirical,
             "film_formulas": self.films,
         }
@@ -288,6 +292,13 @@ def solve_bearing(bearing: Bearing, *,
         warnings.append(f"{len(excluded)} lightly loaded contact(s) below "
                         f"model.min_load_fraction = {bearing.model.min_load_fraction:g} were "
                         "not solved (see their messages)")
+    est = totals.get("error_estimate") or {}
+    loose = {k: v for k, v in est.items() if v is not None and v > ERROR_WARNING_THRESHOLD}
+    if loose:
+        warnings.append("estimated discretisation error above "
+                        f"{100 * ERROR_WARNING_THRESHOLD:g} %: "
+                        + ", ".join(f"{k} {100 * v:.2g} %" for k, v in loose.items())
+                        + " (finer contact grids: [mesh] line_nodes / point_nodes)")
     eb = totals["energy_balance"]["relative_difference"]
     if eb is not None and abs(eb) > ENERGY_BALANCE_RTOL:
         warnings.append(f"friction torque x omega differs from the contacts' heat power by "

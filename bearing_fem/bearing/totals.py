@@ -22,7 +22,7 @@ Only numpy here.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Mapping, Sequence
 
 import numpy as np
 
@@ -146,8 +146,52 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
         newton_iterations=int(sum(int(s.get("newton_iterations") or 0) for s in sums)),
         wall_time_s=float(sum(float(s.get("wall_time_s") or 0.0) for s in sums)),
         warnings=warnings, slices=len(sums), **extra)
+    out["error_estimate"] = None if failed else _contact_estimate(sums, widths, imax)
     if kind == "point":
         out.pop("slices")
+    return out
+
+
+#: Quantities of the contact and bearing error estimates.
+_ESTIMATED_EXTENSIVE = ("friction_force", "heat_power")
+
+
+def _relative(estimate: Mapping[str, Any] | None, key: str) -> float | None:
+    v = (estimate or {}).get(key)
+    return float(v) if isinstance(v, (int, float)) and math.isfinite(v) else None
+
+
+def weighted_relative_error(values: Sequence[float | None],
+                            errors: Sequence[float | None]) -> float | None:
+    """Relative error of a sum of parts with relative errors ``errors``, assuming the
+    worst case that the parts' errors add (one discretisation, errors of one sign):
+    sum |v_k| e_k / |sum v_k|. None if a part or its error is unknown or the sum is 0."""
+    if any(v is None for v in values) or any(e is None for e in errors):
+        return None
+    total = float(sum(values))
+    if total == 0.0:
+        return None
+    return float(sum(abs(v) * e for v, e in zip(values, errors)) / abs(total))
+
+
+def _contact_estimate(sums: list[dict[str, Any]], widths: list[float],
+                      imax: int) -> dict[str, float | None]:
+    """Relative discretisation errors of a contact's numbers from its scenes' estimates:
+    films and p_max those of the scene that sets them, friction and heat power
+    :func:`weighted_relative_error` over the slices."""
+    ests = [s.get("error_estimate") for s in sums]
+    out: dict[str, float | None] = {}
+    for key in _ESTIMATED_EXTENSIVE:
+        vals = [(_val(s, key) * w if _val(s, key) is not None else None)
+                for s, w in zip(sums, widths)]
+        out[key] = weighted_relative_error(vals, [_relative(e, key) for e in ests])
+    films = [_val(s, "h_min") for s in sums]
+    pmax = [_val(s, "p_max") for s in sums]
+    out["h_min"] = (None if any(f is None for f in films)
+                    else _relative(ests[int(np.argmin(films))], "h_min"))
+    out["p_max"] = (None if any(p is None for p in pmax)
+                    else _relative(ests[int(np.argmax(pmax))], "p_max"))
+    out["h_central"] = _relative(ests[imax], "h_central")
     return out
 
 
@@ -228,6 +272,7 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
                 p_best = (c["p_max"], loc)
     torque = m_in + m_out
     heat = q_in + q_out
+    estimate = _bearing_estimate(rows, race_radius_inner, r, complete, h_best, p_best)
     power = torque * omega
     rel = (power - heat) / heat if heat > 0.0 else None
     sigma = bearing.model.roughness
@@ -249,5 +294,45 @@ def bearing_totals(bearing: Bearing, azimuth: np.ndarray, race_radius_inner: np.
         "p_max": p_best[0] if complete and p_best else None,
         "p_max_location": p_best[1] if complete and p_best else None,
         "film_parameter_min": (h_best[0] / sigma) if (sigma and complete and h_best) else None,
+        "error_estimate": estimate,
         "complete": complete,
     }
+
+
+def _bearing_estimate(rows: list[dict[str, Any]], race_radius_inner: np.ndarray,
+                      element_radius: float, complete: bool, h_best, p_best
+                      ) -> dict[str, float | None] | None:
+    """Relative discretisation errors of the bearing's friction torque, heat power, h_min
+    and p_max from the contacts' estimates (:func:`weighted_relative_error` over the
+    element torques and contact heat powers; the films and p_max of the contact that sets
+    them); None when a contact failed."""
+    if not complete:
+        return None
+    torques: list[float | None] = []
+    torque_errors: list[float | None] = []
+    heats: list[float | None] = []
+    heat_errors: list[float | None] = []
+    by_loc: dict[tuple[int, str], dict[str, Any]] = {}
+    for j, row in enumerate(rows):
+        ci, co = row["inner"], row["outer"]
+        a, b = element_torque(race_radius_inner[j], ci["rx"], co["rx"], element_radius,
+                              ci["rolling_resistance"], co["rolling_resistance"])
+        for part, c in ((a, ci), (b, co)):
+            by_loc[(j, c["raceway"])] = c
+            if c["status"] == "excluded":
+                continue
+            est = c.get("error_estimate")
+            torques.append(part)
+            torque_errors.append(_relative(est, "friction_force"))
+            heats.append(c["heat_power"])
+            heat_errors.append(_relative(est, "heat_power"))
+
+    def at(best, key):
+        if not best:
+            return None
+        loc = best[1]
+        return _relative(by_loc[(loc["element"], loc["raceway"])].get("error_estimate"), key)
+
+    return {"friction_torque": weighted_relative_error(torques, torque_errors),
+            "heat_power": weighted_relative_error(heats, heat_errors),
+            "h_min": at(h_best, "h_min"), "p_max": at(p_best, "p_max")}
