@@ -684,8 +684,9 @@ class MeshSpec:
         Node spacing of an elastic (half-space) line contact under load: ``"uniform"``
         (the default, None) or ``"outlet"``: the grid refined around the outlet pressure
         spike, located by a solve on a coarse uniform grid first
-        (:func:`bearing_fem.contacts.line.solve_line`); same node count as the uniform
-        grid. Not with ``file``.
+        (:func:`bearing_fem.contacts.line.solve_line`); the node count of the uniform
+        grid (rounded up to 4k + 1). Isothermal scenes; not with ``file``. ``"uniform"``
+        is stored as None.
     """
 
     _section = "mesh"
@@ -700,6 +701,8 @@ class MeshSpec:
                                          or self.grading not in GRADINGS):
             raise SceneError(f"mesh.grading must be one of {', '.join(map(repr, GRADINGS))}, "
                              f"got {show_value(self.grading)}")
+        if self.grading == "uniform":  # the default: one scene, one hash, one TOML
+            object.__setattr__(self, "grading", None)
         if self.file is not None:
             self._check_file()
         n = self.nodes
@@ -1039,6 +1042,10 @@ class Scene:
                              f"load.force (N/m); got contact.kind = {self.contact.kind!r}, "
                              f"model.elasticity = {self.model.elasticity!r}"
                              + (", load.gap" if self.load.gap is not None else ""))
+        if self.mesh.grading == "outlet" and self.model.thermal != "none":
+            raise SceneError("mesh.grading = 'outlet' is not available with model.thermal = "
+                             f"{self.model.thermal!r}: the thermal patch solves the film on "
+                             "the uniform grid (remove mesh.grading, or model.thermal)")
         axes = self.mesh.axes()
         if axes is not None and (axes[1] is None) != (self.contact.kind == "line"):
             want = "a 1D mesh" if self.contact.kind == "line" else "quads on a tensor grid"

@@ -153,10 +153,25 @@ def test_bearing_error_estimate(r6209):
     loc = s["h_min_location"]
     where = s["elements"][loc["element"]][loc["raceway"]]
     assert est["h_min"] == where["error_estimate"]["h_min"]
+    for e in s["elements"]:
+        for c in (e["inner"], e["outer"]):
+            assert "error_estimate" in c, "every contact summary, excluded ones included"
+            if c["status"] == "excluded":
+                assert c["error_estimate"] is None
     high = [k for k, v in est.items() if v > 0.05]
     warned = [w for w in s["warnings"] if w.startswith("estimated discretisation error")]
     assert bool(high) == bool(warned) and all(k in warned[0] for k in high), (high, warned)
     json.dumps(s, allow_nan=False)
+
+
+def test_a_contact_without_an_estimate_is_named():
+    """6209 on 65^2 contact grids: the most loaded contact has no coarser levels, so the
+    bearing has no error bars; a warning names the contact (they vanished silently)."""
+    b = load_example("6209")
+    s = solve_bearing(replace(b, mesh=replace(b.mesh, point_nodes=(65, 65)))).summary()
+    assert s["success"] and all(v is None for v in s["error_estimate"].values())
+    (w,) = [w for w in s["warnings"] if w.startswith("no error estimate for friction_torque")]
+    assert "contact(s) 0 inner have none" in w, w
 
 
 def test_failed_contacts_are_a_status_not_nan():

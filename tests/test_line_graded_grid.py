@@ -149,4 +149,37 @@ def test_outlet_grading_is_refused_where_it_has_no_meaning(tmp_path):
     path = write_mesh(MeshLine(outlet_graded_nodes(401)), tmp_path / "g.vtu")
     with pytest.raises(SceneError, match=r"mesh.file replaces mesh.grading"):
         _moes_line({"grading": "outlet", "file": str(path)})
-    assert _moes_line({"grading": "uniform"}).mesh.grading == "uniform"
+    assert _moes_line({"grading": "uniform"}) == _moes_line(), \
+        "'uniform' is the default: the same scene (and hash) as no grading"
+    with pytest.raises(SceneError, match=r"mesh.grading = 'outlet' is not available with "
+                                         r"model.thermal = 'patch'"):
+        _moes_line({"grading": "outlet"}, model={"thermal": "patch"},
+                   thermal={"oil_temperature": 60.0, "exponent": 3.0})
+
+
+def test_outlet_grading_budget_fallback_and_history():
+    """The locator's iterations count against the scene's budget (a budget the locator
+    spends ends before the graded grid; the graded solve's budget message names the
+    scene's); a graded grid that fails falls back to the uniform grid with a warning;
+    history and continuation include the locator's iterations."""
+    import bearing_fem as bf
+
+    ok = bf.solve(_moes_line({"grading": "outlet"}))
+    assert ok.success and len(ok.history) >= ok.newton_iterations, \
+        "every accepted Newton step's residual, locator included"
+    assert sum(its for _, _, its in ok.continuation) == ok.newton_iterations
+    assert any("spike locator" in st for _, st, _ in ok.continuation)
+    spent = bf.solve(_moes_line({"grading": "outlet"}, solver={"iteration_budget": 12}))
+    assert spent.status == "budget_exhausted" and spent.newton_iterations <= 12, spent.message
+    short = bf.solve(_moes_line({"grading": "outlet"}, solver={"iteration_budget": 20}))
+    assert short.status == "budget_exhausted" and short.newton_iterations <= 20
+    assert "the scene's budget is 20 Newton iterations" in short.message, short.message
+    hard = bf.solve(_moes_line({"grading": "outlet"},
+                               solver={"max_iterations": 8, "continuation": False}))
+    assert hard.success, hard.message
+    assert any(w.startswith("mesh.grading = 'outlet': the graded grid failed")
+               for w in hard.warnings), hard.warnings
+    import numpy as np
+
+    steps = np.diff(hard.x)
+    assert steps.max() / steps.min() < 1.0 + 1e-6, "the fallback result is on the uniform grid"

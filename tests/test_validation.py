@@ -25,8 +25,11 @@ def test_helpers_name_the_argument_of_a_string():
 @pytest.mark.parametrize("value, match", [
     ((float("nan"), 0.0), r"boundary_pressure must be finite \(Pa\), got \(nan, 0.0\)"),
     ((float("inf"), 0.0), r"boundary_pressure must be finite"),
-    (("a", 0.0), r"boundary_pressure must be a number in Pa"),
+    (("a", 0.0), r"boundary_pressure must be two pressures \(inlet, outlet\) in Pa"),
+    (("1e5", 0.0), r"boundary_pressure must be two pressures"),
+    ((True, False), r"boundary_pressure must be two pressures"),
     ((1e6,), r"boundary_pressure must be two pressures \(inlet, outlet\) in Pa"),
+    ((-1e6, 0.0), r"boundary_pressure must be >= 0 Pa with model.cavitation = 'reynolds'"),
 ])
 def test_solve_checks_its_end_pressures(value, match):
     """A NaN end pressure gave a 'linear' success with NaN pressures, inf a false
@@ -50,6 +53,12 @@ def test_solve_checks_its_end_pressures(value, match):
         float("nan"), 0.065, 0.0127, 0.0, 0.0), r"inner_speed must be finite \(rad/s\)"),
     (lambda: __import__("bearing_fem.bearing.geometry", fromlist=["x"]).contact_radii(
         0.065, 0.0127, float("inf"), 0.0), r"alpha_inner must be finite \(rad\)"),
+    (lambda: __import__("bearing_fem.bearing.kinematics", fromlist=["x"]).element_kinematics(
+        314.0, 0.065, 0.0127, 40.0, 40.0), r"alpha_inner must lie in \(-pi/2, pi/2\) rad"),
+    (lambda: __import__("bearing_fem.bearing.geometry", fromlist=["x"]).contact_radii(
+        0.065, 0.0127, [0.1, 0.2], [0.1]), r"alpha_inner and alpha_outer must have one shape"),
+    (lambda: __import__("bearing_fem.bearing.geometry", fromlist=["x"]).contact_radii(
+        [0.065, 0.07], 0.0127, 0.1, 0.1), r"pitch_diameter must be one number in m"),
     (lambda: __import__("bearing_fem.bearing.empirical", fromlist=["x"]).torque_to_heat_power(
         float("nan"), 3000.0), r"torque_nmm must be finite \(N mm\)"),
     (lambda: __import__("bearing_fem.physics.rheology", fromlist=["x"]).prokofiev(

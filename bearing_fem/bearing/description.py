@@ -53,6 +53,10 @@ def _optional_positive(obj: Any, name: str, unit: str) -> None:
         field_positive(obj, name, unit)
 
 
+#: Largest crown drop of a crowned roller as a fraction of its diameter: real drops are
+#: micrometres to tens of micrometres (a few 1e-4 D_w); beyond this the value is a unit
+#: slip (millimetres, or micrometres given as millimetres).
+MAX_CROWN_DROP_FRACTION = 0.01
 #: Plausible bearing dimensions [m] (bore, outside, pitch and element diameters, widths
 #: and roller lengths): from miniature bearings (0.6 mm bores, 0.3 mm balls) to slewing
 #: and tunnel-boring bearings of several metres. Beyond it the value is almost surely in
@@ -252,7 +256,13 @@ class Geometry:
         if self.profile == "crowned":
             if self.crown_drop is None:
                 raise SceneError("bearing.crown_drop (m) is required for profile = 'crowned'")
-            field_positive(self, "crown_drop", "m")
+            drop = field_positive(self, "crown_drop", "m")
+            limit = MAX_CROWN_DROP_FRACTION * self.element_diameter
+            if drop > limit:
+                raise SceneError(f"bearing.crown_drop = {drop!r} m exceeds {limit:.3g} m "
+                                 f"({MAX_CROWN_DROP_FRACTION:g} of the roller diameter); "
+                                 "crown drops are micrometres to tens of micrometres, in "
+                                 "metres (e.g. 1.5e-5 for 15 um)")
         elif self.crown_drop is not None:
             raise SceneError(f"bearing.crown_drop applies to profile = 'crowned', got "
                              f"{self.crown_drop!r} m with profile {self.profile!r}")

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import units
-from ..validation import require_finite, require_positive
+from ..validation import require_finite, require_positive, shown
 from .description import Bearing
 
 __all__ = ["ContactGeometry", "contact_geometry", "contact_radii", "reduced_modulus",
@@ -122,20 +122,33 @@ def contact_radii(pitch_diameter: float, element_diameter: float,
     pitch_diameter, element_diameter : float
         d_m > D_w > 0 [m].
     alpha_inner, alpha_outer : float or array
-        Contact angles [rad], finite.
+        Contact angles [rad] in (-pi/2, pi/2), of one shape.
 
     Raises
     ------
     ValueError
         Naming the argument, its value and unit.
     """
+    for name, value in (("pitch_diameter", pitch_diameter),
+                        ("element_diameter", element_diameter)):
+        if np.ndim(value) != 0:
+            raise ValueError(f"{name} must be one number in m, got {shown(value)}")
     dm = require_positive("pitch_diameter", pitch_diameter, "m")
     dw = require_positive("element_diameter", element_diameter, "m")
     if dw >= dm:
         raise ValueError(f"element_diameter must be smaller than pitch_diameter (m), got "
                          f"{dw!r} m >= {dm!r} m")
-    ci = np.cos(require_finite("alpha_inner", alpha_inner, "rad"))
-    co = np.cos(require_finite("alpha_outer", alpha_outer, "rad"))
+    angles = []
+    for name, value in (("alpha_inner", alpha_inner), ("alpha_outer", alpha_outer)):
+        a = require_finite(name, value, "rad")
+        if np.any(np.abs(a) >= 0.5 * math.pi):
+            raise ValueError(f"{name} must lie in (-pi/2, pi/2) rad (a contact angle in "
+                             f"radians, not degrees), got {shown(value)}")
+        angles.append(np.asarray(a))
+    if angles[0].shape != angles[1].shape:
+        raise ValueError(f"alpha_inner and alpha_outer must have one shape, got "
+                         f"{angles[0].shape} and {angles[1].shape}")
+    ci, co = np.cos(angles[0]), np.cos(angles[1])
     return (0.5 * (dm - dw * ci), 0.5 * (dm + dw * co), 0.5 * dw * (1.0 - dw * ci / dm),
             0.5 * dw * (1.0 + dw * co / dm))
 

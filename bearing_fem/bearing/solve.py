@@ -260,6 +260,15 @@ def solve_bearing(bearing: Bearing, *,
         return BearingResult(bearing=bearing, success=False, status="load_distribution_failed",
                              message=f"no ring displacement balances the loads: {exc}",
                              wall_time_s=time.perf_counter() - t0)
+    flipped = np.flatnonzero(np.maximum(np.abs(dist.alpha_inner), np.abs(dist.alpha_outer))
+                             >= 0.5 * math.pi)
+    if flipped.size:
+        j = int(flipped[0])
+        raise SceneError(
+            f"operation.radial_load = {float(op.radial_load)!r} N and operation.axial_load = "
+            f"{float(op.axial_load)!r} N displace the rings so far that element {j}'s contact "
+            f"angle is {math.degrees(float(dist.alpha_inner[j])):.4g} deg (>= 90 deg): no "
+            "rolling bearing carries that load; check the loads' unit (N)")
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
                              dist.alpha_inner, dist.alpha_outer)
     specs = contact_specs(bearing, dist, kin)
@@ -293,6 +302,16 @@ def solve_bearing(bearing: Bearing, *,
                         f"model.min_load_fraction = {bearing.model.min_load_fraction:g} were "
                         "not solved (see their messages)")
     est = totals.get("error_estimate") or {}
+    unknown = [k for k, v in est.items() if v is None]
+    if unknown:
+        without = [f"{e['index']} {c['raceway']}" for e in elements
+                   for c in (e["inner"], e["outer"])
+                   if c["status"] != "excluded" and (c.get("error_estimate") is None or any(
+                       v is None for v in c["error_estimate"].values()))]
+        warnings.append(f"no error estimate for {', '.join(unknown)}: contact(s) "
+                        f"{', '.join(without[:4])}{' ...' if len(without) > 4 else ''} have "
+                        "none (their grids have no two coarser levels, e.g. point grids of "
+                        "65^2: use finer contact grids)")
     loose = {k: v for k, v in est.items() if v is not None and v > ERROR_WARNING_THRESHOLD}
     if loose:
         warnings.append("estimated discretisation error above "

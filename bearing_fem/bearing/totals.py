@@ -80,7 +80,7 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
                    heat_power=0.0, film_parameter=None, h_central_formula=None,
                    h_central_formula_name=None, newton_iterations=0, wall_time_s=0.0,
                    warnings=[], slices=0, heat_power_poiseuille_direct=0.0,
-                   heat_power_stabilisation=0.0)
+                   heat_power_stabilisation=0.0, error_estimate=None)
         return out
     sums = [results[k].summary() for k in spec.keys]
     kind = "point" if spec.ry is not None else "line"

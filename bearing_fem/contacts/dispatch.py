@@ -72,7 +72,7 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
                                           or scene.model.thermal != "none"):
         raise SceneError("boundary_pressure (Pa) applies to isothermal line contacts only")
     if boundary_pressure is not None:
-        boundary_pressure = _end_pressures(boundary_pressure)
+        boundary_pressure = _end_pressures(boundary_pressure, scene.model.cavitation)
     with np.errstate(all="ignore"), warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         result = _route(scene, boundary_pressure, progress)
@@ -84,12 +84,20 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
     return result
 
 
-def _end_pressures(value: Any) -> tuple[float, float]:
-    """``boundary_pressure`` as two finite floats [Pa], or SceneError naming it."""
-    values = require_finite("boundary_pressure", value, "Pa", error=SceneError)
-    if np.ndim(values) != 1 or np.size(values) != 2:
+def _end_pressures(value: Any, cavitation: str) -> tuple[float, float]:
+    """``boundary_pressure`` as two finite floats [Pa] (>= 0 with Reynolds cavitation,
+    whose pressure is never below the cavity's, 0), or SceneError naming it."""
+    if (not isinstance(value, (tuple, list, np.ndarray)) or len(value) != 2
+            or any(isinstance(v, (bool, np.bool_, str, bytes)) for v in value)):
         raise SceneError(f"boundary_pressure must be two pressures (inlet, outlet) in Pa, "
                          f"got {shown(value)}")
+    values = require_finite("boundary_pressure", value, "Pa", error=SceneError)
+    if np.ndim(values) != 1:
+        raise SceneError(f"boundary_pressure must be two pressures (inlet, outlet) in Pa, "
+                         f"got {shown(value)}")
+    if cavitation == "reynolds" and np.any(values < 0.0):
+        raise SceneError(f"boundary_pressure must be >= 0 Pa with model.cavitation = "
+                         f"'reynolds' (the cavity pressure is 0), got {shown(value)}")
     return float(values[0]), float(values[1])
 
 

@@ -39,7 +39,7 @@ from ..errors import SceneError
 from ..formulas import line_central_film_moes
 from ..mesh import every_other, outlet_graded_nodes
 from ..numerics.fe import QuadratureOperators, quadrature_operators
-from ..numerics.newton import ForcingTerm, gmres_right
+from ..numerics.newton import BUDGET_STATUSES, ForcingTerm, gmres_right
 from ..physics.elasticity import (UNIFORMITY_TOLERANCE, GradedHalfSpaceLine, HalfSpaceLine,
                                   LocalCompliance, RigidCompliance,
                                   kodnir_local_coefficient, spacing_deviation)
@@ -695,6 +695,9 @@ class LineModel:
         self.scene = scene
         self.bp = tuple(float(v) for v in boundary_pressure)
         self.x_nodes = x_nodes
+        #: (x [m], p [Pa], central film [m]) of a solution on another grid to start
+        #: from instead of the Hertzian guess (the outlet-grading spike locator's)
+        self.start: tuple[np.ndarray, np.ndarray, float] | None = None
         self.setup = line_setup(scene, x_nodes=x_nodes)
         piezo = scene.lubricant.effective_piezo > 0.0
         self.continuation_parameter = "alpha" if piezo else "speed"
@@ -714,7 +717,9 @@ class LineModel:
         return self._setups[nodes]
 
     def levels(self) -> list[LineSetup]:
-        return [self.level(n) for n in line_levels(self.setup.disc.x.size,
+        # started from a solution on another grid (``start``): no level coarser than it
+        coarsest = max(COARSEST_NODES, self.start[0].size if self.start is not None else 0)
+        return [self.level(n) for n in line_levels(self.setup.disc.x.size, coarsest,
                                                    max_coarsenings=self._max_coarsenings())]
 
     def _max_coarsenings(self) -> int | None:
@@ -772,6 +777,8 @@ class LineModel:
         speed 100^(1-s) u_m (thicker than the target's)."""
         scene = self.scene
         x = level.disc.x
+        if self.start is not None and s == 1.0:
+            return self._from_start(level, problem)
         R = scene.contact.rx
         lub = scene.lubricant
         if scene.load.force is not None and scene.model.elasticity != "rigid":
@@ -802,6 +809,17 @@ class LineModel:
                                            scene.kinematics.mean_speed, lub.viscosity,
                                            scene.model.cavitation)
         return problem.pack(q, h0)
+
+    def _from_start(self, level: LineSetup, problem: LineProblem) -> np.ndarray:
+        """Unknowns interpolated from ``start`` = (x [m], p [Pa], central film [m]), a
+        solution of the same scene on another grid (the spike locator's)."""
+        xs, ps, hc = self.start
+        p = np.interp(level.disc.x, xs, ps)
+        p[[0, -1]] = problem.p_bc[[0, -1]]
+        if not problem.has_h0:
+            return problem.pack(p, 0.0)
+        h0 = hc - float(np.interp(0.0, level.disc.x, problem.g_nodes + problem.displacement(p)))
+        return problem.pack(p, h0)
 
     def transfer(self, z: np.ndarray, coarse: LineProblem, fine: LineProblem) -> np.ndarray:
         """Interpolate a solution to another grid of the same interval (same film at
@@ -947,21 +965,33 @@ def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = 
     return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress))
 
 
-#: ``mesh.grading = "outlet"``: node count of the uniform grid whose solution locates the
-#: outlet spike (its spacing, 0.015 b on the default [-4.5, 1.5] b, is well below the
-#: refinement width), and the refinement of :func:`bearing_fem.mesh.outlet_graded_nodes`:
-#: density ratio and width [b] (the study of docs/line_contact.md, "Graded grids").
+#: ``mesh.grading = "outlet"``: the uniform grid whose solution locates the outlet spike
+#: has a spacing of at most SPIKE_LOCATOR_SPACING Hertz half-widths (a quarter of the
+#: refinement width), with SPIKE_LOCATOR_NODES to SPIKE_LOCATOR_MAX_NODES nodes (401 on
+#: the default [-4.5, 1.5] b: 0.015 b; 2001 on the long inlets of light loads); the
+#: refinement of :func:`bearing_fem.mesh.outlet_graded_nodes`: density ratio and width [b]
+#: (the study of docs/line_contact.md, "Graded grids").
+SPIKE_LOCATOR_SPACING = 0.025
 SPIKE_LOCATOR_NODES = 401
+SPIKE_LOCATOR_MAX_NODES = 2001
 OUTLET_GRADING_RATIO = 9.0
 OUTLET_GRADING_WIDTH = 0.1
 
 
-def locate_outlet_spike(scene) -> tuple[float | None, Result]:
+def locator_nodes(scene: Scene) -> int:
+    """Node count of the uniform spike-locator grid of a scene (see
+    :data:`SPIKE_LOCATOR_SPACING`)."""
+    setup = line_setup(scene)
+    width = float(setup.disc.x[-1] - setup.disc.x[0]) / setup.x_unit
+    n = 4 * math.ceil(width / SPIKE_LOCATOR_SPACING / 4) + 1
+    return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
+
+
+def locate_outlet_spike(scene: Scene) -> tuple[float | None, Result]:
     """Where the outlet constriction of an elastic line scene lies: x of the smallest
-    film of a solve on a uniform grid of :data:`SPIKE_LOCATOR_NODES` nodes over the
-    scene's domain, in Hertz half-widths [-] (None if that solve failed), and that
-    result."""
-    mesh = replace(scene.mesh, grading=None, nodes=SPIKE_LOCATOR_NODES)
+    film of a solve on a uniform grid of :func:`locator_nodes` nodes over the scene's
+    domain, in Hertz half-widths [-] (None if that solve failed), and that result."""
+    mesh = replace(scene.mesh, grading=None, nodes=locator_nodes(scene))
     coarse = solve_line(replace(scene, mesh=mesh))
     if not coarse.success:
         return None, coarse
@@ -969,10 +999,10 @@ def locate_outlet_spike(scene) -> tuple[float | None, Result]:
     return float(coarse.x[int(np.argmin(coarse.film))] / b), coarse
 
 
-def outlet_graded_grid(scene, centre: float) -> np.ndarray:
-    """Nodes [Hertz half-widths] of ``scene``'s grid (its node count and domain) refined
-    around x = ``centre`` b by :func:`bearing_fem.mesh.outlet_graded_nodes`; the node count
-    rounded up to 4k + 1 so that the two coarser levels nest."""
+def outlet_graded_grid(scene: Scene, centre: float) -> np.ndarray:
+    """Nodes [Hertz half-widths] of ``scene``'s grid (its domain, and its node count
+    rounded up to 4k + 1 so that the two coarser levels nest) refined around
+    x = ``centre`` b by :func:`bearing_fem.mesh.outlet_graded_nodes`."""
     setup = line_setup(scene)
     x = setup.disc.x / setup.x_unit
     n = 4 * math.ceil((x.size - 1) / 4) + 1
@@ -981,30 +1011,57 @@ def outlet_graded_grid(scene, centre: float) -> np.ndarray:
                                width=OUTLET_GRADING_WIDTH, ratio=OUTLET_GRADING_RATIO)
 
 
-def _solve_outlet_graded(scene, bp, t0: float, progress) -> Result:
+def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
     """``mesh.grading = "outlet"``: locate the spike on a coarse uniform grid, then solve on
-    the grid refined there; the locator's iterations and time count in the result (and
-    against ``solver.iteration_budget`` and ``time_limit``)."""
+    the grid refined there, started from the locator's solution; if the graded grid
+    fails, the uniform grid (with a warning). The locator's iterations and time count in
+    the result and against ``solver.iteration_budget`` and ``time_limit``."""
     centre, coarse = locate_outlet_spike(scene)
+    n_loc = coarse.x.size
     if centre is None:
-        message = (f"mesh.grading = 'outlet': the solve on a uniform grid of "
-                   f"{SPIKE_LOCATOR_NODES} nodes that locates the outlet spike ended with "
-                   f"{coarse.status}: {coarse.message}")
+        message = (f"mesh.grading = 'outlet': the solve on a uniform grid of {n_loc} nodes "
+                   f"that locates the outlet spike ended with {coarse.status}: "
+                   f"{coarse.message}")
         return replace(coarse, scene=scene, message=message,
                        wall_time_s=time.perf_counter() - t0)
     solver = scene.solver
-    spent = coarse.newton_iterations
-    left = dict(iteration_budget=max(1, solver.iteration_budget - spent))
+    spent, spent_s = coarse.newton_iterations, time.perf_counter() - t0
+    limits = (f"{solver.iteration_budget} Newton iterations"
+              + (f", time limit {solver.time_limit:g} s" if solver.time_limit else ""))
+    located = (f"the outlet spike was located at x = {centre:.4g} b in {spent} Newton "
+               f"iterations and {spent_s:.3g} s on {n_loc} uniform nodes")
+    if spent >= solver.iteration_budget or (solver.time_limit is not None
+                                            and spent_s >= solver.time_limit):
+        status = "budget_exhausted" if spent >= solver.iteration_budget else "time_limit"
+        return replace(coarse, scene=scene, success=False, status=status,
+                       error_estimate=None, wall_time_s=spent_s,
+                       message=f"{status}: {located}, which spent the scene's budget "
+                               f"({limits}) before the graded grid was solved")
+    left = dict(iteration_budget=solver.iteration_budget - spent)
     if solver.time_limit is not None:
-        left["time_limit"] = max(1e-3, solver.time_limit - (time.perf_counter() - t0))
+        left["time_limit"] = solver.time_limit - spent_s
     graded = replace(scene, solver=replace(solver, **left))
     model = LineModel(graded, bp, x_nodes=outlet_graded_grid(scene, centre))
-    res = rigid_barus_beyond_limit(solve_newton_model(
-        model, graded, t0, progress=progress,
-        prefix=f"grid refined at the outlet spike, x = {centre:.4g} b "
-               f"(located in {spent} Newton iterations on {SPIKE_LOCATOR_NODES} uniform "
-               "nodes); "))
-    return replace(res, scene=scene, newton_iterations=res.newton_iterations + spent)
+    model.start = (coarse.x, coarse.pressure, float(np.interp(0.0, coarse.x, coarse.film)))
+    res = solve_newton_model(model, graded, t0, progress=progress,
+                             prefix=f"grid refined at the outlet spike; {located}; ")
+    if not res.success and res.status not in BUDGET_STATUSES:
+        uniform = replace(scene, mesh=replace(scene.mesh, grading=None), solver=replace(
+            solver, **left))
+        fallback = solve_line(uniform, boundary_pressure=bp, progress=progress)
+        note = (f"mesh.grading = 'outlet': the graded grid failed ({res.status}: "
+                f"{res.message}); the result is on the uniform grid")
+        res = replace(fallback, newton_iterations=fallback.newton_iterations
+                      + res.newton_iterations, warnings=[note] + fallback.warnings)
+    elif res.status in BUDGET_STATUSES:
+        res = replace(res, message=f"{res.message} (the graded solve's share; the scene's "
+                                   f"budget is {limits}, and {located})")
+    return replace(res, scene=scene, newton_iterations=res.newton_iterations + spent,
+                   wall_time_s=time.perf_counter() - t0,
+                   history=list(coarse.history) + list(res.history),
+                   continuation=[(s_, f"{st} (spike locator)", its)
+                                 for s_, st, its in coarse.continuation]
+                   + list(res.continuation))
 
 
 #: alpha p beyond which the reduced pressure q = (1 - exp(-alpha p))/alpha equals 1/alpha
