@@ -4,8 +4,9 @@ contradict itself, call an unphysical number a success, or overrun its budget?
 Question
     For a few hundred generated scenes -- structural garbage (wrong types, unknown keys,
     missing sections, broken TOML, binary files), extreme values, sliding line and point
-    contacts, thermal line contacts, point contacts with a traction model, and rigid
-    prescribed-gap contacts on both sides of Kapitsa's existence limit -- does every run
+    contacts, thermal line contacts, point contacts with a traction model, rigid
+    prescribed-gap contacts on both sides of Kapitsa's existence limit, and line contacts
+    on outlet-graded grids (``mesh.grading = "outlet"``) -- does every run
     of ``bearing-fem solve SCENE --out DIR`` end in an orderly way?
 
 Scene
@@ -64,6 +65,7 @@ COUNTS = {
     "point-traction": (25, 3),
     "thermal": (30, 3),
     "rigid-gap": (45, 7),
+    "outlet-grading": (20, 2),
 }
 #: Margin on a stated time limit: factor and seconds (see the module docstring).
 TIME_FACTOR, TIME_SLACK = 1.25, 1.0
@@ -199,6 +201,20 @@ def gen_point_traction(rng: random.Random, quick: bool) -> tuple[str, dict]:
     data["kinematics"] = _speeds(rng, srr)
     data["traction"] = _traction(rng) or {"model": "eyring"}
     return f"point SRR {srr:g}, traction {data['traction']['model']}", data
+
+
+def gen_outlet_grading(rng: random.Random, quick: bool) -> tuple[str, dict]:
+    """A half-space line contact on the grid refined at its outlet spike (the spike
+    located by a uniform solve first: both count against the budget), sometimes
+    sliding."""
+    data = line_elastic(rng, quick)
+    data["model"]["elasticity"] = "half-space"
+    data["mesh"] = {"grading": "outlet", "nodes": rng.choice([201, 401, 801])}
+    srr = rng.choice([0.0, 0.0, 0.3, 1.0])
+    if srr:
+        data["kinematics"] = _speeds(rng, srr)
+        data["traction"] = {"model": "eyring-limiting"}
+    return f"line outlet grading, SRR {srr:g}", data
 
 
 def gen_thermal(rng: random.Random, quick: bool) -> tuple[str, dict]:
@@ -354,6 +370,7 @@ def _garbage(rng: random.Random, quick: bool) -> tuple[str, bytes]:
 GENERATORS: dict[str, Callable[[random.Random, bool], tuple[str, dict]]] = {
     "extreme": gen_extreme, "elastic": gen_elastic, "sliding": gen_sliding,
     "point-traction": gen_point_traction, "thermal": gen_thermal, "rigid-gap": gen_rigid_gap,
+    "outlet-grading": gen_outlet_grading,
 }
 
 
