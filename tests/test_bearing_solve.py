@@ -164,6 +164,28 @@ def test_bearing_error_estimate(r6209):
     json.dumps(s, allow_nan=False)
 
 
+def test_roller_contacts_on_outlet_graded_grids():
+    """[mesh] line_grading = 'outlet' passes to every line-contact scene; refused for
+    ball bearings (the scene option is for line contacts)."""
+    b = small_roller(mesh={"line_nodes": 801, "line_grading": "outlet"})
+    r = solve_bearing(b)
+    assert r.success, r.message
+    uni = solve_bearing(small_roller(mesh={"line_nodes": 801}))
+    for spec in r.specs:
+        if spec.excluded is None:
+            assert all(sc.mesh.grading == "outlet" for sc in spec.scenes)
+    j = r.most_loaded_element()
+    assert "grid refined at the outlet spike" in r.elements[j]["inner"]["message"]
+    np.testing.assert_allclose(r.totals["friction_torque"], uni.totals["friction_torque"],
+                               rtol=0.01, err_msg="same torque within the estimated errors "
+                                                  "(0.2 %) of the uniform grid, with margin")
+    d = load_example("6209").to_dict()
+    d["mesh"] = {"line_grading": "outlet"}
+    with pytest.raises(SceneError, match=r"mesh.line_grading = 'outlet' applies to the line "
+                                         r"contacts of roller bearings"):
+        Bearing.from_dict(d)
+
+
 def test_a_contact_without_an_estimate_is_named():
     """6209 on 65^2 contact grids: the most loaded contact has no coarser levels, so the
     bearing has no error bars; a warning names the contact (they vanished silently)."""

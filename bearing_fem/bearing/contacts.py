@@ -166,7 +166,8 @@ def _scene(bearing: Bearing, kind: str, rx: float, ry: float | None, length: flo
                  model=Model(elasticity=b.model.elasticity, cavitation="reynolds",
                              thermal=b.model.thermal),
                  mesh=MeshSpec(nodes=nodes, x_range=mesh.x_range,
-                               y_range=mesh.y_range if kind == "point" else None),
+                               y_range=mesh.y_range if kind == "point" else None,
+                               grading=mesh.line_grading if kind == "line" else None),
                  solver=b.solver, thermal=thermal, traction=b.traction)
 
 

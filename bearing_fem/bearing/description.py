@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import (SolverSpec, Traction, field_bool, field_choice, field_integer,
+from ..scene import (GRADINGS, SolverSpec, Traction, field_bool, field_choice, field_integer,
                      field_nonnegative, field_number, field_piezo, field_piezo_table,
                      field_poisson, field_positive, field_range, parse_toml, read_text_file,
                      sections_from_dict, sections_to_dict)
@@ -531,6 +531,10 @@ class BearingMesh:
         (nx, ny) of each point-contact scene.
     x_range, y_range : (float, float) or None
         Domain in Hertz half-widths (``y_range``: point contacts).
+    line_grading : {"uniform", "outlet"} or None
+        Node spacing of each line-contact scene (``mesh.grading`` of a scene: "outlet"
+        refines the grid at the outlet spike, docs/line_contact.md "Automatic grading");
+        half-space, isothermal roller bearings only. None: uniform.
     """
 
     _section = "mesh"
@@ -538,8 +542,13 @@ class BearingMesh:
     point_nodes: tuple[int, int] | None = None
     x_range: tuple[float, float] | None = None
     y_range: tuple[float, float] | None = None
+    line_grading: str | None = None
 
     def __post_init__(self) -> None:
+        if self.line_grading is not None:
+            field_choice(self, "line_grading", GRADINGS)
+            if self.line_grading == "uniform":
+                object.__setattr__(self, "line_grading", None)
         if self.line_nodes is not None:
             field_integer(self, "line_nodes", 9, 20001, "nodes")
         n = self.point_nodes
@@ -730,6 +739,12 @@ class Bearing:
             raise SceneError("mesh.line_nodes applies to roller bearings; use mesh.point_nodes")
         if self.mesh.y_range is not None and not g.is_ball:
             raise SceneError("mesh.y_range applies to point contacts (ball bearings) only")
+        if self.mesh.line_grading == "outlet" and (
+                g.is_ball or model.elasticity != "half-space" or model.thermal != "none"):
+            raise SceneError("mesh.line_grading = 'outlet' applies to the line contacts of "
+                             "roller bearings with model.elasticity = 'half-space' and "
+                             f"model.thermal = 'none'; got {g.type!r}, model.elasticity = "
+                             f"{model.elasticity!r}, model.thermal = {model.thermal!r}")
 
     # ------------------------------------------------------------------------------
     @classmethod
