@@ -73,6 +73,11 @@ def test_export_bearing_files(result, tmp_path):
     assert len(rows) == 13 and rows[0]["load_N"] and "inner_h_min_m" in rows[0]
     unloaded = [r for r in rows if r["in_load_zone"] == "False"]
     assert unloaded and unloaded[0]["inner_h_min_m"] == "", "undefined numbers are empty"
+    loaded = rows[j]
+    est = result.elements[j]["inner"]["error_estimate"]
+    assert float(loaded["inner_friction_force_rel_error"]) == pytest.approx(
+        est["friction_force"], rel=1e-12), "each contact's error bars in the element table"
+    assert unloaded[0]["inner_friction_force_rel_error"] == "", "none for an excluded contact"
     contact = files[f"contact_{j:03d}_inner"]
     assert {p.name for p in contact.iterdir()} == {"summary.json", "result.h5", "fields.vtu"}
     vtm = files["vtm"].read_text()

@@ -144,6 +144,7 @@ class BearingResult:
                    "torque_N_m": e.get("torque"), "heat_power_W": e.get("heat_power")}
             for race in ("inner", "outer"):
                 c = e[race]
+                est = c.get("error_estimate") or {}
                 row.update({
                     f"{race}_status": c["status"], f"{race}_h_min_m": c["h_min"],
                     f"{race}_h_central_m": c["h_central"], f"{race}_p_max_Pa": c["p_max"],
@@ -152,6 +153,10 @@ class BearingResult:
                     f"{race}_entrainment_speed_m_s": c["entrainment_speed"],
                     f"{race}_film_parameter": c["film_parameter"],
                     f"{race}_newton_iterations": c["newton_iterations"]})
+                # relative discretisation errors of the contact's numbers (error bars)
+                row.update({f"{race}_{k}_rel_error": est.get(k)
+                            for k in ("h_min", "h_central", "p_max", "friction_force",
+                                      "heat_power")})
             rows.append(row)
         return rows
 
