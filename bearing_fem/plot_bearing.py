@@ -113,7 +113,8 @@ def plot_films(result: Any, path: str | Path) -> Path:
 
 
 def plot_torque_comparison(result: Any, path: str | Path) -> Path:
-    """Bar chart: EHL friction torque (inner + outer contacts) and the empirical models."""
+    """Bar chart: EHL friction torque (inner + outer contacts, with its estimated
+    discretisation error as an error bar) and the empirical models."""
     plt = _pyplot()
     t = result.totals
     names, vals = [], []
@@ -122,6 +123,11 @@ def plot_torque_comparison(result: Any, path: str | Path) -> Path:
         ax.bar(["EHL (this solve)"], [t["friction_torque_inner"]], color="C0", label="inner")
         ax.bar(["EHL (this solve)"], [t["friction_torque_outer"]],
                bottom=[t["friction_torque_inner"]], color="C1", label="outer")
+        rel = (t.get("error_estimate") or {}).get("friction_torque")
+        if rel is not None:  # the estimated discretisation error of the total
+            ax.errorbar(["EHL (this solve)"], [t["friction_torque"]],
+                        yerr=[abs(t["friction_torque"]) * rel], fmt="none", ecolor="k",
+                        capsize=6, label=f"estimated error {100 * rel:.2g} %")
     for name, m in result.empirical.items():
         if m.get("torque") is not None:
             names.append(name.replace("_", " "))
