@@ -116,8 +116,12 @@ def test_outlet_grading_locates_the_spike_and_refines_there():
         f"refined where the film is smallest (centre {x_fine:.3e} m, h_min at {x_hmin:.3e} m)"
     assert steps.max() / steps.min() > 5, "graded (density ratio 9)"
     assert "grid refined at the outlet spike" in gra.message
-    assert gra.newton_iterations > uni.newton_iterations // 2, \
-        "the locator's iterations are counted"
+    import re
+
+    located = int(re.search(r"located at x = \S+ b in (\d+) Newton", gra.message).group(1))
+    assert located == sum(its for _, st, its in gra.continuation if "spike locator" in st) > 0
+    assert gra.newton_iterations == sum(its for *_, its in gra.continuation), \
+        "the locator's iterations are counted with the graded solve's"
     eu, eg = uni.error_estimate, gra.error_estimate
     assert eg["h_min"] < 0.1 * eu["h_min"], \
         f"h_min estimate {eg['h_min']:.2e} vs uniform {eu['h_min']:.2e} (measured 3e-6 vs 2e-3)"
@@ -177,9 +181,35 @@ def test_outlet_grading_budget_fallback_and_history():
     hard = bf.solve(_moes_line({"grading": "outlet"},
                                solver={"max_iterations": 8, "continuation": False}))
     assert hard.success, hard.message
+    assert hard.newton_iterations == sum(its for *_, its in hard.continuation), \
+        "the failed graded attempt's iterations are recorded and counted"
+    assert "the graded grid failed" in hard.message
+    for budget in (40, 50):  # the fallback overran the budget (59 iterations)
+        capped = bf.solve(_moes_line({"grading": "outlet"}, solver={
+            "max_iterations": 8, "continuation": False, "iteration_budget": budget}))
+        assert capped.newton_iterations <= budget, (budget, capped.newton_iterations)
     assert any(w.startswith("mesh.grading = 'outlet': the graded grid failed")
                for w in hard.warnings), hard.warnings
     import numpy as np
 
     steps = np.diff(hard.x)
     assert steps.max() / steps.min() < 1.0 + 1e-6, "the fallback result is on the uniform grid"
+
+
+def test_outlet_grading_locator_uses_the_end_pressures():
+    """With a high inlet pressure the constriction moves upstream (0.89 b instead of
+    0.975 b): the locator solved with zero end pressures refined the wrong place and took
+    230 Newton iterations (or fell back to the uniform grid)."""
+    import numpy as np
+
+    import bearing_fem as bf
+
+    bp = (1e8, 0.0)
+    uni = bf.solve(_moes_line(), boundary_pressure=bp)
+    gra = bf.solve(_moes_line({"grading": "outlet"}), boundary_pressure=bp)
+    assert gra.success and not any("graded grid failed" in w for w in gra.warnings)
+    steps = np.diff(gra.x)
+    x_fine = gra.x[np.argmin(steps)]
+    x_hmin = uni.x[np.argmin(uni.film)]
+    assert abs(x_fine - x_hmin) < 0.02 * (gra.x[-1] - gra.x[0]), (x_fine, x_hmin)
+    assert gra.newton_iterations < 80, f"{gra.newton_iterations} (was 230)"

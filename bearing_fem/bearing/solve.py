@@ -315,8 +315,8 @@ def solve_bearing(bearing: Bearing, *,
                        v is None for v in c["error_estimate"].values()))]
         warnings.append(f"no error estimate for {', '.join(unknown)}: contact(s) "
                         f"{', '.join(without[:4])}{' ...' if len(without) > 4 else ''} have "
-                        "none (their grids have no two coarser levels, e.g. point grids of "
-                        "65^2: use finer contact grids)")
+                        "none (no coarser grid of theirs converged, or their grid cannot be "
+                        "halved, e.g. point grids of 65^2: use finer contact grids)")
     loose = {k: v for k, v in est.items() if v is not None and v > ERROR_WARNING_THRESHOLD}
     if loose:
         warnings.append("estimated discretisation error above "

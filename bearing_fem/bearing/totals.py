@@ -163,9 +163,22 @@ def _relative(estimate: Mapping[str, Any] | None, key: str) -> float | None:
 
 def weighted_relative_error(values: Sequence[float | None],
                             errors: Sequence[float | None]) -> float | None:
-    """Relative error of a sum of parts with relative errors ``errors``, assuming the
-    worst case that the parts' errors add (one discretisation, errors of one sign):
-    sum |v_k| e_k / |sum v_k|. None if a part or its error is unknown or the sum is 0."""
+    """Relative error of a sum of parts, assuming that the parts' errors add (one
+    discretisation, errors of one sign): sum |v_k| e_k / |sum v_k|.
+
+    Parameters
+    ----------
+    values : sequence of float or None
+        The parts v_k (any one unit: N m, W, N).
+    errors : sequence of float or None
+        Their relative errors e_k [-].
+
+    Returns
+    -------
+    float or None
+        The relative error of the sum [-]; None if a part or its error is unknown or the
+        sum is 0.
+    """
     if any(v is None for v in values) or any(e is None for e in errors):
         return None
     total = float(sum(values))

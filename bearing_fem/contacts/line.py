@@ -548,14 +548,24 @@ def kodnir_coefficient(scene) -> float:
     return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
 
 
-def line_setup(scene, nodes: int | None = None,
+def line_setup(scene: Scene, nodes: int | None = None,
                x_nodes: np.ndarray | None = None) -> LineSetup:
     """Reference scales, default mesh and compliance operator of a line scene.
 
-    ``nodes`` overrides the node count (grid sequencing) on the same interval;
-    ``x_nodes`` (increasing, in units of the length unit: Hertz half-widths when elastic
-    and loaded) replaces the grid as a ``mesh.file`` would (every other node of it for
-    coarser levels).
+    Parameters
+    ----------
+    scene : Scene
+        A line scene.
+    nodes : int, optional
+        Overrides the node count (grid sequencing) on the same interval.
+    x_nodes : ndarray, optional
+        Increasing nodes in units of the length unit (Hertz half-widths when elastic and
+        loaded, else sqrt(2 R h0)) that replace the grid as a ``mesh.file`` would (every
+        other node of it for coarser levels).
+
+    Returns
+    -------
+    LineSetup
     """
     R = scene.contact.rx
     lub, kin, model = scene.lubricant, scene.kinematics, scene.model
@@ -686,11 +696,14 @@ class LineModel:
         ``contact.kind == "line"``.
     boundary_pressure : (float, float)
         Dirichlet pressures at the inlet and outlet ends [Pa].
+    x_nodes : ndarray, optional
+        The grid's nodes in units of the length unit (see :func:`line_setup`); None: the
+        scene's own grid.
     """
 
     settings = LINE_DRIVER
 
-    def __init__(self, scene, boundary_pressure: tuple[float, float] = (0.0, 0.0),
+    def __init__(self, scene: Scene, boundary_pressure: tuple[float, float] = (0.0, 0.0),
                  x_nodes: np.ndarray | None = None) -> None:
         self.scene = scene
         self.bp = tuple(float(v) for v in boundary_pressure)
@@ -968,7 +981,8 @@ def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = 
 #: ``mesh.grading = "outlet"``: the uniform grid whose solution locates the outlet spike
 #: has a spacing of at most SPIKE_LOCATOR_SPACING Hertz half-widths (a quarter of the
 #: refinement width), with SPIKE_LOCATOR_NODES to SPIKE_LOCATOR_MAX_NODES nodes (401 on
-#: the default [-4.5, 1.5] b: 0.015 b; 2001 on the long inlets of light loads); the
+#: the default [-4.5, 1.5] b: 0.015 b; the cap makes it coarser on domains longer than
+#: 50 b, the long inlets of light loads); the
 #: refinement of :func:`bearing_fem.mesh.outlet_graded_nodes`: density ratio and width [b]
 #: (the study of docs/line_contact.md, "Graded grids").
 SPIKE_LOCATOR_SPACING = 0.025
@@ -979,20 +993,49 @@ OUTLET_GRADING_WIDTH = 0.1
 
 
 def locator_nodes(scene: Scene) -> int:
-    """Node count of the uniform spike-locator grid of a scene (see
-    :data:`SPIKE_LOCATOR_SPACING`)."""
+    """Node count of the uniform spike-locator grid of a scene.
+
+    Parameters
+    ----------
+    scene : Scene
+        An elastic line scene under load.
+
+    Returns
+    -------
+    int
+        4k + 1 nodes giving a spacing of at most :data:`SPIKE_LOCATOR_SPACING` Hertz
+        half-widths over the scene's domain, between :data:`SPIKE_LOCATOR_NODES` and
+        :data:`SPIKE_LOCATOR_MAX_NODES` (on domains longer than 50 b the cap makes the
+        spacing coarser).
+    """
     setup = line_setup(scene)
     width = float(setup.disc.x[-1] - setup.disc.x[0]) / setup.x_unit
     n = 4 * math.ceil(width / SPIKE_LOCATOR_SPACING / 4) + 1
     return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
 
 
-def locate_outlet_spike(scene: Scene) -> tuple[float | None, Result]:
-    """Where the outlet constriction of an elastic line scene lies: x of the smallest
-    film of a solve on a uniform grid of :func:`locator_nodes` nodes over the scene's
-    domain, in Hertz half-widths [-] (None if that solve failed), and that result."""
+def locate_outlet_spike(scene: Scene,
+                        boundary_pressure: tuple[float, float] = (0.0, 0.0)
+                        ) -> tuple[float | None, Result]:
+    """Where the outlet constriction of an elastic line scene lies.
+
+    Parameters
+    ----------
+    scene : Scene
+        An elastic line scene under load.
+    boundary_pressure : (float, float)
+        End pressures [Pa] of the scene's solve (the locator solves the same problem).
+
+    Returns
+    -------
+    centre : float or None
+        x of the smallest film [Hertz half-widths] of a solve on a uniform grid of
+        :func:`locator_nodes` nodes over the scene's domain; None if that solve failed.
+    result : Result
+        That solve.
+    """
     mesh = replace(scene.mesh, grading=None, nodes=locator_nodes(scene))
-    coarse = solve_line(replace(scene, mesh=mesh))
+    coarse = solve_line(replace(scene, mesh=mesh), boundary_pressure=boundary_pressure)
     if not coarse.success:
         return None, coarse
     b = line_setup(scene).x_unit
@@ -1000,9 +1043,23 @@ def locate_outlet_spike(scene: Scene) -> tuple[float | None, Result]:
 
 
 def outlet_graded_grid(scene: Scene, centre: float) -> np.ndarray:
-    """Nodes [Hertz half-widths] of ``scene``'s grid (its domain, and its node count
-    rounded up to 4k + 1 so that the two coarser levels nest) refined around
-    x = ``centre`` b by :func:`bearing_fem.mesh.outlet_graded_nodes`."""
+    """The nodes of ``scene``'s grid refined around its outlet spike.
+
+    Parameters
+    ----------
+    scene : Scene
+        An elastic line scene under load (its default or ``mesh.nodes`` node count and
+        its domain).
+    centre : float
+        x of the refinement [Hertz half-widths] (clipped to the domain).
+
+    Returns
+    -------
+    numpy.ndarray
+        Increasing nodes [Hertz half-widths], the node count rounded up to 4k + 1 so that
+        the two coarser levels nest (:func:`bearing_fem.mesh.outlet_graded_nodes`, ratio
+        :data:`OUTLET_GRADING_RATIO`, width :data:`OUTLET_GRADING_WIDTH`).
+    """
     setup = line_setup(scene)
     x = setup.disc.x / setup.x_unit
     n = 4 * math.ceil((x.size - 1) / 4) + 1
@@ -1016,7 +1073,7 @@ def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
     the grid refined there, started from the locator's solution; if the graded grid
     fails, the uniform grid (with a warning). The locator's iterations and time count in
     the result and against ``solver.iteration_budget`` and ``time_limit``."""
-    centre, coarse = locate_outlet_spike(scene)
+    centre, coarse = locate_outlet_spike(scene, bp)
     n_loc = coarse.x.size
     if centre is None:
         message = (f"mesh.grading = 'outlet': the solve on a uniform grid of {n_loc} nodes "
@@ -1045,23 +1102,43 @@ def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
     model.start = (coarse.x, coarse.pressure, float(np.interp(0.0, coarse.x, coarse.film)))
     res = solve_newton_model(model, graded, t0, progress=progress,
                              prefix=f"grid refined at the outlet spike; {located}; ")
+    history = list(coarse.history) + list(res.history)
+    steps = ([(s_, f"{st} (spike locator)", its) for s_, st, its in coarse.continuation]
+             + list(res.continuation))
+    total = spent + res.newton_iterations
     if not res.success and res.status not in BUDGET_STATUSES:
-        uniform = replace(scene, mesh=replace(scene.mesh, grading=None), solver=replace(
-            solver, **left))
-        fallback = solve_line(uniform, boundary_pressure=bp, progress=progress)
+        spent += res.newton_iterations
+        spent_s = time.perf_counter() - t0
         note = (f"mesh.grading = 'outlet': the graded grid failed ({res.status}: "
-                f"{res.message}); the result is on the uniform grid")
-        res = replace(fallback, newton_iterations=fallback.newton_iterations
-                      + res.newton_iterations, warnings=[note] + fallback.warnings)
+                f"{res.message})")
+        if spent >= solver.iteration_budget or (solver.time_limit is not None
+                                                and spent_s >= solver.time_limit):
+            status = ("budget_exhausted" if spent >= solver.iteration_budget
+                      else "time_limit")
+            res = replace(res, status=status,
+                          message=f"{status}: {note}, which spent the scene's budget "
+                                  f"({limits}) before the uniform grid could be tried")
+        else:
+            left = dict(iteration_budget=solver.iteration_budget - spent)
+            if solver.time_limit is not None:
+                left["time_limit"] = solver.time_limit - spent_s
+            uniform = replace(scene, mesh=replace(scene.mesh, grading=None),
+                              solver=replace(solver, **left))
+            fallback = solve_line(uniform, boundary_pressure=bp, progress=progress)
+            res = replace(fallback, warnings=[note + "; the result is on the uniform grid"]
+                          + fallback.warnings,
+                          message=f"{located}; the graded grid failed ({res.status}), the "
+                                  f"result is on the uniform grid: {fallback.message}")
+            total += fallback.newton_iterations
+            history += list(fallback.history)
+            steps += [(s_, f"{st} (uniform fallback)", its)
+                      for s_, st, its in fallback.continuation]
     elif res.status in BUDGET_STATUSES:
         res = replace(res, message=f"{res.message} (the graded solve's share; the scene's "
                                    f"budget is {limits}, and {located})")
-    return replace(res, scene=scene, newton_iterations=res.newton_iterations + spent,
-                   wall_time_s=time.perf_counter() - t0,
-                   history=list(coarse.history) + list(res.history),
-                   continuation=[(s_, f"{st} (spike locator)", its)
-                                 for s_, st, its in coarse.continuation]
-                   + list(res.continuation))
+    return replace(res, scene=scene, newton_iterations=total,
+                   wall_time_s=time.perf_counter() - t0, history=history,
+                   continuation=steps)
 
 
 #: alpha p beyond which the reduced pressure q = (1 - exp(-alpha p))/alpha equals 1/alpha
