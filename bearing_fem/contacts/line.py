@@ -827,26 +827,15 @@ class LineModel:
         """Unknowns interpolated from ``start`` = (x [m], p [Pa], central film [m]), a
         solution of the same scene on another grid (the spike locator's)."""
         xs, ps, hc = self.start
-        p = np.interp(level.disc.x, xs, ps)
-        p[[0, -1]] = problem.p_bc[[0, -1]]
-        if not problem.has_h0:
-            return problem.pack(p, 0.0)
-        h0 = hc - float(np.interp(0.0, level.disc.x, problem.g_nodes + problem.displacement(p)))
-        return problem.pack(p, h0)
+        return _interpolated(problem, xs, ps, hc)
 
     def transfer(self, z: np.ndarray, coarse: LineProblem, fine: LineProblem) -> np.ndarray:
         """Interpolate a solution to another grid of the same interval (same film at
         x = 0)."""
         p_c, h0_c = coarse.unpack(z)
-        xc, xf = coarse.disc.x, fine.disc.x
-        p_f = np.interp(xf, xc, p_c)
-        p_f[[0, -1]] = fine.p_bc[[0, -1]]
+        xc = coarse.disc.x
         hc = float(np.interp(0.0, xc, coarse.film_nodes(p_c, h0_c)))
-        if fine.has_h0:
-            h0_f = hc - float(np.interp(0.0, xf, fine.g_nodes + fine.displacement(p_f)))
-        else:
-            h0_f = h0_c
-        return fine.pack(p_f, h0_f)
+        return _interpolated(fine, xc, p_c, hc)
 
     def whole(self, problem: LineProblem, z: np.ndarray) -> tuple[LineProblem, np.ndarray]:
         """The problem and unknowns the result is reported on (the same for lines)."""
@@ -937,6 +926,21 @@ class LineModel:
                                      post=status == "linear"), msg, solves
 
 
+def _interpolated(problem: LineProblem, xs: np.ndarray, ps: np.ndarray,
+                  hc: float) -> np.ndarray:
+    """Unknowns of ``problem`` from nodal pressures ``ps`` [Pa] at ``xs`` [m] of another grid
+    (linear interpolation, the problem's end pressures kept) with the central film
+    ``hc`` [m] (the offset that gives it on this grid; a prescribed gap has no offset
+    unknown)."""
+    x = problem.disc.x
+    p = np.interp(x, xs, ps)
+    p[[0, -1]] = problem.p_bc[[0, -1]]
+    h0 = 0.0
+    if problem.has_h0:
+        h0 = hc - float(np.interp(0.0, x, problem.g_nodes + problem.displacement(p)))
+    return problem.pack(p, h0)
+
+
 def _regridded(scene, setup: LineSetup, x0: float, x1: float, nodes: int) -> LineSetup:
     """The same scene on another uniform grid over [x0, x1] [m] (the half-space
     compliance and its stabilisation scale follow the grid spacing)."""
@@ -992,13 +996,15 @@ OUTLET_GRADING_RATIO = 9.0
 OUTLET_GRADING_WIDTH = 0.1
 
 
-def locator_nodes(scene: Scene) -> int:
+def locator_nodes(scene: Scene, setup: LineSetup | None = None) -> int:
     """Node count of the uniform spike-locator grid of a scene.
 
     Parameters
     ----------
     scene : Scene
         An elastic line scene under load.
+    setup : LineSetup, optional
+        ``line_setup(scene)``, if the caller has it.
 
     Returns
     -------
@@ -1008,15 +1014,15 @@ def locator_nodes(scene: Scene) -> int:
         :data:`SPIKE_LOCATOR_MAX_NODES` (on domains longer than 50 b the cap makes the
         spacing coarser).
     """
-    setup = line_setup(scene)
+    setup = setup or line_setup(scene)
     width = float(setup.disc.x[-1] - setup.disc.x[0]) / setup.x_unit
     n = 4 * math.ceil(width / SPIKE_LOCATOR_SPACING / 4) + 1
     return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
 
 
 def locate_outlet_spike(scene: Scene,
-                        boundary_pressure: tuple[float, float] = (0.0, 0.0)
-                        ) -> tuple[float | None, Result]:
+                        boundary_pressure: tuple[float, float] = (0.0, 0.0),
+                        setup: LineSetup | None = None) -> tuple[float | None, Result]:
     """Where the outlet constriction of an elastic line scene lies.
 
     Parameters
@@ -1025,6 +1031,8 @@ def locate_outlet_spike(scene: Scene,
         An elastic line scene under load.
     boundary_pressure : (float, float)
         End pressures [Pa] of the scene's solve (the locator solves the same problem).
+    setup : LineSetup, optional
+        ``line_setup(scene)``, if the caller has it.
 
     Returns
     -------
@@ -1034,15 +1042,17 @@ def locate_outlet_spike(scene: Scene,
     result : Result
         That solve.
     """
-    mesh = replace(scene.mesh, grading=None, nodes=locator_nodes(scene))
+    setup = setup or line_setup(scene)
+    mesh = replace(scene.mesh, grading=None, nodes=locator_nodes(scene, setup))
     coarse = solve_line(replace(scene, mesh=mesh), boundary_pressure=boundary_pressure)
     if not coarse.success:
         return None, coarse
-    b = line_setup(scene).x_unit
+    b = setup.x_unit
     return float(coarse.x[int(np.argmin(coarse.film))] / b), coarse
 
 
-def outlet_graded_grid(scene: Scene, centre: float) -> np.ndarray:
+def outlet_graded_grid(scene: Scene, centre: float,
+                       setup: LineSetup | None = None) -> np.ndarray:
     """The nodes of ``scene``'s grid refined around its outlet spike.
 
     Parameters
@@ -1052,6 +1062,8 @@ def outlet_graded_grid(scene: Scene, centre: float) -> np.ndarray:
         its domain).
     centre : float
         x of the refinement [Hertz half-widths] (clipped to the domain).
+    setup : LineSetup, optional
+        ``line_setup(scene)``, if the caller has it.
 
     Returns
     -------
@@ -1060,7 +1072,7 @@ def outlet_graded_grid(scene: Scene, centre: float) -> np.ndarray:
         the two coarser levels nest (:func:`bearing_fem.mesh.outlet_graded_nodes`, ratio
         :data:`OUTLET_GRADING_RATIO`, width :data:`OUTLET_GRADING_WIDTH`).
     """
-    setup = line_setup(scene)
+    setup = setup or line_setup(scene)
     x = setup.disc.x / setup.x_unit
     n = 4 * math.ceil((x.size - 1) / 4) + 1
     lo, hi = float(x[0]), float(x[-1])
@@ -1068,12 +1080,32 @@ def outlet_graded_grid(scene: Scene, centre: float) -> np.ndarray:
                                width=OUTLET_GRADING_WIDTH, ratio=OUTLET_GRADING_RATIO)
 
 
+def _spent(solver, iterations: int, seconds: float) -> str | None:
+    """``"budget_exhausted"`` or ``"time_limit"`` if ``iterations`` Newton iterations and
+    ``seconds`` [s] spend a ``[solver]`` section's budget, else None."""
+    if iterations >= solver.iteration_budget:
+        return "budget_exhausted"
+    if solver.time_limit is not None and seconds >= solver.time_limit:
+        return "time_limit"
+    return None
+
+
+def _remaining(solver, iterations: int, seconds: float):
+    """The ``[solver]`` section with what ``iterations`` and ``seconds`` [s] left of its
+    budget (see :func:`_spent`)."""
+    left = {"iteration_budget": solver.iteration_budget - iterations}
+    if solver.time_limit is not None:
+        left["time_limit"] = solver.time_limit - seconds
+    return replace(solver, **left)
+
+
 def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
     """``mesh.grading = "outlet"``: locate the spike on a coarse uniform grid, then solve on
     the grid refined there, started from the locator's solution; if the graded grid
     fails, the uniform grid (with a warning). The locator's iterations and time count in
     the result and against ``solver.iteration_budget`` and ``time_limit``."""
-    centre, coarse = locate_outlet_spike(scene, bp)
+    setup = line_setup(scene)  # the scene's own grid: domain and node count, built once
+    centre, coarse = locate_outlet_spike(scene, bp, setup)
     n_loc = coarse.x.size
     if centre is None:
         message = (f"mesh.grading = 'outlet': the solve on a uniform grid of {n_loc} nodes "
@@ -1087,18 +1119,14 @@ def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
               + (f", time limit {solver.time_limit:g} s" if solver.time_limit else ""))
     located = (f"the outlet spike was located at x = {centre:.4g} b in {spent} Newton "
                f"iterations and {spent_s:.3g} s on {n_loc} uniform nodes")
-    if spent >= solver.iteration_budget or (solver.time_limit is not None
-                                            and spent_s >= solver.time_limit):
-        status = "budget_exhausted" if spent >= solver.iteration_budget else "time_limit"
+    status = _spent(solver, spent, spent_s)
+    if status is not None:
         return replace(coarse, scene=scene, success=False, status=status,
                        error_estimate=None, wall_time_s=spent_s,
                        message=f"{status}: {located}, which spent the scene's budget "
                                f"({limits}) before the graded grid was solved")
-    left = dict(iteration_budget=solver.iteration_budget - spent)
-    if solver.time_limit is not None:
-        left["time_limit"] = solver.time_limit - spent_s
-    graded = replace(scene, solver=replace(solver, **left))
-    model = LineModel(graded, bp, x_nodes=outlet_graded_grid(scene, centre))
+    graded = replace(scene, solver=_remaining(solver, spent, spent_s))
+    model = LineModel(graded, bp, x_nodes=outlet_graded_grid(scene, centre, setup))
     model.start = (coarse.x, coarse.pressure, float(np.interp(0.0, coarse.x, coarse.film)))
     res = solve_newton_model(model, graded, t0, progress=progress,
                              prefix=f"grid refined at the outlet spike; {located}; ")
@@ -1111,19 +1139,14 @@ def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
         spent_s = time.perf_counter() - t0
         note = (f"mesh.grading = 'outlet': the graded grid failed ({res.status}: "
                 f"{res.message})")
-        if spent >= solver.iteration_budget or (solver.time_limit is not None
-                                                and spent_s >= solver.time_limit):
-            status = ("budget_exhausted" if spent >= solver.iteration_budget
-                      else "time_limit")
+        status = _spent(solver, spent, spent_s)
+        if status is not None:
             res = replace(res, status=status,
                           message=f"{status}: {note}, which spent the scene's budget "
                                   f"({limits}) before the uniform grid could be tried")
         else:
-            left = dict(iteration_budget=solver.iteration_budget - spent)
-            if solver.time_limit is not None:
-                left["time_limit"] = solver.time_limit - spent_s
             uniform = replace(scene, mesh=replace(scene.mesh, grading=None),
-                              solver=replace(solver, **left))
+                              solver=_remaining(solver, spent, spent_s))
             fallback = solve_line(uniform, boundary_pressure=bp, progress=progress)
             res = replace(fallback, warnings=[note + "; the result is on the uniform grid"]
                           + fallback.warnings,
