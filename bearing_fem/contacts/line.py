@@ -39,7 +39,7 @@ from ..errors import SceneError
 from ..formulas import line_central_film_moes
 from ..mesh import every_other, outlet_graded_nodes
 from ..numerics.fe import QuadratureOperators, quadrature_operators
-from ..numerics.newton import BUDGET_STATUSES, ForcingTerm, gmres_right
+from ..numerics.newton import BUDGET_STATUSES, ForcingTerm, dense_factor_threads, gmres_right
 from ..physics.elasticity import (UNIFORMITY_TOLERANCE, GradedHalfSpaceLine, HalfSpaceLine,
                                   LocalCompliance, RigidCompliance,
                                   kodnir_local_coefficient, spacing_deviation)
@@ -103,6 +103,9 @@ REUSE_GMRES_ITERATIONS = 12
 REUSE_GMRES_FORCING = True
 REUSE_GMRES_FORCING_MAX = 1e-2
 DENSE_LU_SINGLE = True
+#: Entries per row block of the dense Jacobian's product A_h C (a buffer that stays in
+#: cache: at 1801 nodes 4 ms instead of 14 ms for n^2 temporaries).
+DENSE_JACOBIAN_BLOCK_ENTRIES = 2**17
 
 
 class LineProblem(ScaledResidual):
@@ -160,6 +163,7 @@ class LineProblem(ScaledResidual):
         else:
             self._cmat = compliance.matrix(n)
         self._row_scale = None
+        self._cmat_columns = {}  # dtype -> C[:, interior] in that dtype (dense C)
         self._lu = None  # dense LU factors kept for reuse as a preconditioner
         self._displacement_cache = None
         self._forcing = None  # ForcingTerm of the GMRES steps
@@ -321,7 +325,8 @@ class LineProblem(ScaledResidual):
             if j is not None:
                 # factor J^T (J's C-order memory is J^T in Fortran order: no copy) and
                 # solve with the transpose
-                self._lu = sla.lu_factor(j.T, overwrite_a=True, check_finite=False)
+                with dense_factor_threads(j.shape[0]):
+                    self._lu = sla.lu_factor(j.T, overwrite_a=True, check_finite=False)
                 self._lu_transposed = True
                 self.factorisations += 1
                 dz = self._reuse_step(blocks, f, shift)
@@ -336,7 +341,8 @@ class LineProblem(ScaledResidual):
             return spla.spsolve(j.tocsc(), -f)
         if shift:
             j[np.arange(npf), np.arange(npf)] += shift
-        lu = sla.lu_factor(j, overwrite_a=True, check_finite=False)
+        with dense_factor_threads(j.shape[0]):
+            lu = sla.lu_factor(j, overwrite_a=True, check_finite=False)
         self._lu = lu
         self._lu_transposed = False
         self.factorisations += 1
@@ -353,14 +359,21 @@ class LineProblem(ScaledResidual):
         rows = np.repeat(np.arange(npf), np.diff(a_h.indptr))
         if np.any((a_h.indices < rows) | (a_h.indices > rows + 2)):
             return None
-        c = self._cmat[:, 1:-1]
+        c = self._interior_columns(dtype)
         m = npf + (1 if self.has_h0 else 0)
         out = np.empty((m, m), dtype=dtype)
         j = out[:npf, :npf]
-        bands = [(a_h.diagonal(k) * scale)[:, None] for k in range(3)]
-        np.multiply(c[:npf], bands[0], out=j)
-        for k in (1, 2):  # (scale A_h)[r, r + k] * C[r + k, interior]
-            j += c[k:k + npf] * bands[k]
+        bands = [(a_h.diagonal(k) * scale).astype(dtype)[:, None] for k in range(3)]
+        # by blocks of rows, the product of each band in a small buffer (no n^2 temporary)
+        block = max(1, DENSE_JACOBIAN_BLOCK_ENTRIES // max(npf, 1))
+        buf = np.empty((min(block, npf), npf), dtype=dtype)
+        for r0 in range(0, npf, block):
+            r1 = min(npf, r0 + block)
+            rows_j, tmp = j[r0:r1], buf[:r1 - r0]
+            np.multiply(c[r0:r1], bands[0][r0:r1], out=rows_j)
+            for k in (1, 2):  # (scale A_h)[r, r + k] * C[r + k, interior]
+                np.multiply(c[r0 + k:r1 + k], bands[k][r0:r1], out=tmp)
+                rows_j += tmp
         ap = sp.coo_matrix(a_p)
         keep = (ap.col >= 1) & (ap.col <= npf)
         np.add.at(j, (ap.row[keep], ap.col[keep] - 1),
@@ -372,6 +385,13 @@ class LineProblem(ScaledResidual):
             out[-1, :npf] = load_row
             out[-1, -1] = 0.0
         return out
+
+    def _interior_columns(self, dtype) -> np.ndarray:
+        """C[:, interior] of the dense compliance in ``dtype`` (C-contiguous; kept)."""
+        key = np.dtype(dtype)
+        if key not in self._cmat_columns:
+            self._cmat_columns[key] = np.ascontiguousarray(self._cmat[:, 1:-1], dtype=key)
+        return self._cmat_columns[key]
 
     def _reuse_step(self, blocks: tuple, f: np.ndarray, shift: float) -> np.ndarray | None:
         a_p, a_h, scale, da, dr_dh0, load_row = blocks

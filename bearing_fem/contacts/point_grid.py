@@ -680,21 +680,23 @@ class FreePattern:
             self.perm = np.arange(free.size)
         self.inverse = np.empty_like(self.perm)
         self.inverse[self.perm] = np.arange(self.perm.size)
+        # the free-free block of the pattern, rows and columns in that order, as csc
+        # (columns ascending, rows ascending within each): a matrix whose values are the
+        # pattern positions (+ 1, so that none is an explicit zero), sliced by scipy
         asm = grid.assembler
         n = grid.size
-        where = np.full(n, -1, dtype=np.int64)  # node -> position in the permuted order
-        where[free[self.perm]] = np.arange(free.size)
-        rows = np.repeat(np.arange(n), np.diff(asm.indptr))
-        r, c = where[rows], where[asm.indices]
-        keep = np.nonzero((r >= 0) & (c >= 0))[0]
-        r, c = r[keep], c[keep]
-        order = np.lexsort((r, c))  # csc: by column, then row
+        where = sp.csr_matrix((np.arange(1, asm.nnz + 1, dtype=float), asm.indices,
+                               asm.indptr), shape=(n, n))
+        chosen = free[self.perm]
+        sub = where[chosen][:, chosen].tocsc()
+        sub.sort_indices()
         idx = np.int32 if asm.nnz < 2**31 - 1 else np.int64
-        self._select = keep[order].astype(idx)
-        self._row = r[order].astype(idx)
-        self.indices = r[order].astype(np.int32)
-        self.indptr = np.searchsorted(c[order], np.arange(free.size + 1)).astype(np.int32)
-        diag_entries = np.nonzero(self._row == c[order])[0]
+        self._select = (sub.data.astype(np.int64) - 1).astype(idx)
+        self._row = sub.indices.astype(idx)
+        self.indices = sub.indices.astype(np.int32)
+        self.indptr = sub.indptr.astype(np.int32)
+        col = np.repeat(np.arange(free.size), np.diff(self.indptr))
+        diag_entries = np.nonzero(self._row == col)[0]
         if diag_entries.size != free.size:
             raise ValueError("assembler pattern lacks a diagonal entry at a free node")
         self._diag = diag_entries[np.argsort(self._row[diag_entries])]
