@@ -1,7 +1,6 @@
 """The dense and sparse kernels behind the Newton steps: the line contact's dense Jacobian
-(row blocks, float32), the point contact's gathered free-node pattern, and the BLAS
-threads of dense factorisations (bearing_fem.contacts.line, point_grid,
-bearing_fem.numerics.newton)."""
+(row blocks, float32) and the point contact's gathered free-node pattern
+(bearing_fem.contacts.line, point_grid)."""
 from __future__ import annotations
 
 import sys
@@ -10,11 +9,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 import scipy.sparse as sp
-from threadpoolctl import threadpool_info
 
 from bearing_fem.contacts import line
 from bearing_fem.contacts.point_grid import FreePattern, PointGrid
-from bearing_fem.numerics import newton
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "studies"))
 from line_ehl_map import scene_for  # noqa: E402
@@ -80,20 +77,3 @@ def test_free_pattern_gathers_the_free_block_in_its_order(mirror):
     cols = np.searchsorted(pattern.indptr, pattern._diag, side="right") - 1
     assert np.array_equal(rows, np.arange(free.size)) and np.array_equal(cols, rows), \
         "_diag lists the diagonal entries, row by row"
-
-
-def _blas_threads() -> int:
-    return max((int(i["num_threads"]) for i in threadpool_info()
-                if i.get("user_api") == "blas"), default=1)
-
-
-def test_dense_factorisations_get_the_process_threads_back():
-    process = newton.process_blas_threads()
-    assert process >= 1
-    with newton.blas_threads(1):
-        assert _blas_threads() == 1
-        with newton.dense_factor_threads(newton.DENSE_THREADED_SIZE - 1):
-            assert _blas_threads() == 1, "small factorisations keep the limit"
-        with newton.dense_factor_threads(newton.DENSE_THREADED_SIZE):
-            assert _blas_threads() == process, "large ones use the process's threads"
-        assert _blas_threads() == 1, "and the limit is restored after them"

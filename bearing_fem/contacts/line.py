@@ -39,7 +39,7 @@ from ..errors import SceneError
 from ..formulas import line_central_film_moes
 from ..mesh import every_other, outlet_graded_nodes
 from ..numerics.fe import QuadratureOperators, quadrature_operators
-from ..numerics.newton import BUDGET_STATUSES, ForcingTerm, dense_factor_threads, gmres_right
+from ..numerics.newton import BUDGET_STATUSES, ForcingTerm, gmres_right
 from ..physics.elasticity import (UNIFORMITY_TOLERANCE, GradedHalfSpaceLine, HalfSpaceLine,
                                   LocalCompliance, RigidCompliance,
                                   kodnir_local_coefficient, spacing_deviation)
@@ -325,8 +325,7 @@ class LineProblem(ScaledResidual):
             if j is not None:
                 # factor J^T (J's C-order memory is J^T in Fortran order: no copy) and
                 # solve with the transpose
-                with dense_factor_threads(j.shape[0]):
-                    self._lu = sla.lu_factor(j.T, overwrite_a=True, check_finite=False)
+                self._lu = sla.lu_factor(j.T, overwrite_a=True, check_finite=False)
                 self._lu_transposed = True
                 self.factorisations += 1
                 dz = self._reuse_step(blocks, f, shift)
@@ -341,8 +340,7 @@ class LineProblem(ScaledResidual):
             return spla.spsolve(j.tocsc(), -f)
         if shift:
             j[np.arange(npf), np.arange(npf)] += shift
-        with dense_factor_threads(j.shape[0]):
-            lu = sla.lu_factor(j, overwrite_a=True, check_finite=False)
+        lu = sla.lu_factor(j, overwrite_a=True, check_finite=False)
         self._lu = lu
         self._lu_transposed = False
         self.factorisations += 1

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Iterator, Protocol
 
 import numpy as np
-from threadpoolctl import threadpool_info, threadpool_limits
+from threadpoolctl import threadpool_limits
 
 log = logging.getLogger(__name__)
 
@@ -51,42 +51,7 @@ def blas_threads(limit: int | None) -> Iterator[None]:
     if limit is None:
         yield
         return
-    process_blas_threads()  # noted before the limit, for dense_factor_threads
     with threadpool_limits(limits=int(limit), user_api="blas"):
-        yield
-
-
-_PROCESS_BLAS_THREADS: int | None = None
-
-
-def process_blas_threads() -> int:
-    """BLAS threads of numpy/scipy as the process had them when first asked (the first
-    :func:`blas_threads` block asks before it limits them)."""
-    global _PROCESS_BLAS_THREADS
-    if _PROCESS_BLAS_THREADS is None:
-        counts = [int(i["num_threads"]) for i in threadpool_info()
-                  if i.get("user_api") == "blas"]
-        _PROCESS_BLAS_THREADS = max(counts, default=1)
-    return _PROCESS_BLAS_THREADS
-
-
-#: Dense LU factorisations of at least this many unknowns get the process's BLAS threads
-#: back inside a :func:`blas_threads` limit (measured on 2 cores, float32 LU: 900
-#: unknowns 5.8 ms with one thread, 5.5 ms with two; 1800: 40 ms and 24 ms; 3600:
-#: 279 ms and 150 ms).
-DENSE_THREADED_SIZE = 1000
-
-
-@contextlib.contextmanager
-def dense_factor_threads(size: int) -> Iterator[None]:
-    """The process's BLAS threads (:func:`process_blas_threads`) for a dense
-    factorisation of ``size`` unknowns if ``size >= DENSE_THREADED_SIZE``; else the
-    current setting."""
-    threads = process_blas_threads()
-    if size < DENSE_THREADED_SIZE or threads <= 1:
-        yield
-        return
-    with threadpool_limits(limits=threads, user_api="blas"):
         yield
 
 
