@@ -83,6 +83,12 @@ def _base() -> dict:
     ("materials", "ring_poisson", 0.6, r"materials\.ring_poisson must lie in \(-1, 0\.5\]"),
     ("mesh", "x_range", [-2.0e3, 2.0], r"mesh\.x_range must lie within \[-1000, 1000\]"),
     ("mesh", "x_range", [1.0, 2.0], r"mesh\.x_range must satisfy start < 0 < end"),
+    # metres given for Hertz half-widths: the domain missed the contact
+    ("mesh", "x_range", [-0.0005, 0.0003],
+     r"mesh\.x_range = \[-0\.0005, 0\.0003\] \(in Hertz half-widths\) does not contain the "
+     r"Hertz zone \[-1, 1\]: the range is in units of the Hertz half-width, not in metres"),
+    ("mesh", "y_range", [-3.0, 0.5], r"mesh\.y_range = \[-3, 0\.5\] \(in Hertz half-widths\) "
+                                     r"does not contain the Hertz zone"),
     ("lubricant", "piezo_values", [2e-8],
      r"give both lubricant\.piezo_temperatures .* and lubricant\.piezo_values"),
 ])

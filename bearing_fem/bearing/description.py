@@ -530,7 +530,8 @@ class BearingMesh:
     point_nodes : (int, int) or None
         (nx, ny) of each point-contact scene.
     x_range, y_range : (float, float) or None
-        Domain in Hertz half-widths (``y_range``: point contacts).
+        Domain in Hertz half-widths (``y_range``: point contacts); must contain the Hertz
+        zone [-1, 1] (:func:`bearing_fem.scene.require_hertz_zone`).
     line_grading : {"uniform", "outlet"} or None
         Node spacing of each line-contact scene (``mesh.grading`` of a scene: "outlet"
         refines the grid at the outlet spike, docs/line_contact.md "Automatic grading");
@@ -559,8 +560,8 @@ class BearingMesh:
                 raise SceneError(f"mesh.point_nodes must be two integers [nx, ny] in "
                                  f"[9, 2049], got {n!r}")
             object.__setattr__(self, "point_nodes", (int(n[0]), int(n[1])))
-        field_range(self, "x_range")
-        field_range(self, "y_range")
+        field_range(self, "x_range", hertz_zone=True)  # every bearing contact is elastic
+        field_range(self, "y_range", hertz_zone=True)  # and loaded: Hertz units
 
 
 @dataclass(frozen=True, kw_only=True)
