@@ -28,11 +28,11 @@ from ..errors import SceneError
 from ..post import ERROR_WARNING_THRESHOLD
 from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
-from .description import Bearing
+from .description import Bearing, input_warnings
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, distribute_loads
-from .totals import bearing_totals, contact_summary
+from .totals import LAST_ITERATE_NOTE, bearing_totals, contact_summary, slice_label
 
 __all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
 
@@ -258,7 +258,7 @@ def solve_bearing(bearing: Bearing, *,
         raise SceneError(f"solve_bearing() needs a Bearing, got {type(bearing).__name__}")
     t0 = time.perf_counter()
     g, op = bearing.geometry, bearing.operation
-    warnings: list[str] = []
+    warnings: list[str] = input_warnings(bearing)
     try:
         dist = distribute_loads(bearing)
     except (RuntimeError, ValueError) as exc:
@@ -328,17 +328,21 @@ def solve_bearing(bearing: Bearing, *,
         warnings.append(f"friction torque x omega differs from the contacts' heat power by "
                         f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
                         "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
-    # the contact solver's warnings, once per distinct scene, naming the contacts using it
+    # the contact solver's warnings, once per distinct scene, naming the contacts (and the
+    # slices of a profiled roller) using it
     users: dict[str, list[str]] = {}
     for spec in specs:
-        for key in spec.keys:
-            name = f"{spec.element} {spec.raceway}"
+        for i, key in enumerate(spec.keys):
+            label = slice_label(spec, i, g.n_slices)
+            name = f"{spec.element} {spec.raceway}" + (f", {label}" if label else "")
             if name not in users.setdefault(key, []):
                 users[key].append(name)
     for key, names in users.items():
+        sep = "; " if any("," in n for n in names) else ", "
+        who = sep.join(names[:4]) + (f" (+{len(names) - 4} more)" if len(names) > 4 else "")
+        note = "" if results[key].success else f" ({LAST_ITERATE_NOTE})"
         for w in results[key].warnings:
-            who = ", ".join(names[:4]) + (f" (+{len(names) - 4} more)" if len(names) > 4 else "")
-            warnings.append(f"contact{'s' if len(names) > 1 else ''} {who}: {w}")
+            warnings.append(f"contact{'s' if len(names) > 1 else ''} {who}{note}: {w}")
     n_solved = len(results)
     n_scenes = sum(len(s.keys) for s in specs)
     if failed:
