@@ -187,13 +187,21 @@ def test_roller_contacts_on_outlet_graded_grids():
 
 
 def test_a_contact_without_an_estimate_is_named():
-    """6209 on 65^2 contact grids: the most loaded contact has no coarser levels, so the
-    bearing has no error bars; a warning names the contact (they vanished silently)."""
+    """6209 on 65^2 contact grids: the most loaded contact's 33^2 grid does not converge,
+    so it and the bearing have no error bars; a warning names the contact, its grid and
+    the cause (they vanished silently; then the warning blamed 65^2 grids as too coarse to
+    halve, while the other contacts on 65^2 have estimates from 33^2)."""
     b = load_example("6209")
     s = solve_bearing(replace(b, mesh=replace(b.mesh, point_nodes=(65, 65)))).summary()
     assert s["success"] and all(v is None for v in s["error_estimate"].values())
+    assert all(e[r]["error_estimate"]["friction_force"] is not None for e in s["elements"]
+               for r in ("inner", "outer") if e[r]["status"] != "excluded"
+               and (e["index"], r) != (0, "inner")), "65^2 contacts have estimates"
     (w,) = [w for w in s["warnings"] if w.startswith("no error estimate for friction_torque")]
-    assert "contact(s) 0 inner have none" in w, w
+    assert "contact(s) 0 inner (65x65) have none" in w, w
+    assert "grid of twice the spacing did not converge (here e.g. 33x33 below 65x65)" in w, w
+    assert "cannot be halved (an even node count, or fewer than 17 nodes" in w, w
+    assert "65^2" not in w, w
 
 
 #: Result quantities of a contact summary that a failed contact must report as null.
