@@ -55,6 +55,10 @@ BEARING_UNITS = {
     "load_distribution.radial_displacement": "m", "load_distribution.axial_displacement": "m",
     "kinematics.cage_rpm": "1/min", "kinematics.entrainment_speed": "m/s",
     "empirical.*.torque": "N m", "empirical.*.heat_power": "W",
+    # relative discretisation errors (the run store's error_estimate.* columns)
+    "error_estimate.friction_torque": "1", "error_estimate.heat_power": "1",
+    "error_estimate.h_min": "1", "error_estimate.p_max": "1",
+    "elements.inner/outer.error_estimate.*": "1",
 }
 
 
