@@ -5,7 +5,7 @@
 * :func:`plot_films` - minimum film and maximum pressure of every loaded element's inner
   and outer contact over azimuth;
 * :func:`plot_torque_comparison` - EHL friction torque (inner and outer contacts) beside
-  the empirical models;
+  the empirical models (when contacts failed: no EHL bar, and the figure says how many);
 * :func:`write_figures` - all three into a directory (each written under a temporary
   name and moved into place).
 """
@@ -19,8 +19,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["plot_load_distribution", "plot_films", "plot_torque_comparison", "write_figures",
-           "FIGURES"]
+__all__ = ["plot_load_distribution", "plot_films", "plot_torque_comparison", "torque_figure",
+           "failed_contacts", "write_figures", "FIGURES"]
 
 #: Figure files of :func:`write_figures`, keyed as returned.
 FIGURES = {"load_distribution": "load_distribution.png", "films": "films_pressures.png",
@@ -112,14 +112,31 @@ def plot_films(result: Any, path: str | Path) -> Path:
     return _save(fig, path)
 
 
-def plot_torque_comparison(result: Any, path: str | Path) -> Path:
-    """Bar chart: EHL friction torque (inner + outer contacts, with its estimated
-    discretisation error as an error bar) and the empirical models."""
+def failed_contacts(result: Any) -> tuple[int, int]:
+    """(failed, solved): how many of a bearing result's solved contacts (not excluded)
+    were unsuccessful, and how many were solved."""
+    contacts = [c for e in result.elements for c in (e["inner"], e["outer"])
+                if c["status"] != "excluded"]
+    return sum(1 for c in contacts if not c["success"]), len(contacts)
+
+
+def torque_figure(result: Any) -> Any:
+    """The figure of :func:`plot_torque_comparison` (not saved; the caller closes it).
+
+    Without an EHL total (a contact failed) there is no EHL bar: its place is labelled
+    "EHL: k of n contacts failed" and a note on the axes says so.
+    """
     plt = _pyplot()
     t = result.totals
     names, vals = [], []
     fig, ax = plt.subplots(figsize=(7, 4))
-    if t.get("friction_torque") is not None:
+    if t.get("friction_torque") is None:
+        bad, n = failed_contacts(result)
+        label = (f"EHL: {bad} of {n} contacts failed" if bad else "EHL: no total")
+        ax.bar([label], [0.0], color="none", edgecolor="C3", hatch="//")
+        ax.text(0, 0, f"no EHL torque:\n{label.removeprefix('EHL: ')}\n(status "
+                f"{result.status})", ha="center", va="bottom", fontsize=9, color="C3")
+    else:
         ax.bar(["EHL (this solve)"], [t["friction_torque_inner"]], color="C0", label="inner")
         ax.bar(["EHL (this solve)"], [t["friction_torque_outer"]],
                bottom=[t["friction_torque_inner"]], color="C1", label="outer")
@@ -137,7 +154,14 @@ def plot_torque_comparison(result: Any, path: str | Path) -> Path:
     ax.legend(fontsize=8)
     ax.set_title("EHL torque (rolling losses only) vs empirical models", fontsize=10)
     plt.setp(ax.get_xticklabels(), rotation=15, fontsize=8)
-    return _save(fig, path)
+    return fig
+
+
+def plot_torque_comparison(result: Any, path: str | Path) -> Path:
+    """Bar chart: EHL friction torque (inner + outer contacts, with its estimated
+    discretisation error as an error bar) and the empirical models; when contacts
+    failed, no EHL bar and a note "EHL: k of n contacts failed" (:func:`torque_figure`)."""
+    return _save(torque_figure(result), path)
 
 
 def write_figures(result: Any, outdir: str | Path) -> dict[str, Path]:

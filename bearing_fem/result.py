@@ -63,6 +63,17 @@ def summary_units(kind: str) -> dict[str, str]:
     return {k: per_m.get(u, u) for k, u in _UNITS_POINT.items()}
 
 
+def error_estimate_units(estimate: Mapping[str, Any], prefix: str = "error_estimate"
+                         ) -> dict[str, str]:
+    """Units of the relative errors of an ``error_estimate`` table: ``"1"`` (a
+    dimensionless ratio, as ``friction_coefficient``) for each of its entries that is a
+    number or None, named ``prefix.key`` (the run store's column names); ``levels`` (a
+    count) and the text and table entries have no unit."""
+    return {f"{prefix}.{k}": "1" for k, v in estimate.items()
+            if k != "levels" and (v is None or (isinstance(v, (int, float))
+                                                and not isinstance(v, bool)))}
+
+
 #: Status strings, in the spirit of scipy.optimize.
 SUCCESS_STATUSES = ("converged", "linear")
 
@@ -171,6 +182,8 @@ class Result:
         out["warnings"] = [str(w) for w in self.warnings]
         out["error_estimate"] = None if self.error_estimate is None else dict(self.error_estimate)
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
+        if out["error_estimate"] is not None:
+            out["units"].update(error_estimate_units(out["error_estimate"]))
         out["dimensionless"] = dimensionless_groups(self.scene)
         out["version"] = VERSION
         out["scene"] = self.scene.to_dict()

@@ -150,10 +150,12 @@ def field_bool(obj: Any, name: str) -> bool:
     return value
 
 
-def field_range(obj: Any, name: str) -> tuple[float, float] | None:
+def field_range(obj: Any, name: str, *, hertz_zone: bool = False
+                ) -> tuple[float, float] | None:
     """Field ``name`` as a domain (start, end) in Hertz half-widths (or sqrt(2 r h0) for
     rigid scenes) with start < 0 < end and both ends within :data:`MAX_RANGE`; None stays
-    None; SceneError otherwise."""
+    None; SceneError otherwise. With ``hertz_zone`` (ranges known to be in Hertz
+    half-widths) it must also contain the Hertz zone (:func:`require_hertz_zone`)."""
     r = getattr(obj, name)
     if r is None:
         return None
@@ -173,7 +175,21 @@ def field_range(obj: Any, name: str) -> tuple[float, float] | None:
         raise SceneError(f"{where} must lie within [-{MAX_RANGE:g}, {MAX_RANGE:g}] (in Hertz "
                          f"half-widths, or sqrt(2 r h0) for rigid scenes), got {show_value(r)}")
     object.__setattr__(obj, name, (lo, hi))
+    if hertz_zone:
+        require_hertz_zone(where, (lo, hi))
     return lo, hi
+
+
+def require_hertz_zone(where: str, r: tuple[float, float]) -> None:
+    """A domain (start, end) in Hertz half-widths (b, or the semi-axes a_x, a_y) must
+    contain the Hertz zone: start <= -:data:`HERTZ_ZONE` and end >= :data:`HERTZ_ZONE`,
+    else SceneError naming the field ``where``, its value and the unit (a range given in
+    metres, mostly). The one rule for elastic scenes with a load and for bearings."""
+    lo, hi = r
+    if lo > -HERTZ_ZONE or hi < HERTZ_ZONE:
+        raise SceneError(f"{where} = [{lo:g}, {hi:g}] (in Hertz half-widths) does not contain "
+                         f"the Hertz zone [-{HERTZ_ZONE:g}, {HERTZ_ZONE:g}]: the range is in "
+                         "units of the Hertz half-width, not in metres (e.g. [-4.5, 1.5])")
 
 
 def field_piezo(obj: Any, name: str = "piezo") -> float:
@@ -427,6 +443,10 @@ GRADINGS = ("uniform", "outlet")
 #: Largest |start|, |end| of mesh.x_range and mesh.y_range [Hertz half-widths or
 #: sqrt(2 r h0)].
 MAX_RANGE = 1e3
+#: Half-width of the Hertz zone in its own units [-]: the mesh ranges of an elastic scene
+#: with a load (and of a bearing's contacts) must contain [-1, 1], or the domain cuts off
+#: the contact (:func:`require_hertz_zone`).
+HERTZ_ZONE = 1.0
 #: Temperatures [deg C] of the Prokofiev law (t > 0) up to where any oil decomposes.
 TEMPERATURE_RANGE = (0.0, 500.0)
 #: Longest title [characters].
@@ -1126,6 +1146,9 @@ class Scene:
         hertz = self.hertz_scales()
         if hertz is None:
             return
+        for name in ("x_range", "y_range"):
+            if getattr(self.mesh, name) is not None:
+                require_hertz_zone(f"mesh.{name}", getattr(self.mesh, name))
         w, p_h = self.load.force, hertz["p_h"]
         unit = "N/m" if self.contact.kind == "line" else "N"
         for what, width, radius_name, radius in hertz["widths"]:

@@ -2,11 +2,13 @@
 from __future__ import annotations
 
 import copy
+import math
 
 import pytest
 
 import bearing_fem as bf
 from bearing_fem.bearing import Bearing, example_names, load_example
+from bearing_fem.bearing.description import input_warnings
 from bearing_fem.errors import SceneError
 
 EXAMPLES = ("6209", "7010-steel", "7010-hybrid", "nncf5040")
@@ -83,6 +85,12 @@ def _base() -> dict:
     ("materials", "ring_poisson", 0.6, r"materials\.ring_poisson must lie in \(-1, 0\.5\]"),
     ("mesh", "x_range", [-2.0e3, 2.0], r"mesh\.x_range must lie within \[-1000, 1000\]"),
     ("mesh", "x_range", [1.0, 2.0], r"mesh\.x_range must satisfy start < 0 < end"),
+    # metres given for Hertz half-widths: the domain missed the contact
+    ("mesh", "x_range", [-0.0005, 0.0003],
+     r"mesh\.x_range = \[-0\.0005, 0\.0003\] \(in Hertz half-widths\) does not contain the "
+     r"Hertz zone \[-1, 1\]: the range is in units of the Hertz half-width, not in metres"),
+    ("mesh", "y_range", [-3.0, 0.5], r"mesh\.y_range = \[-3, 0\.5\] \(in Hertz half-widths\) "
+                                     r"does not contain the Hertz zone"),
     ("lubricant", "piezo_values", [2e-8],
      r"give both lubricant\.piezo_temperatures .* and lubricant\.piezo_values"),
 ])
@@ -169,3 +177,137 @@ def test_contact_refusals_name_the_bearing_fields(key, value, pattern):
     d["operation"][key] = value
     with pytest.raises(SceneError, match=pattern):
         bf.solve_bearing(Bearing.from_dict(d))
+
+
+def _roller() -> dict:
+    return copy.deepcopy(load_example("nncf5040").to_dict())
+
+
+def _angular() -> dict:
+    return copy.deepcopy(load_example("7010-steel").to_dict())
+
+
+@pytest.mark.parametrize("value, without_width, pattern", [
+    # 10 mm given as 10.0 m: inside BEARING_LENGTH_RANGE, accepted and solved before
+    (10.0, True, r"bearing\.effective_length = 10\.0 m exceeds 20 roller diameters \(0\.55 m"
+                 r"; needle rollers reach about 10\); dimensions are in metres \(an "
+                 r"effective length of 10 mm is 0\.01\)"),
+    # plausible alone, but two rows of them do not fit in the 150 mm width
+    (0.1, False, r"bearing\.effective_length = 0\.1 m does not fit in bearing\.width = 0\.15 "
+                 r"m: 2 row\(s\) of rollers that long span 0\.2 m axially"),
+    (0.2, True, None),  # without a width only the diameter ratio applies
+])
+def test_roller_length_in_the_wrong_unit_or_beyond_the_width_is_refused(value, without_width,
+                                                                        pattern):
+    d = _roller()
+    d["bearing"]["effective_length"] = value
+    if without_width:
+        del d["bearing"]["width"]
+    if pattern is None:
+        assert Bearing.from_dict(d).geometry.effective_length == value
+        return
+    with pytest.raises(SceneError, match=pattern):
+        Bearing.from_dict(d)
+
+
+@pytest.mark.parametrize("name, value, hint", [
+    ("pitch_diameter", 65, "a pitch diameter of 65 mm is 0.065"),
+    ("outside_diameter", 85.0, "an outside diameter of 85 mm is 0.085"),
+    ("bore", 45, "a bore of 45 mm is 0.045"),
+    ("width", 1e-5, "a width below 0.1 mm is no bearing dimension"),
+])
+def test_length_hint_uses_the_fields_own_value(name, value, hint):
+    """The hint was "(a 45 mm bore is 0.045)" for every length field."""
+    d = _base()
+    d["bearing"][name] = value
+    with pytest.raises(SceneError) as err:
+        Bearing.from_dict(d)
+    assert f"bearing.{name} = {float(value)!r} m" in str(err.value), str(err.value)
+    assert hint in str(err.value), str(err.value)
+    if name != "bore":
+        assert "45 mm bore" not in str(err.value), str(err.value)
+
+
+@pytest.mark.parametrize("name", ["element_modulus", "ring_modulus"])
+@pytest.mark.parametrize("value", [208, 208.0e15, float("inf")])
+def test_moduli_in_gpa_are_refused_where_read(name, value):
+    """208 (GPa meant) ended in a load-distribution refusal that blamed the loads."""
+    d = _base()
+    d["materials"][name] = value
+    with pytest.raises(SceneError, match=rf"materials\.{name}") as err:
+        Bearing.from_dict(d)
+    text = str(err.value)
+    assert "Pa" in text and "load" not in text, text
+    if math.isfinite(value):
+        assert (f"materials.{name} = {float(value)!r} Pa lies outside the plausible "
+                "[1e+09, 2e+12] Pa of bearing materials; moduli are in Pa (208 GPa is "
+                "208e9)") in text, text
+    d["materials"][name] = 3.1e11
+    assert getattr(Bearing.from_dict(d).materials, name) == 3.1e11, "Si3N4 is accepted"
+
+
+def test_roughness_in_micrometres_is_refused():
+    d = _base()
+    d["model"]["roughness"] = 0.2
+    with pytest.raises(SceneError, match=r"model\.roughness = 0\.2 m exceeds 1e-05 m .*the "
+                                         r"roughness is in metres \(0\.2 um is 2e-07\)"):
+        Bearing.from_dict(d)
+    d["model"]["roughness"] = 2e-7
+    assert Bearing.from_dict(d).model.roughness == 2e-7
+
+
+def test_oil_temperature_in_kelvin_warns_and_beyond_500_is_refused():
+    """docs/bearing.md: temperatures in deg C; 353 (K meant) was accepted silently."""
+    d = _base()
+    assert input_warnings(Bearing.from_dict(d)) == [], "60 deg C is ordinary"
+    d["operation"]["oil_temperature"] = 353.0
+    (w,) = input_warnings(Bearing.from_dict(d))
+    assert w.startswith("operation.oil_temperature = 353 deg C is above 200 deg C"), w
+    assert "looks like kelvin (353 K is 79.85 deg C)" in w, w
+    d["operation"]["oil_temperature"] = 600.0
+    with pytest.raises(SceneError, match=r"operation\.oil_temperature must lie in \(0, 500\] "
+                                         r"deg C .*got 600\.0 deg C"):
+        Bearing.from_dict(d)
+
+
+def test_contact_angle_in_radians_or_missing():
+    """0.26 (rad meant) was taken as 0.26 deg; a missing angle was reported as 0.0 deg."""
+    d = _angular()
+    d["bearing"]["contact_angle"] = 0.26
+    with pytest.raises(SceneError, match=r"bearing\.contact_angle = 0\.26 deg is below 2 deg "
+                                         r"for an angular-contact-ball bearing: the angle is "
+                                         r"in degrees, and 0\.26 looks like radians \(0\.26 "
+                                         r"rad is 14\.9 deg\)"):
+        Bearing.from_dict(d)
+    del d["bearing"]["contact_angle"]
+    with pytest.raises(SceneError) as err:
+        Bearing.from_dict(d)
+    assert str(err.value).startswith("bearing.contact_angle (deg) is required for an "
+                                     "angular-contact-ball bearing"), str(err.value)
+    assert "0.0 deg" not in str(err.value), str(err.value)
+    d["bearing"]["contact_angle"] = 75.0
+    with pytest.raises(SceneError, match=r"must lie in \[2, 60\) deg for an angular-contact-"
+                                         r"ball bearing, got 75\.0 deg"):
+        Bearing.from_dict(d)
+    g = Bearing.from_dict(_base()).geometry
+    assert g.contact_angle == 0.0, "deep-groove: none given is 0 deg (documented default)"
+
+
+def test_unlisted_skf_series_is_an_error():
+    """empirical.skf_series = "6" made the SKF model 'unavailable' in the results only."""
+    d = _base()
+    d["empirical"]["skf_series"] = "6"
+    with pytest.raises(SceneError, match=r"empirical\.skf_series = '6' \(a series designation, "
+                                         r"no unit\) is not a series with SKF geometry "
+                                         r"constants here; listed for deep-groove-ball "
+                                         r"bearings: '60', '62', '63', '64'"):
+        Bearing.from_dict(d)
+    d = _roller()
+    d.setdefault("empirical", {})["skf_series"] = "62"
+    with pytest.raises(SceneError, match=r"no series is listed for cylindrical-roller "
+                                         r"bearings .* give empirical\.skf_r1"):
+        Bearing.from_dict(d)
+    d["empirical"] = {"skf_r1": 1e-6, "skf_s1": 1e-3}
+    with pytest.raises(SceneError, match=r"give all four SKF geometry constants .* got only "
+                                         r"skf_r1, skf_s1"):
+        Bearing.from_dict(d)

@@ -187,25 +187,137 @@ def test_roller_contacts_on_outlet_graded_grids():
 
 
 def test_a_contact_without_an_estimate_is_named():
-    """6209 on 65^2 contact grids: the most loaded contact has no coarser levels, so the
-    bearing has no error bars; a warning names the contact (they vanished silently)."""
+    """6209 on 65^2 contact grids: the most loaded contact's 33^2 grid does not converge,
+    so it and the bearing have no error bars; a warning names the contact, its grid and
+    the cause (they vanished silently; then the warning blamed 65^2 grids as too coarse to
+    halve, while the other contacts on 65^2 have estimates from 33^2)."""
     b = load_example("6209")
     s = solve_bearing(replace(b, mesh=replace(b.mesh, point_nodes=(65, 65)))).summary()
     assert s["success"] and all(v is None for v in s["error_estimate"].values())
+    assert all(e[r]["error_estimate"]["friction_force"] is not None for e in s["elements"]
+               for r in ("inner", "outer") if e[r]["status"] != "excluded"
+               and (e["index"], r) != (0, "inner")), "65^2 contacts have estimates"
     (w,) = [w for w in s["warnings"] if w.startswith("no error estimate for friction_torque")]
-    assert "contact(s) 0 inner have none" in w, w
+    assert "contact(s) 0 inner (65x65) have none" in w, w
+    assert "grid of twice the spacing did not converge (here e.g. 33x33 below 65x65)" in w, w
+    assert "cannot be halved (an even node count, or fewer than 17 nodes" in w, w
+    assert "65^2" not in w, w
+
+
+#: Result quantities of a contact summary that a failed contact must report as null.
+RESULT_KEYS = ("load_solved", "h_min", "h_central", "p_max", "rolling_resistance",
+               "sliding_friction", "friction_force", "heat_power", "film_parameter",
+               "heat_power_poiseuille_direct", "heat_power_stabilisation", "error_estimate")
 
 
 def test_failed_contacts_are_a_status_not_nan():
+    """A failed contact's summary had its last iterate's forces and heat (as results),
+    and the torque figure dropped the EHL bar without a word."""
+    from bearing_fem.plot_bearing import torque_figure
+
     b = small_roller(solver={"max_iterations": 1, "continuation": False,
-                             "iteration_budget": 1})
+                             "iteration_budget": 1}, mesh={"line_nodes": 201})
     r = solve_bearing(b)
     assert not r.success and r.status == "contacts_failed"
     s = r.summary()
     assert s["friction_torque"] is None and s["heat_power"] is None, "no totals from failures"
     assert s["error_estimate"] is None, "no error bars without totals"
     json.dumps(s, allow_nan=False)
-    assert any(e["inner"]["success"] is False for e in s["elements"] if e["in_load_zone"])
+    loaded = [e[race] for e in s["elements"] for race in ("inner", "outer")
+              if e[race]["status"] != "excluded"]
+    failed = [c for c in loaded if c["success"] is False]
+    assert failed, "the budget of one Newton iteration fails the contacts"
+    for c in failed:
+        assert {k: c[k] for k in RESULT_KEYS} == dict.fromkeys(RESULT_KEYS), c
+        assert c["status"] in ("budget_exhausted", "max_iterations"), c["status"]
+        assert "unsuccessful" in c["message"], c["message"]
+    fig = torque_figure(r)
+    try:
+        labels = [t.get_text() for t in fig.axes[0].get_xticklabels()]
+        notes = [t.get_text() for t in fig.axes[0].texts]
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+    assert f"EHL: {len(failed)} of {len(loaded)} contacts failed" in labels, labels
+    assert any("no EHL torque" in n and f"{len(failed)} of {len(loaded)} contacts failed" in n
+               for n in notes), notes
+
+
+class _FakeResult:
+    """A contact solver result reduced to what contact_summary reads."""
+
+    def __init__(self, success: bool, warnings: list[str]):
+        self.success = success
+        self.warnings = warnings
+        self._summary = {
+            "status": "converged" if success else "stalled", "success": success,
+            "message": "done" if success else "stalled after 50 Newton iterations",
+            "load": 1e5, "rolling_resistance": -1e-16, "sliding_friction": 0.0,
+            "friction_force": -1e-16, "heat_power": 1e-3, "h_min": 1e-7,
+            "h_central": 2e-7, "p_max": 1e9, "heat_power_poiseuille_direct": 1e-3,
+            "heat_power_stabilisation": 0.0, "newton_iterations": 50, "wall_time_s": 0.1,
+            "warnings": warnings,
+            "error_estimate": {k: 1e-3 for k in ("h_central", "h_min", "p_max",
+                                                 "friction_force", "heat_power")}}
+
+    def summary(self):
+        return dict(self._summary)
+
+
+def test_contact_summary_of_a_failed_slice():
+    """One failed slice of a profiled roller: the contact's result quantities are null
+    (not the last iterate's -1e-16 N), the status and message stay, its warnings are
+    marked as about the last iterate, and every slice's warnings name the slice."""
+    from bearing_fem.bearing.contacts import contact_specs
+    from bearing_fem.bearing.kinematics import element_kinematics
+    from bearing_fem.bearing.loads import distribute_loads
+    from bearing_fem.bearing.totals import contact_summary
+
+    b = small_roller(bearing={"profile": "crowned", "crown_drop": 4e-6, "slices": 3})
+    dist = distribute_loads(b)
+    kin = element_kinematics(b.operation.inner_speed, b.geometry.mean_diameter,
+                             b.geometry.element_diameter, dist.alpha_inner, dist.alpha_outer)
+    spec = next(s for s in contact_specs(b, dist, kin) if len(s.keys) == 3)
+    results = {key: _FakeResult(True, ["h_min is not mesh-converged"]) for key in spec.keys}
+    ok = contact_summary(b, spec, results)
+    assert ok["success"] and ok["friction_force"] is not None
+    assert ok["warnings"] == [f"slice {k} of 3: h_min is not mesh-converged" for k in (1, 2, 3)]
+    results[spec.keys[1]] = _FakeResult(False, ["h_min < 0: the film closes"])
+    c = contact_summary(b, spec, results)
+    assert not c["success"] and c["status"] == "stalled", c["status"]
+    assert c["message"].startswith("1 of 3 scene(s) unsuccessful: stalled after 50"), c
+    assert {k: c[k] for k in RESULT_KEYS} == dict.fromkeys(RESULT_KEYS), c
+    assert ("slice 2 of 3, unsuccessful solve, about its last iterate (no result): h_min < 0: "
+            "the film closes") in c["warnings"], c["warnings"]
+    json.dumps(c, allow_nan=False)
+
+
+def test_sliced_roller_warnings_name_slices_and_the_slicing_error():
+    """A crowned roller in 5 slices (and a kelvin oil temperature): the slicing error is
+    not in the error bars, and the bearing's warnings say so; warnings carried up from the
+    slices' solves name the contact and the slice (they named the contact only)."""
+    b = small_roller(bearing={"profile": "crowned", "crown_drop": 4e-6, "slices": 5},
+                     operation={"oil_temperature": 353.0}, mesh={"line_nodes": 201})
+    s = solve_bearing(b).summary()
+    assert s["success"], s["message"]
+    w = s["warnings"]
+    assert w[0].startswith("operation.oil_temperature = 353 deg C is above 200 deg C"), w[0]
+    assert w[1].startswith("bearing.slices = 5, below the recommended minimum of 11 for a "
+                           "crowned roller: the error estimates are the grid discretisation "
+                           "errors of each slice's contact and exclude the slicing error"), w[1]
+    carried = [x for x in w if x.startswith("contact")]
+    assert carried and all(", slice " in x.split(": ")[0] for x in carried), carried
+    assert any(x.startswith("contact 0 inner, slice 3 of 5: ") for x in carried), carried
+    c = s["elements"][0]["inner"]
+    assert c["warnings"] and all(x.startswith("slice ") and " of 5: " in x
+                                 for x in c["warnings"]), c["warnings"]
+    d = b.to_dict()
+    d["bearing"]["slices"] = 11
+    d["operation"]["oil_temperature"] = 80.0
+    from bearing_fem.bearing.description import input_warnings
+
+    assert input_warnings(Bearing.from_dict(d)) == [], "11 slices (the default), 80 deg C"
 
 
 def test_solve_bearing_rejects_non_bearing():

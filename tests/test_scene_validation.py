@@ -197,6 +197,11 @@ CASES = [
     _case("mesh.y_range-order", {"mesh.y_range": [0.0, 3.0]}, "mesh.y_range",
           base="point"),
     _case("mesh.y_range-type", {"mesh.y_range": "wide"}, "mesh.y_range", base="point"),
+    # elastic scenes with a load: ranges in Hertz half-widths must contain [-1, 1]
+    _case("mesh.x_range-in-metres", {"mesh.x_range": [-0.0005, 0.0003]}, "mesh.x_range",
+          "[-0.0005, 0.0003]", "Hertz half-width", "[-1, 1]", base="point"),
+    _case("mesh.y_range-inside-hertz", {"mesh.y_range": [-0.9, 0.9]}, "mesh.y_range",
+          "[-0.9, 0.9]", "Hertz zone", base="point"),
     _case("mesh.grading-value", {"mesh.grading": "graded"}, "mesh.grading", "'outlet'"),
     _case("mesh.grading-type", {"mesh.grading": 1}, "mesh.grading"),
     _case("mesh.grading-outlet-on-point", {"mesh.grading": "outlet"}, "mesh.grading",

@@ -262,3 +262,41 @@ def test_concurrent_writers_from_several_processes(tmp_path):
     with sqlite3.connect(path) as conn:
         assert conn.execute("SELECT COUNT(*) FROM runs WHERE status = 'linear'"
                             ).fetchone()[0] == writers * n + 1
+
+
+def test_error_estimate_columns_are_dimensionless(tmp_path):
+    """The run store's error_estimate.* columns (relative errors) had no unit; they get
+    "1", the unit of the summaries' other dimensionless ratios (friction_coefficient,
+    film_parameter_min)."""
+    import bearing_fem as bf
+    from bearing_fem.bearing import Bearing, solve_bearing
+
+    scene = Scene.from_dict({"contact": {"kind": "line", "rx": 0.01},
+                             "materials": {"reduced_modulus": 2.2e11},
+                             "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+                             "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 2e5},
+                             "mesh": {"nodes": 401}})
+    contact = bf.solve(scene).summary()
+    assert contact["units"]["friction_coefficient"] == "1"
+    bearing = solve_bearing(Bearing.from_dict({
+        "bearing": {"type": "cylindrical-roller", "bore": 0.03, "outside_diameter": 0.062,
+                    "element_diameter": 0.009, "elements": 13, "effective_length": 0.009,
+                    "pitch_diameter": 0.046, "radial_clearance": 5e-6},
+        "lubricant": {"viscosity": 0.05, "piezo": 2e-8},
+        "operation": {"inner_rpm": 1500.0, "radial_load": 2000.0},
+        "mesh": {"line_nodes": 201}})).summary()
+    assert bearing["units"]["film_parameter_min"] == "1"
+    for summary in (contact, bearing):
+        cols, units = flatten_summary(summary)
+        rel = [c for c, v in cols.items()
+               if c.startswith("error_estimate.") and isinstance(v, float)]
+        assert len(rel) >= 4, cols
+        assert {c: units.get(c) for c in rel} == dict.fromkeys(rel, "1"), units
+        assert "error_estimate.levels" not in units, "a count, not a ratio"
+        with RunStore(tmp_path / "runs.sqlite") as store:
+            store.write(Case({"i": len(rel)}, rigid(1e-6 * len(rel))),
+                        {"status": summary["status"], "success": True, "message": "",
+                         "summary": summary, "result_path": None, "run_time_s": 0.1,
+                         "worker": "w", "attempts": 1})
+            info = store.column_info()
+        assert all(info[c]["unit"] == "1" for c in rel), {c: info[c] for c in rel}

@@ -68,6 +68,9 @@ class ContactSpec:
         Line contacts: length [m] each scene's per-metre results are multiplied by.
     positions : list of float
         Line contacts: axial position of each scene's slice from the roller middle [m].
+    slice_numbers : list of int
+        Profiled rollers: the number of each scene's slice, 1 .. ``geometry.n_slices``
+        from one roller end (unloaded slices have no scene); [] otherwise.
     keys : list of str
         :func:`scene_key` of each scene.
     excluded : str or None
@@ -85,6 +88,7 @@ class ContactSpec:
     scenes: list[Scene] = field(default_factory=list)
     widths: list[float] = field(default_factory=list)
     positions: list[float] = field(default_factory=list)
+    slice_numbers: list[int] = field(default_factory=list)
     keys: list[str] = field(default_factory=list)
     excluded: str | None = None
 
@@ -189,9 +193,10 @@ def _add_scenes(spec: ContactSpec, bearing: Bearing, dist: LoadDistribution, j: 
             if qk <= threshold / g.n_slices:
                 continue
             spec.scenes.append(_scene(bearing, "line", rx, None, float(wk), float(qk / wk),
-                                      u, eta, alpha, f"{title}, slice {k}"))
+                                      u, eta, alpha, f"{title}, slice {k + 1} of {g.n_slices}"))
             spec.widths.append(float(wk))
             spec.positions.append(float(yk))
+            spec.slice_numbers.append(k + 1)
 
 
 def _in_bearing_terms(bearing: Bearing, spec: ContactSpec, exc: SceneError) -> str:

@@ -20,14 +20,16 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import (GRADINGS, SolverSpec, Traction, field_bool, field_choice, field_integer,
-                     field_nonnegative, field_number, field_piezo, field_piezo_table,
-                     field_poisson, field_positive, field_range, parse_toml, read_text_file,
+from ..scene import (GRADINGS, TEMPERATURE_RANGE, SolverSpec, Traction, field_bool,
+                     field_choice, field_integer, field_name_prefix, field_nonnegative,
+                     field_number, field_piezo, field_piezo_table, field_poisson,
+                     field_positive, field_range, parse_toml, read_text_file,
                      sections_from_dict, sections_to_dict)
 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
-           "BEARING_TYPES", "MATERIAL_PRESETS", "load_example", "example_names"]
+           "BEARING_TYPES", "MATERIAL_PRESETS", "load_example", "example_names",
+           "input_warnings"]
 
 #: Bearing types: radial deep-groove and angular-contact ball bearings (one row),
 #: cylindrical roller bearings (any number of rows) and tapered roller bearings
@@ -36,6 +38,8 @@ BEARING_TYPES = ("deep-groove-ball", "angular-contact-ball", "cylindrical-roller
                  "tapered-roller")
 BALL_TYPES = ("deep-groove-ball", "angular-contact-ball")
 ROLLER_TYPES = ("cylindrical-roller", "tapered-roller")
+#: Types with a nominal contact angle (``bearing.contact_angle``, required).
+ANGULAR_TYPES = ("angular-contact-ball", "tapered-roller")
 
 #: Material presets: name -> (Young's modulus [Pa], Poisson ratio [-], density [kg/m^3]).
 #: Bearing steel (AISI 52100) and hot-isostatically pressed silicon nitride (Si3N4).
@@ -44,6 +48,18 @@ MATERIAL_PRESETS: dict[str, tuple[float, float, float]] = {
     "si3n4": (3.10e11, 0.26, 3200.0),
 }
 
+#: Geometry constants (R1, R2, S1, S2) of the SKF model for deep groove ball bearing
+#: series, transcribed from the SKF catalogue's table of geometry constants for rolling
+#: and sliding frictional moments. Series not listed (e.g. full-complement cylindrical
+#: and angular-contact spindle bearings) need their constants from the catalogue
+#: (``[empirical] skf_r1 ...``). Used by :mod:`~bearing_fem.bearing.empirical`; here
+#: because :class:`Bearing` checks ``empirical.skf_series`` against it.
+SKF_GEOMETRY_CONSTANTS: dict[tuple[str, str], tuple[float, float, float, float]] = {
+    ("deep-groove-ball", "60"): (4.1e-7, 1.7, 3.73e-3, 14.6),
+    ("deep-groove-ball", "62"): (3.9e-7, 1.7, 3.23e-3, 36.5),
+    ("deep-groove-ball", "63"): (3.7e-7, 1.7, 2.84e-3, 92.8),
+    ("deep-groove-ball", "64"): (3.6e-7, 1.7, 2.43e-3, 198.0),
+}
 
 # ---------------------------------------------------------------------------------------
 # validation helpers (besides the scene's field validators, bearing_fem.scene)
@@ -62,18 +78,78 @@ MAX_CROWN_DROP_FRACTION = 0.01
 #: and tunnel-boring bearings of several metres. Beyond it the value is almost surely in
 #: millimetres (a 45 mm bore given as 45).
 BEARING_LENGTH_RANGE = (1e-4, 10.0)
+#: Longest effective roller length as a multiple of the roller diameter [-]: needle
+#: rollers reach about 10 D_w (ISO 3096); beyond twice that the length is a unit slip (a
+#: 10 mm roller given as 10.0 m).
+MAX_ROLLER_LENGTH_RATIO = 20.0
+#: Young's moduli of rings and rolling elements [Pa]: from bearing polymers (PEEK, about
+#: 4e9 Pa; nothing softer carries a rolling contact) to beyond diamond (1.05e12 Pa).
+#: Below it the value is almost surely in GPa (208 for 208 GPa).
+BEARING_MODULUS_RANGE = (1e9, 2e12)
+#: Largest composite rms roughness sigma [m]: the finished surfaces of rolling bearings
+#: have 0.05..0.5 um, rough machined ones a few micrometres; beyond 10 um the film
+#: parameter h_min/sigma of any EHL film is far below 0.01 and meaningless, and the value
+#: is a unit slip (0.2 for 0.2 um).
+MAX_ROUGHNESS = 1e-5
+#: Oil temperature [deg C] above which a bearing's warnings say that it looks like
+#: kelvin: mineral oils oxidise quickly above about 150 deg C and few synthetic oils run
+#: above 200 deg C, while 273..473 are common temperatures in kelvin.
+KELVIN_WARNING_TEMPERATURE = 200.0
+#: Smallest nominal contact angle [deg] of an angular-contact ball or tapered roller
+#: bearing: real ones have 10..40 deg; below 2 deg the value is almost surely in radians
+#: (0.26 for 15 deg) and is refused.
+MIN_NOMINAL_CONTACT_ANGLE = 2.0
+#: Fewest slices along a profiled roller that docs/bearing.md ("Slicing error")
+#: recommends (the default count): with fewer, a bearing's warnings say that the error
+#: bars exclude the slicing error (measured: 5 slices put the torque 8 % off).
+MIN_RECOMMENDED_SLICES = 11
+
+#: Words of the length fields in the hints of their messages.
+_LENGTH_WORDS = {"bore": "bore", "outside_diameter": "outside diameter",
+                 "element_diameter": "element diameter", "pitch_diameter": "pitch diameter",
+                 "width": "width", "effective_length": "effective length"}
+
+
+def _an(word: str) -> str:
+    """``word`` with its indefinite article ("an angular-contact-ball", "a tapered-roller")."""
+    return f"{'an' if str(word)[:1].lower() in 'aeiou' else 'a'} {word}"
+
+
+def _metres_hint(name: str, value: float) -> str:
+    """The hint of a bearing length field's message, with the field's own value: read as
+    millimetres when it is large (``pitch_diameter = 65`` -> "a pitch diameter of 65 mm
+    is 0.065"), else a reminder of the unit."""
+    what = _LENGTH_WORDS.get(name, name.replace("_", " "))
+    if value >= 1.0:
+        return f"dimensions are in metres ({_an(what)} of {value:g} mm is {value * 1e-3:g})"
+    if value < BEARING_LENGTH_RANGE[0]:
+        return (f"dimensions are in metres, and {_an(what)} below "
+                f"{BEARING_LENGTH_RANGE[0] * 1e3:g} mm is no bearing dimension")
+    return "dimensions are in metres"
 
 
 def _length(obj: Any, name: str) -> float:
     """Field ``name`` as a length in :data:`BEARING_LENGTH_RANGE` [m], else SceneError
-    naming it (a millimetre value given as metres, mostly)."""
+    naming it, its value and the unit (a millimetre value given as metres, mostly)."""
     value = field_positive(obj, name, "m")
     lo, hi = BEARING_LENGTH_RANGE
     if not lo <= value <= hi:
         raise SceneError(f"bearing.{name} = {value!r} m lies outside the plausible "
-                         f"[{lo:g}, {hi:g}] m; dimensions are in metres (a 45 mm bore is "
-                         "0.045)")
+                         f"[{lo:g}, {hi:g}] m; {_metres_hint(name, value)}")
     return value
+
+
+def _modulus(obj: Any, name: str) -> None:
+    """Optional Young's modulus ``name`` [Pa] in :data:`BEARING_MODULUS_RANGE`, else
+    SceneError naming the field, the value and the unit (GPa given as Pa, mostly)."""
+    if getattr(obj, name) is None:
+        return
+    value = field_positive(obj, name, "Pa")
+    lo, hi = BEARING_MODULUS_RANGE
+    if not lo <= value <= hi:
+        raise SceneError(f"{field_name_prefix(obj)}.{name} = {value!r} Pa lies outside the "
+                         f"plausible [{lo:g}, {hi:g}] Pa of bearing materials; moduli are "
+                         "in Pa (208 GPa is 208e9)")
 
 
 #: Largest free contact angle of a deep-groove ball bearing [deg] that its radial
@@ -109,11 +185,13 @@ class Geometry:
         Rows of rolling elements (ball bearings: 1). The rows share the radial load
         equally (rigid rings, no tilt).
     width : float or None
-        Bearing width B [m] (informative).
-    contact_angle : float
-        Nominal (unloaded) contact angle [deg]: angular-contact ball and tapered roller
-        bearings; must be 0 for deep-groove (its free angle follows from the clearance)
-        and cylindrical roller bearings.
+        Bearing width B [m]; when given, the rows of rollers must fit in it
+        (rows l_we cos(beta) <= B).
+    contact_angle : float or None
+        Nominal (unloaded) contact angle [deg]: required for angular-contact ball and
+        tapered roller bearings, in [:data:`MIN_NOMINAL_CONTACT_ANGLE`, 60) deg (a smaller
+        one is taken for radians and refused); 0 or none for deep-groove (its free angle
+        follows from the clearance) and cylindrical roller bearings (stored as 0).
     radial_clearance : float
         Radial internal clearance c_r [m] (half the diametral clearance P_d), >= 0.
         Angular-contact ball bearings take it from the contact angle instead.
@@ -121,7 +199,8 @@ class Geometry:
         Groove radius over ball diameter f = r/D_w [-], in (0.5, 0.6]; balls only,
         default 0.52 and 0.53.
     effective_length : float or None
-        Effective roller length l_we [m]; rollers only (required).
+        Effective roller length l_we [m]; rollers only (required), at most
+        :data:`MAX_ROLLER_LENGTH_RATIO` D_w and, with ``width``, within the width.
     profile : {"straight", "crowned", "logarithmic"}
         Roller profile; a profiled roller is cut into ``slices`` along its length.
     crown_drop : float or None
@@ -148,7 +227,7 @@ class Geometry:
     pitch_diameter: float | None = None
     rows: int = 1
     width: float | None = None
-    contact_angle: float = 0.0
+    contact_angle: float | None = None
     radial_clearance: float = 0.0
     inner_conformity: float | None = None
     outer_conformity: float | None = None
@@ -186,7 +265,7 @@ class Geometry:
                              f"the pitch circle pi d_m = {math.pi * dm!r} m")
         if self.width is not None:
             _length(self, "width")
-        alpha = field_number(self, "contact_angle", "deg")
+        alpha = self._contact_angle()
         field_nonnegative(self, "radial_clearance", "m")
         field_number(self, "first_element_azimuth", "deg")
         _optional_positive(self, "static_load_rating", "N")
@@ -194,13 +273,35 @@ class Geometry:
             self._check_ball()
         else:
             self._check_roller()
-        if self.type in ("angular-contact-ball", "tapered-roller"):
-            if not 0.0 < alpha < 60.0:
-                raise SceneError(f"bearing.contact_angle must lie in (0, 60) deg for a "
-                                 f"{self.type} bearing, got {alpha!r} deg")
-        elif alpha != 0.0:
-            raise SceneError(f"bearing.contact_angle applies to angular-contact ball and "
-                             f"tapered roller bearings, got {alpha!r} deg for {self.type!r}")
+
+    def _contact_angle(self) -> float:
+        """The nominal contact angle [deg]: required (and at least
+        :data:`MIN_NOMINAL_CONTACT_ANGLE`) for angular-contact ball and tapered roller
+        bearings, 0 (given or not) for the others."""
+        angular = self.type in ANGULAR_TYPES
+        if self.contact_angle is None:
+            if angular:
+                raise SceneError(f"bearing.contact_angle (deg) is required for "
+                                 f"{_an(self.type)} bearing: its nominal contact angle, in "
+                                 f"[{MIN_NOMINAL_CONTACT_ANGLE:g}, 60) deg")
+            object.__setattr__(self, "contact_angle", 0.0)
+        alpha = field_number(self, "contact_angle", "deg")
+        if not angular:
+            if alpha != 0.0:
+                raise SceneError(f"bearing.contact_angle applies to angular-contact ball and "
+                                 f"tapered roller bearings, got {alpha!r} deg for "
+                                 f"{self.type!r}")
+            return alpha
+        if 0.0 < alpha < MIN_NOMINAL_CONTACT_ANGLE:
+            raise SceneError(f"bearing.contact_angle = {alpha!r} deg is below "
+                             f"{MIN_NOMINAL_CONTACT_ANGLE:g} deg for {_an(self.type)} bearing: "
+                             f"the angle is in degrees, and {alpha!r} looks like radians "
+                             f"({alpha!r} rad is {math.degrees(alpha):.4g} deg)")
+        if not 0.0 < alpha < 60.0:
+            raise SceneError(f"bearing.contact_angle must lie in "
+                             f"[{MIN_NOMINAL_CONTACT_ANGLE:g}, 60) deg for {_an(self.type)} "
+                             f"bearing, got {alpha!r} deg")
+        return alpha
 
     def _check_ball(self) -> None:
         if self.rows != 1:
@@ -239,9 +340,22 @@ class Geometry:
                 raise SceneError(f"bearing.{name} applies to ball bearings only, got "
                                  f"{getattr(self, name)!r} for {self.type!r}")
         if self.effective_length is None:
-            raise SceneError(f"bearing.effective_length (m) is required for a {self.type} "
+            raise SceneError(f"bearing.effective_length (m) is required for {_an(self.type)} "
                              "bearing")
         lw = _length(self, "effective_length")
+        dw = self.element_diameter
+        if lw > MAX_ROLLER_LENGTH_RATIO * dw:
+            raise SceneError(f"bearing.effective_length = {lw!r} m exceeds "
+                             f"{MAX_ROLLER_LENGTH_RATIO:g} roller diameters "
+                             f"({MAX_ROLLER_LENGTH_RATIO * dw:.4g} m; needle rollers reach "
+                             f"about 10); {_metres_hint('effective_length', lw)}")
+        if self.width is not None:
+            extent = self.rows * lw * math.cos(math.radians(self.contact_angle))
+            if extent > self.width * (1.0 + 1e-9):
+                raise SceneError(f"bearing.effective_length = {lw!r} m does not fit in "
+                                 f"bearing.width = {self.width!r} m: {self.rows} row(s) of "
+                                 f"rollers that long span {extent:.4g} m axially (rows l_we "
+                                 f"cos(contact_angle)); {_metres_hint('effective_length', lw)}")
         limit = MAX_ROLLER_CLEARANCE_FRACTION * self.element_diameter
         if self.radial_clearance > limit:
             raise SceneError(f"bearing.radial_clearance = {self.radial_clearance!r} m exceeds "
@@ -312,7 +426,7 @@ class BearingMaterials:
     rings, elements : {"steel", "si3n4"}
         Material presets (:data:`MATERIAL_PRESETS`).
     ring_modulus, element_modulus : float or None
-        Young's moduli [Pa]; None: from the preset.
+        Young's moduli [Pa], in :data:`BEARING_MODULUS_RANGE`; None: from the preset.
     ring_poisson, element_poisson : float or None
         Poisson ratios [-]; None: from the preset.
     element_density : float or None
@@ -332,7 +446,7 @@ class BearingMaterials:
         field_choice(self, "rings", tuple(MATERIAL_PRESETS))
         field_choice(self, "elements", tuple(MATERIAL_PRESETS))
         for name in ("ring_modulus", "element_modulus"):
-            _optional_positive(self, name, "Pa")
+            _modulus(self, name)
         _optional_positive(self, "element_density", "kg/m^3")
         for name in ("ring_poisson", "element_poisson"):
             if getattr(self, name) is not None:
@@ -449,8 +563,10 @@ class Operation:
     radial_load, axial_load : float
         Fr, Fa [N], >= 0, not both zero. The radial load acts along azimuth 0.
     oil_temperature : float or None
-        Oil (and bearing) temperature [deg C]; required by a temperature law and by the
-        thermal model.
+        Oil (and bearing) temperature [deg C], in (0, 500] deg C (``TEMPERATURE_RANGE`` of
+        the scenes); required by a temperature law and by the thermal model. Above
+        :data:`KELVIN_WARNING_TEMPERATURE` the bearing's warnings say it looks like kelvin
+        (:func:`input_warnings`).
     """
 
     _section = "operation"
@@ -468,9 +584,11 @@ class Operation:
                              "load (an unloaded bearing has no EHL contacts)")
         if self.oil_temperature is not None:
             t = field_number(self, "oil_temperature", "deg C")
-            if t <= 0.0:
-                raise SceneError(f"operation.oil_temperature must be > 0 deg C (Prokofiev "
-                                 f"law), got {t!r}")
+            t_lo, t_hi = TEMPERATURE_RANGE
+            if not t_lo < t <= t_hi:
+                raise SceneError(f"operation.oil_temperature must lie in ({t_lo:g}, {t_hi:g}] "
+                                 f"deg C (the Prokofiev law needs t > 0 deg C; oils decompose "
+                                 f"below {t_hi:g} deg C), got {t!r} deg C")
 
     @property
     def inner_speed(self) -> float:
@@ -495,7 +613,7 @@ class BearingModel:
         contacts only).
     roughness : float or None
         Composite rms roughness sigma = sqrt(Rq1^2 + Rq2^2) [m] for the film parameter
-        lambda = h_min / sigma; None: lambda not reported.
+        lambda = h_min / sigma, at most :data:`MAX_ROUGHNESS`; None: lambda not reported.
     min_load_fraction : float
         Elements whose load is below this fraction of the largest element load are not
         solved (reported as excluded, with the reason) [-]. 0: solve every element
@@ -514,6 +632,11 @@ class BearingModel:
         field_choice(self, "thermal", ("none", "patch"))
         field_choice(self, "elasticity", ("half-space", "local"))
         _optional_positive(self, "roughness", "m")
+        if self.roughness is not None and self.roughness > MAX_ROUGHNESS:
+            raise SceneError(f"model.roughness = {self.roughness!r} m exceeds {MAX_ROUGHNESS:g} m "
+                             "(10 um rms, beyond any lubricated rolling surface); the "
+                             f"roughness is in metres ({self.roughness:g} um is "
+                             f"{self.roughness * 1e-6:g})")
         v = field_nonnegative(self, "min_load_fraction", "(dimensionless)")
         if v >= 1.0:
             raise SceneError(f"model.min_load_fraction must be < 1 (dimensionless), got {v!r}")
@@ -530,7 +653,8 @@ class BearingMesh:
     point_nodes : (int, int) or None
         (nx, ny) of each point-contact scene.
     x_range, y_range : (float, float) or None
-        Domain in Hertz half-widths (``y_range``: point contacts).
+        Domain in Hertz half-widths (``y_range``: point contacts); must contain the Hertz
+        zone [-1, 1] (:func:`bearing_fem.scene.require_hertz_zone`).
     line_grading : {"uniform", "outlet"} or None
         Node spacing of each line-contact scene (``mesh.grading`` of a scene: "outlet"
         refines the grid at the outlet spike, docs/line_contact.md "Automatic grading");
@@ -559,8 +683,8 @@ class BearingMesh:
                 raise SceneError(f"mesh.point_nodes must be two integers [nx, ny] in "
                                  f"[9, 2049], got {n!r}")
             object.__setattr__(self, "point_nodes", (int(n[0]), int(n[1])))
-        field_range(self, "x_range")
-        field_range(self, "y_range")
+        field_range(self, "x_range", hertz_zone=True)  # every bearing contact is elastic
+        field_range(self, "y_range", hertz_zone=True)  # and loaded: Hertz units
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -619,10 +743,12 @@ class EmpiricalOptions:
         Reduced friction coefficient f_pr [-] of the bore-based form M1 = f_pr P d/2
         (Yachikov & Vostrikov 2015); None: that model is not evaluated.
     skf_series : str or None
-        Bearing series for the SKF four-component model's geometry constants
-        (:data:`bearing_fem.bearing.empirical.SKF_GEOMETRY_CONSTANTS`).
+        Bearing series for the SKF four-component model's geometry constants: one listed
+        for the bearing's type in
+        :data:`bearing_fem.bearing.empirical.SKF_GEOMETRY_CONSTANTS` (checked by
+        :class:`Bearing`; another series is an error).
     skf_r1, skf_r2, skf_s1, skf_s2 : float or None
-        Geometry constants given directly (override the series).
+        Geometry constants given directly (all four or none; they override the series).
     lubrication : {"oil-bath", "oil-jet", "oil-air", "grease"}
         Lubrication method (SKF replenishment constant).
     nikitin_flow_ratio : float or None
@@ -652,6 +778,12 @@ class EmpiricalOptions:
                                else "(catalogue units)")
         if self.skf_series is not None and not isinstance(self.skf_series, str):
             raise SceneError(f"empirical.skf_series must be a string, got {self.skf_series!r}")
+        consts = ("skf_r1", "skf_r2", "skf_s1", "skf_s2")
+        given = [n for n in consts if getattr(self, n) is not None]
+        if given and len(given) != len(consts):
+            raise SceneError(f"empirical: give all four SKF geometry constants "
+                             f"{', '.join('empirical.' + n for n in consts)} (catalogue "
+                             f"units) or none; got only {', '.join(given)}")
         field_choice(self, "lubrication", ("oil-bath", "oil-jet", "oil-air", "grease"))
         field_choice(self, "nikitin_set", ("steel", "ceramic", "joint"))
 
@@ -733,6 +865,7 @@ class Bearing:
         if model.centrifugal and g.type in ROLLER_TYPES and g.profile != "straight":
             raise SceneError("model.centrifugal with a profiled roller is not modelled; "
                              "use bearing.profile = 'straight' or model.centrifugal = false")
+        self._check_skf_series()
         if self.mesh.point_nodes is not None and not g.is_ball:
             raise SceneError("mesh.point_nodes applies to ball bearings; use mesh.line_nodes")
         if self.mesh.line_nodes is not None and g.is_ball:
@@ -745,6 +878,22 @@ class Bearing:
                              "roller bearings with model.elasticity = 'half-space' and "
                              f"model.thermal = 'none'; got {g.type!r}, model.elasticity = "
                              f"{model.elasticity!r}, model.thermal = {model.thermal!r}")
+
+    def _check_skf_series(self) -> None:
+        """``empirical.skf_series``: one listed for this type in SKF_GEOMETRY_CONSTANTS."""
+        series = self.empirical.skf_series
+        if series is None:
+            return
+        kind = self.geometry.type
+        listed = sorted(s for t, s in SKF_GEOMETRY_CONSTANTS if t == kind)
+        if series in listed:
+            return
+        have = (f"listed for {kind} bearings: {', '.join(map(repr, listed))}" if listed else
+                f"no series is listed for {kind} bearings")
+        raise SceneError(f"empirical.skf_series = {series!r} (a series designation, no unit) "
+                         f"is not a series with SKF geometry constants here; {have} "
+                         "(SKF_GEOMETRY_CONSTANTS); for another series give empirical.skf_r1, "
+                         "skf_r2, skf_s1, skf_s2 from the SKF catalogue")
 
     # ------------------------------------------------------------------------------
     @classmethod
@@ -772,6 +921,38 @@ class Bearing:
     def replace(self, **sections: Any) -> "Bearing":
         """Copy with whole sections replaced (``dataclasses.replace``)."""
         return replace(self, **sections)
+
+
+def input_warnings(bearing: Bearing) -> list[str]:
+    """Warnings about accepted values that look like a unit slip or limit the accuracy
+    (:func:`~bearing_fem.bearing.solve_bearing` puts them first in the bearing's
+    ``warnings``).
+
+    * ``operation.oil_temperature`` or ``lubricant.reference_temperature`` above
+      :data:`KELVIN_WARNING_TEMPERATURE` [deg C]: it looks like kelvin;
+    * a profiled roller with fewer than :data:`MIN_RECOMMENDED_SLICES` slices: the error
+      bars exclude the slicing error, which is then of several per cent.
+
+    Returns
+    -------
+    list of str
+    """
+    out = []
+    temps = (("operation.oil_temperature", bearing.operation.oil_temperature),
+             ("lubricant.reference_temperature", bearing.lubricant.reference_temperature))
+    for name, t in temps:
+        if t is not None and t > KELVIN_WARNING_TEMPERATURE:
+            out.append(f"{name} = {t:g} deg C is above {KELVIN_WARNING_TEMPERATURE:g} deg C, "
+                       "hotter than lubricating oils run: temperatures are in deg C, and "
+                       f"this looks like kelvin ({t:g} K is {t - 273.15:g} deg C)")
+    g = bearing.geometry
+    if not g.is_ball and g.profile != "straight" and g.n_slices < MIN_RECOMMENDED_SLICES:
+        out.append(f"bearing.slices = {g.n_slices}, below the recommended minimum of "
+                   f"{MIN_RECOMMENDED_SLICES} for a {g.profile} roller: the error estimates "
+                   "are the grid discretisation errors of each slice's contact and exclude "
+                   "the slicing error along the roller, which with so few slices is several "
+                   "per cent (docs/bearing.md, \"Slicing error\")")
+    return out
 
 
 def example_names() -> list[str]:

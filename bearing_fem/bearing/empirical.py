@@ -15,7 +15,8 @@ docs/bearing.md, "Empirical models"). They use the catalogue units of their sour
 * Film formulas: Hamrock-Dowson, Dowson-Higginson, Pan-Hamrock, Moes, Nijenbanning and
   the five sets quoted by Zhirkin et al. (all from :mod:`bearing_fem.formulas`).
 
-Only math/numpy and :mod:`bearing_fem.formulas` here.
+Only math/numpy, :mod:`bearing_fem.formulas` and the SKF table of the bearing description
+(``SKF_GEOMETRY_CONSTANTS``, re-exported here) are used.
 """
 from __future__ import annotations
 
@@ -24,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from .. import formulas
 from ..validation import require_nonnegative, require_positive
+from .description import SKF_GEOMETRY_CONSTANTS
 
 if TYPE_CHECKING:
     from .description import Bearing
@@ -187,17 +189,8 @@ def palmgren_torque(kinematic_viscosity_mm2s: float, rpm: float, mean_diameter_m
 # ---------------------------------------------------------------------------------------
 # SKF four-component model (SKF rolling bearings catalogue, section "Friction")
 # ---------------------------------------------------------------------------------------
-#: Geometry constants (R1, R2, S1, S2) of the SKF model for deep groove ball bearing
-#: series, transcribed from the SKF catalogue's table of geometry constants for rolling
-#: and sliding frictional moments. Series not listed (e.g. full-complement cylindrical
-#: and angular-contact spindle bearings) need their constants from the catalogue
-#: (``[empirical] skf_r1 ...``); without them the model is reported as unavailable.
-SKF_GEOMETRY_CONSTANTS: dict[tuple[str, str], tuple[float, float, float, float]] = {
-    ("deep-groove-ball", "60"): (4.1e-7, 1.7, 3.73e-3, 14.6),
-    ("deep-groove-ball", "62"): (3.9e-7, 1.7, 3.23e-3, 36.5),
-    ("deep-groove-ball", "63"): (3.7e-7, 1.7, 2.84e-3, 92.8),
-    ("deep-groove-ball", "64"): (3.6e-7, 1.7, 2.43e-3, 198.0),
-}
+# SKF_GEOMETRY_CONSTANTS (R1, R2, S1, S2 by type and series) is defined with the
+# bearing description, which checks empirical.skf_series against it.
 #: Bearing-type constant K_z of the replenishment/starvation factor (SKF).
 SKF_KZ: dict[str, float] = {"deep-groove-ball": 3.1, "angular-contact-ball": 4.4,
                             "cylindrical-roller": 5.1, "tapered-roller": 6.0}

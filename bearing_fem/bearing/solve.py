@@ -28,11 +28,11 @@ from ..errors import SceneError
 from ..post import ERROR_WARNING_THRESHOLD
 from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
-from .description import Bearing
+from .description import Bearing, input_warnings
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, distribute_loads
-from .totals import bearing_totals, contact_summary
+from .totals import LAST_ITERATE_NOTE, bearing_totals, contact_summary, slice_label
 
 __all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
 
@@ -55,6 +55,10 @@ BEARING_UNITS = {
     "load_distribution.radial_displacement": "m", "load_distribution.axial_displacement": "m",
     "kinematics.cage_rpm": "1/min", "kinematics.entrainment_speed": "m/s",
     "empirical.*.torque": "N m", "empirical.*.heat_power": "W",
+    # relative discretisation errors (the run store's error_estimate.* columns)
+    "error_estimate.friction_torque": "1", "error_estimate.heat_power": "1",
+    "error_estimate.h_min": "1", "error_estimate.p_max": "1",
+    "elements.inner/outer.error_estimate.*": "1",
 }
 
 
@@ -258,7 +262,7 @@ def solve_bearing(bearing: Bearing, *,
         raise SceneError(f"solve_bearing() needs a Bearing, got {type(bearing).__name__}")
     t0 = time.perf_counter()
     g, op = bearing.geometry, bearing.operation
-    warnings: list[str] = []
+    warnings: list[str] = input_warnings(bearing)
     try:
         dist = distribute_loads(bearing)
     except (RuntimeError, ValueError) as exc:
@@ -309,14 +313,7 @@ def solve_bearing(bearing: Bearing, *,
     est = totals.get("error_estimate") or {}
     unknown = [k for k, v in est.items() if v is None]
     if unknown:
-        without = [f"{e['index']} {c['raceway']}" for e in elements
-                   for c in (e["inner"], e["outer"])
-                   if c["status"] != "excluded" and (c.get("error_estimate") is None or any(
-                       v is None for v in c["error_estimate"].values()))]
-        warnings.append(f"no error estimate for {', '.join(unknown)}: contact(s) "
-                        f"{', '.join(without[:4])}{' ...' if len(without) > 4 else ''} have "
-                        "none (no coarser grid of theirs converged, or their grid cannot be "
-                        "halved, e.g. point grids of 65^2: use finer contact grids)")
+        warnings.append(_missing_estimate_warning(bearing, specs, results, elements, unknown))
     loose = {k: v for k, v in est.items() if v is not None and v > ERROR_WARNING_THRESHOLD}
     if loose:
         warnings.append("estimated discretisation error above "
@@ -328,17 +325,21 @@ def solve_bearing(bearing: Bearing, *,
         warnings.append(f"friction torque x omega differs from the contacts' heat power by "
                         f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
                         "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
-    # the contact solver's warnings, once per distinct scene, naming the contacts using it
+    # the contact solver's warnings, once per distinct scene, naming the contacts (and the
+    # slices of a profiled roller) using it
     users: dict[str, list[str]] = {}
     for spec in specs:
-        for key in spec.keys:
-            name = f"{spec.element} {spec.raceway}"
+        for i, key in enumerate(spec.keys):
+            label = slice_label(spec, i, g.n_slices)
+            name = f"{spec.element} {spec.raceway}" + (f", {label}" if label else "")
             if name not in users.setdefault(key, []):
                 users[key].append(name)
     for key, names in users.items():
+        sep = "; " if any("," in n for n in names) else ", "
+        who = sep.join(names[:4]) + (f" (+{len(names) - 4} more)" if len(names) > 4 else "")
+        note = "" if results[key].success else f" ({LAST_ITERATE_NOTE})"
         for w in results[key].warnings:
-            who = ", ".join(names[:4]) + (f" (+{len(names) - 4} more)" if len(names) > 4 else "")
-            warnings.append(f"contact{'s' if len(names) > 1 else ''} {who}: {w}")
+            warnings.append(f"contact{'s' if len(names) > 1 else ''} {who}{note}: {w}")
     n_solved = len(results)
     n_scenes = sum(len(s.keys) for s in specs)
     if failed:
@@ -356,6 +357,61 @@ def solve_bearing(bearing: Bearing, *,
                          distribution=dist, kinematics=kin, specs=specs, contacts=results,
                          elements=elements, totals=totals, empirical=emp, films=films,
                          warnings=warnings, wall_time_s=time.perf_counter() - t0)
+
+
+def _grid(res: Any) -> str:
+    """A contact result's grid: ``"65x65"`` (point) or ``"401 nodes"`` (line)."""
+    return f"{res.x.size} nodes" if res.y is None else f"{res.x.size}x{res.y.size}"
+
+
+def _missing_estimate_warning(bearing: Bearing, specs: list[ContactSpec],
+                              results: dict[str, Any], elements: list[dict[str, Any]],
+                              unknown: list[str]) -> str:
+    """The warning for bearing error bars that are missing (``unknown``): which contacts
+    (and slices) have no estimate, on which grids, and why.
+
+    A contact's estimate (:func:`bearing_fem.post.error_estimate`) compares its solution
+    with the same solve on the grids of every other node (twice and four times the
+    spacing, ``contacts.driver.estimate_levels``). It is missing when the grid of twice
+    the spacing does not converge from the restricted fine solution (coarse grids of
+    heavily loaded contacts: 33x33 below 65x65, 9x9 below 17x17), when the grid cannot be
+    halved (the contact models' ``coarsen``: an even node count, or fewer than 17 nodes per
+    direction) or when a quantity is zero or undefined on the finest grid.
+    """
+    items = []
+    example = ""
+    for e in elements:
+        for c in (e["inner"], e["outer"]):
+            ce = c.get("error_estimate")
+            if c["status"] == "excluded" or (ce is not None and all(
+                    v is not None for v in ce.values())):
+                continue
+            spec = next(s for s in specs if s.element == e["index"]
+                        and s.raceway == c["raceway"])
+            grids = []
+            for i, key in enumerate(spec.keys):
+                res = results[key]
+                est = res.error_estimate or {}
+                if est.get("levels", 0) >= 2:
+                    continue
+                label = slice_label(spec, i, bearing.geometry.n_slices)
+                grids.append(f"{label + ' ' if label else ''}{_grid(res)}")
+                n = res.x.size
+                if not example and n % 2 == 1:
+                    half = (n - 1) // 2 + 1
+                    grid, coarse = ((f"{n} nodes", f"{half} nodes") if res.y is None else
+                                    (f"{n}x{res.y.size}", f"{half}x{(res.y.size - 1) // 2 + 1}"))
+                    example = f" (here e.g. {coarse} below {grid})"
+            name = f"{e['index']} {c['raceway']}"
+            items.append(f"{name} ({', '.join(dict.fromkeys(grids))})" if grids else name)
+    key = "point_nodes" if bearing.geometry.is_ball else "line_nodes"
+    return (f"no error estimate for {', '.join(unknown)}: contact(s) "
+            f"{'; '.join(items[:4])}{' ...' if len(items) > 4 else ''} have none. A contact's "
+            "estimate compares its solution with the same solve on the grids of every other "
+            "node (twice and four times the spacing); it is missing when the grid of twice "
+            f"the spacing did not converge{example}, when the grid cannot be halved (an even "
+            "node count, or fewer than 17 nodes per direction) or when a quantity is zero "
+            f"on the finest grid; finer contact grids ([mesh] {key}) give estimates")
 
 
 def _films_at_most_loaded(bearing: Bearing, specs: list[ContactSpec],

@@ -30,10 +30,26 @@ from .. import formulas
 from .contacts import ContactSpec
 from .description import Bearing
 
-__all__ = ["contact_summary", "bearing_totals", "element_torque"]
+__all__ = ["contact_summary", "bearing_totals", "element_torque", "slice_label",
+           "LAST_ITERATE_NOTE"]
 
 #: Keys of a per-contact summary that are totals over the contact (N, W).
 _EXTENSIVE = ("load", "rolling_resistance", "sliding_friction", "friction_force", "heat_power")
+#: Result quantities of a contact summary: None when a scene of the contact failed (its
+#: last iterate is no result; the contact's Result keeps it).
+_RESULT_KEYS = ("load_solved", "h_min", "h_central", "p_max", "rolling_resistance",
+                "sliding_friction", "friction_force", "heat_power", "film_parameter",
+                "heat_power_poiseuille_direct", "heat_power_stabilisation", "error_estimate")
+#: Prefix of the warnings of an unsuccessful scene: they are about its last iterate.
+LAST_ITERATE_NOTE = "unsuccessful solve, about its last iterate (no result)"
+
+
+def slice_label(spec: ContactSpec, i: int, n_slices: int) -> str:
+    """``"slice k of n"`` for the ``i``-th scene of a profiled roller's contact (k counted
+    from one roller end), ``""`` for a contact of one scene."""
+    if not spec.slice_numbers:
+        return ""
+    return f"slice {spec.slice_numbers[i]} of {n_slices}"
 
 
 def _val(summary: dict[str, Any], key: str) -> float | None:
@@ -50,8 +66,12 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
     Line contacts: the per-metre results of each scene times its length (slice width),
     summed; films are minima and pressures maxima over the slices. Point contacts: the
     scene's summary. Excluded contacts: status ``excluded`` with the reason. Unsuccessful
-    contacts: the status and message of the failed scene, films and pressure None (the
-    last iterate stays in the contact :class:`~bearing_fem.result.Result`).
+    contacts (a scene not successful): the status and message of the failed scene, and
+    every result quantity None (``load_solved``, films, ``p_max``, the forces, heat
+    powers, ``film_parameter`` and ``error_estimate``; the last iterate stays in the
+    contact's :class:`~bearing_fem.result.Result`); the failed scenes' warnings are
+    marked as about the last iterate (:data:`LAST_ITERATE_NOTE`). The warnings of a
+    profiled roller's slices name the slice ("slice 2 of 5: ...").
 
     Returns
     -------
@@ -121,7 +141,15 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
                                                     lub.effective_piezo)
     h_min = None if any(f is None for f in films) else min(films)
     sigma = bearing.model.roughness
-    warnings = sorted({w for s in sums for w in s.get("warnings", [])})
+    warnings: list[str] = []
+    for i, s in enumerate(sums):
+        label = slice_label(spec, i, bearing.geometry.n_slices)
+        if not s["success"]:
+            label = f"{label}, {LAST_ITERATE_NOTE}" if label else LAST_ITERATE_NOTE
+        for w in s.get("warnings", []):
+            text = f"{label}: {w}" if label else w
+            if text not in warnings:
+                warnings.append(text)
     if failed:
         status, success = failed[0]["status"], False
         message = f"{len(failed)} of {len(sums)} scene(s) unsuccessful: {failed[0]['message']}"
@@ -131,8 +159,6 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
             f"{len(sums)} slices solved ({sums[imax]['message']})"
     h_central = _val(sums[imax], "h_central")
     p_top = None if any(p is None for p in pmax) else max(pmax)
-    if failed:  # an unsuccessful solve's last iterate is no result (Result keeps it)
-        h_min = h_central = p_top = None
     out.update(
         status=status, success=success, message=message,
         load_solved=tot["load"] if complete["load"] else None,
@@ -147,6 +173,8 @@ def contact_summary(bearing: Bearing, spec: ContactSpec, results: dict[str, Any]
         wall_time_s=float(sum(float(s.get("wall_time_s") or 0.0) for s in sums)),
         warnings=warnings, slices=len(sums), **extra)
     out["error_estimate"] = None if failed else _contact_estimate(sums, widths, imax)
+    if failed:  # an unsuccessful solve's last iterate is no result (Result keeps it)
+        out.update({key: None for key in _RESULT_KEYS})
     if kind == "point":
         out.pop("slices")
     return out
