@@ -49,18 +49,28 @@ def full_film_indicator_line(x_q: np.ndarray, outlet: float | None) -> np.ndarra
     return (x_q <= outlet).astype(float)
 
 
+#: Nodal pressures at or below this fraction of the maximum count as cavitated when the
+#: outlet boundary of a line contact is located: the Newton solution of the cavitation
+#: complementarity is zero there only to its tolerance (a scaled residual of 1e-8 leaves
+#: pressures of order 1e-8 p_h), and a node of such noise taken as pressurised moved the
+#: outlet, and the Couette friction with it, by one element (5e-5 of the friction of a
+#: sliding contact on 6401 nodes, from a change of the linear solver's rounding).
+CAVITATED_PRESSURE_FRACTION = 1e-6
+
+
 def outlet_position_line(x: np.ndarray, p: np.ndarray, cavitation: str) -> float | None:
     """Cavitation (outlet) boundary downstream of the pressure maximum [m], sub-grid.
 
     At a Reynolds free boundary p = dp/dx = 0, so p ~ c (x_c - x)^2 and sqrt(p) is linear
     in x: x_c is found by extrapolating sqrt(p) from the last two pressurised nodes to
-    zero (second-order accurate), bounded by the first cavitated node. None when the
-    scene has no cavitation or no pressurised node precedes a cavitated one.
+    zero (second-order accurate), bounded by the first cavitated node (p at most
+    :data:`CAVITATED_PRESSURE_FRACTION` of the maximum). None when the scene has no
+    cavitation or no pressurised node precedes a cavitated one.
     """
     if cavitation != "reynolds" or not np.any(p > 0):
         return None
     i = int(np.argmax(p))
-    idx = np.nonzero(p[i:] <= 0.0)[0]
+    idx = np.nonzero(p[i:] <= CAVITATED_PRESSURE_FRACTION * p[i])[0]
     if not idx.size:
         return None
     k = i + int(idx[0])  # first cavitated node
