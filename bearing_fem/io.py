@@ -702,14 +702,51 @@ def _contact_block_points(res: Any, azimuth: float, race_radius: float, alpha: f
     return pts, [("quad", quads)], data
 
 
+def _slice_suffix(spec: Any, k: int) -> str:
+    """``"_slice<n>"`` of the ``k``-th scene of a profiled roller's contact, ``n`` the
+    slice's number counted from one, as in the warnings ("slice 2 of 5"); ``""`` for a
+    contact of one scene."""
+    if len(spec.keys) <= 1:
+        return ""
+    n = spec.slice_numbers[k] if spec.slice_numbers else k + 1
+    return f"_slice{n:02d}"
+
+
+class _BearingContactSummary:
+    """The summary of one contact scene of a bearing as the bearing reports it: that of
+    the scene's :class:`~bearing_fem.result.Result`, but for an unsuccessful solve every
+    result quantity is null (its last iterate is no result; the bearing summary's
+    contacts say the same), with the status and message kept. ``result.h5`` and
+    ``fields.vtu`` keep the last iterate for diagnosis."""
+
+    def __init__(self, result: Any) -> None:
+        self.result = result
+
+    def summary(self) -> dict[str, Any]:
+        out = self.result.summary()
+        if self.result.success:
+            return out
+        for key in getattr(self.result, "quantities", {}) or {}:
+            if key in out:
+                out[key] = None
+        for key in ("friction_coefficient", "h0", "error_estimate"):
+            if key in out:
+                out[key] = None
+        out["note"] = ("unsuccessful solve: the result quantities are null (the last iterate "
+                       "in result.h5 and fields.vtu is no result)")
+        return out
+
+
 def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
     """Write the files of a bearing result into ``outdir``, all atomically.
 
     Files: ``bearing_summary.json`` (:meth:`BearingResult.summary`), ``elements.csv``
-    (one row per element), ``contacts.vtm`` (VTK multi-block of every solved contact,
-    placed on its raceway in 3D, blocks in ``contacts_vtk/``) and the per-contact result
-    files (``summary.json``, ``result.h5``, ``fields.vtu``) of the most loaded element's
-    contacts in ``contact_<element>_<raceway>[_slice<k>]/``. Every file is written under a
+    (one row per element), ``contacts.vtm`` (VTK multi-block of every successfully solved
+    contact, placed on its raceway in 3D, blocks in ``contacts_vtk/``; unsuccessful ones
+    are left out) and the per-contact result files (``summary.json``, ``result.h5``,
+    ``fields.vtu``) of the most loaded element's contacts in
+    ``contact_<element>_<raceway>[_slice<k>]/`` (``k`` the slice number from 1, as in the
+    warnings; an unsuccessful contact's ``summary.json`` has its result quantities null). Every file is written under a
     temporary name first and moved into place with :func:`os.replace` once all are
     complete; on failure the temporary files are removed.
 
@@ -761,9 +798,9 @@ def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
             for spec in result.specs:
                 for k, key in enumerate(spec.keys):
                     res = result.contacts[key]
-                    name = f"element_{spec.element:03d}_{spec.raceway}"
-                    if len(spec.keys) > 1:
-                        name += f"_slice{k:02d}"
+                    if not res.success:  # its last iterate is no result: not a block
+                        continue
+                    name = f"element_{spec.element:03d}_{spec.raceway}" + _slice_suffix(spec, k)
                     pts, cells, data = _contact_block_points(
                         res, float(dist.azimuth[spec.element]), spec.race_radius,
                         spec.contact_angle, spec.raceway, r_el,
@@ -788,11 +825,10 @@ def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
             for race in ("inner", "outer"):
                 spec = result.contact_spec(j, race)
                 for k, key in enumerate(spec.keys):
-                    name = f"contact_{j:03d}_{race}" + (f"_slice{k:02d}" if len(spec.keys) > 1
-                                                         else "")
+                    name = f"contact_{j:03d}_{race}" + _slice_suffix(spec, k)
                     st = stage(outdir / name)
                     res = result.contacts[key]
-                    write_summary(res, st.temp(FILES["summary"]))
+                    write_summary(_BearingContactSummary(res), st.temp(FILES["summary"]))
                     write_h5(res, st.temp(FILES["h5"]))
                     write_vtu(res, st.temp(FILES["vtu"]))
                     files[name] = outdir / name

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 __all__ = ["plot_load_distribution", "plot_films", "plot_torque_comparison", "torque_figure",
-           "failed_contacts", "write_figures", "FIGURES"]
+           "failed_contacts", "films_figure", "write_figures", "FIGURES"]
 
 #: Figure files of :func:`write_figures`, keyed as returned.
 FIGURES = {"load_distribution": "load_distribution.png", "films": "films_pressures.png",
@@ -95,8 +95,10 @@ def plot_load_distribution(result: Any, path: str | Path) -> Path:
     return _save(fig, path)
 
 
-def plot_films(result: Any, path: str | Path) -> Path:
-    """Minimum film [um] and maximum pressure [GPa] per element (row 0) over azimuth."""
+def films_figure(result: Any) -> Any:
+    """The figure of :func:`plot_films` (the caller closes it). Failed contacts have no
+    film or pressure (no point); the title then says "EHL: k of n contacts failed", and
+    when every contact failed the empty axes carry that note."""
     plt = _pyplot()
     a = _element_arrays(result)
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
@@ -107,9 +109,27 @@ def plot_films(result: Any, path: str | Path) -> Path:
     ax1.set_ylabel("h_min [um]")
     ax2.set_ylabel("p_max [GPa]")
     ax2.set_xlabel("azimuth psi [deg]")
-    ax1.legend(fontsize=8)
-    ax1.set_title("EHL films and pressures of the loaded elements", fontsize=10)
-    return _save(fig, path)
+    title = "EHL films and pressures of the loaded elements"
+    bad, n = failed_contacts(result)
+    if bad:
+        note = f"EHL: {bad} of {n} contacts failed"
+        title += f"\n{note} (no film or pressure shown for them)"
+        if bad == n:
+            for ax in (ax1, ax2):
+                ax.text(0.5, 0.5, f"no EHL result:\n{note.removeprefix('EHL: ')}\n(status "
+                        f"{result.status})", transform=ax.transAxes, ha="center",
+                        va="center", fontsize=9, color="C3")
+    if any(line.get_label() and not line.get_label().startswith("_") for line in ax1.lines) \
+            and bad < n:
+        ax1.legend(fontsize=8)
+    ax1.set_title(title, fontsize=10)
+    return fig
+
+
+def plot_films(result: Any, path: str | Path) -> Path:
+    """Minimum film [um] and maximum pressure [GPa] per element (row 0) over azimuth
+    (:func:`films_figure`)."""
+    return _save(films_figure(result), path)
 
 
 def failed_contacts(result: Any) -> tuple[int, int]:

@@ -189,7 +189,8 @@ def require_hertz_zone(where: str, r: tuple[float, float]) -> None:
     if lo > -HERTZ_ZONE or hi < HERTZ_ZONE:
         raise SceneError(f"{where} = [{lo:g}, {hi:g}] (in Hertz half-widths) does not contain "
                          f"the Hertz zone [-{HERTZ_ZONE:g}, {HERTZ_ZONE:g}]: the range is in "
-                         "units of the Hertz half-width, not in metres (e.g. [-4.5, 1.5])")
+                         "units of the Hertz half-width, not in metres (e.g. "
+                         f"{'[-3, 3]' if where.endswith('y_range') else '[-4.5, 1.5]'})")
 
 
 def field_piezo(obj: Any, name: str = "piezo") -> float:
@@ -1201,7 +1202,10 @@ class Scene:
             An unknown section or key, a missing required one, or a value out of its
             range; the message names the field, the value and the unit.
         """
-        return cls(**sections_from_dict(data, _TABLES, _REQUIRED, "scene"))
+        hint = (" (this looks like a bearing file: run `bearing-fem bearing FILE`, or read "
+                "it with bearing_fem.bearing.Bearing.from_toml)"
+                if isinstance(data, Mapping) and "bearing" in data else "")
+        return cls(**sections_from_dict(data, _TABLES, _REQUIRED, "scene", hint))
 
     @classmethod
     def from_toml(cls, path: str | Path) -> "Scene":

@@ -240,8 +240,9 @@ def test_moduli_in_gpa_are_refused_where_read(name, value):
     assert "Pa" in text and "load" not in text, text
     if math.isfinite(value):
         assert (f"materials.{name} = {float(value)!r} Pa lies outside the plausible "
-                "[1e+09, 2e+12] Pa of bearing materials; moduli are in Pa (208 GPa is "
-                "208e9)") in text, text
+                "[1e+09, 2e+12] Pa of bearing materials; moduli are in Pa ("
+                + ("208 GPa is 2.08e+11" if value < 1e4 else "e.g. 208 GPa is 2.08e+11")
+                + ")") in text, text
     d["materials"][name] = 3.1e11
     assert getattr(Bearing.from_dict(d).materials, name) == 3.1e11, "Si3N4 is accepted"
 
@@ -265,8 +266,9 @@ def test_oil_temperature_in_kelvin_warns_and_beyond_500_is_refused():
     assert w.startswith("operation.oil_temperature = 353 deg C is above 200 deg C"), w
     assert "looks like kelvin (353 K is 79.85 deg C)" in w, w
     d["operation"]["oil_temperature"] = 600.0
-    with pytest.raises(SceneError, match=r"operation\.oil_temperature must lie in \(0, 500\] "
-                                         r"deg C .*got 600\.0 deg C"):
+    with pytest.raises(SceneError, match=r"operation\.oil_temperature = 600 deg C lies above "
+                                         r"500 deg C: that is no oil temperature .*this looks "
+                                         r"like kelvin \(600 K is 326\.85 deg C\)"):
         Bearing.from_dict(d)
 
 
@@ -286,8 +288,8 @@ def test_contact_angle_in_radians_or_missing():
                                      "angular-contact-ball bearing"), str(err.value)
     assert "0.0 deg" not in str(err.value), str(err.value)
     d["bearing"]["contact_angle"] = 75.0
-    with pytest.raises(SceneError, match=r"must lie in \[2, 60\) deg for an angular-contact-"
-                                         r"ball bearing, got 75\.0 deg"):
+    with pytest.raises(SceneError, match=r"contact_angle = 75\.0 deg must lie in \[2, 60\] "
+                                         r"deg for an angular-contact-ball bearing"):
         Bearing.from_dict(d)
     g = Bearing.from_dict(_base()).geometry
     assert g.contact_angle == 0.0, "deep-groove: none given is 0 deg (documented default)"
@@ -308,6 +310,8 @@ def test_unlisted_skf_series_is_an_error():
                                          r"bearings .* give empirical\.skf_r1"):
         Bearing.from_dict(d)
     d["empirical"] = {"skf_r1": 1e-6, "skf_s1": 1e-3}
-    with pytest.raises(SceneError, match=r"give all four SKF geometry constants .* got only "
-                                         r"skf_r1, skf_s1"):
+    with pytest.raises(SceneError, match=r"the SKF model of cylindrical-roller bearings needs "
+                                         r"empirical\.skf_r1, empirical\.skf_s1, "
+                                         r"empirical\.skf_s2 .* got only skf_r1, skf_s1, "
+                                         r"missing skf_s2"):
         Bearing.from_dict(d)

@@ -54,6 +54,15 @@ MATERIAL_PRESETS: dict[str, tuple[float, float, float]] = {
 #: and angular-contact spindle bearings) need their constants from the catalogue
 #: (``[empirical] skf_r1 ...``). Used by :mod:`~bearing_fem.bearing.empirical`; here
 #: because :class:`Bearing` checks ``empirical.skf_series`` against it.
+#: Fields of the SKF geometry constants given directly (``[empirical]``).
+SKF_CONSTANT_FIELDS = ("skf_r1", "skf_r2", "skf_s1", "skf_s2")
+#: The SKF geometry constants each type's model uses (the catalogue lists R1, S1, S2 for
+#: cylindrical roller bearings: G_rr = R1 d_m^2.41 Fr^0.31, G_sl = S1 d_m^0.9 Fa +
+#: S2 d_m Fr); types not listed have no SKF model here.
+SKF_CONSTANTS_USED: dict[str, tuple[str, ...]] = {
+    "deep-groove-ball": SKF_CONSTANT_FIELDS,
+    "cylindrical-roller": ("skf_r1", "skf_s1", "skf_s2"),
+}
 SKF_GEOMETRY_CONSTANTS: dict[tuple[str, str], tuple[float, float, float, float]] = {
     ("deep-groove-ball", "60"): (4.1e-7, 1.7, 3.73e-3, 14.6),
     ("deep-groove-ball", "62"): (3.9e-7, 1.7, 3.23e-3, 36.5),
@@ -99,6 +108,16 @@ KELVIN_WARNING_TEMPERATURE = 200.0
 #: bearing: real ones have 10..40 deg; below 2 deg the value is almost surely in radians
 #: (0.26 for 15 deg) and is refused.
 MIN_NOMINAL_CONTACT_ANGLE = 2.0
+#: Largest nominal contact angle [deg], included: the axial angular-contact ball bearings
+#: that support ball screws have exactly 60 deg. The load distribution and the kinematics
+#: hold for any angle below 90 deg (the loaded angles stay below it, else the loads are
+#: refused); beyond 60 deg the bearing is a thrust bearing, which is not modelled.
+MAX_NOMINAL_CONTACT_ANGLE = 60.0
+#: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
+#: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
+#: above it the value is kelvin). The Prokofiev law and the thermal model need t > 0 deg C
+#: (checked by :class:`Bearing` where they use it).
+OIL_TEMPERATURE_RANGE = (-60.0, 500.0)
 #: Fewest slices along a profiled roller that docs/bearing.md ("Slicing error")
 #: recommends (the default count): with fewer, a bearing's warnings say that the error
 #: bars exclude the slicing error (measured: 5 slices put the torque 8 % off).
@@ -139,6 +158,16 @@ def _length(obj: Any, name: str) -> float:
     return value
 
 
+def _modulus_hint(value: float) -> str:
+    """The unit hint of a modulus message read from its value: GPa (208 for 208 GPa) below
+    1e4, MPa (208000) below 1e7, else an example."""
+    if value < 1e4:
+        return f" ({value:g} GPa is {value * 1e9:g})"
+    if value < 1e7:
+        return f" ({value:g} MPa is {value * 1e6:g})"
+    return " (e.g. 208 GPa is 2.08e+11)"
+
+
 def _modulus(obj: Any, name: str) -> None:
     """Optional Young's modulus ``name`` [Pa] in :data:`BEARING_MODULUS_RANGE`, else
     SceneError naming the field, the value and the unit (GPa given as Pa, mostly)."""
@@ -149,7 +178,7 @@ def _modulus(obj: Any, name: str) -> None:
     if not lo <= value <= hi:
         raise SceneError(f"{field_name_prefix(obj)}.{name} = {value!r} Pa lies outside the "
                          f"plausible [{lo:g}, {hi:g}] Pa of bearing materials; moduli are "
-                         "in Pa (208 GPa is 208e9)")
+                         f"in Pa{_modulus_hint(value)}")
 
 
 #: Largest free contact angle of a deep-groove ball bearing [deg] that its radial
@@ -189,7 +218,8 @@ class Geometry:
         (rows l_we cos(beta) <= B).
     contact_angle : float or None
         Nominal (unloaded) contact angle [deg]: required for angular-contact ball and
-        tapered roller bearings, in [:data:`MIN_NOMINAL_CONTACT_ANGLE`, 60) deg (a smaller
+        tapered roller bearings, in [:data:`MIN_NOMINAL_CONTACT_ANGLE`,
+        :data:`MAX_NOMINAL_CONTACT_ANGLE`] deg (a smaller
         one is taken for radians and refused); 0 or none for deep-groove (its free angle
         follows from the clearance) and cylindrical roller bearings (stored as 0).
     radial_clearance : float
@@ -257,16 +287,22 @@ class Geometry:
                                  f"bore {d!r} m and the outside diameter {big_d!r} m")
         dm = self.mean_diameter
         if dw >= 0.5 * (big_d - d) or dw >= dm:
-            raise SceneError(f"bearing.element_diameter = {dw!r} m does not fit between the "
-                             f"rings (D - d)/2 = {0.5 * (big_d - d)!r} m")
+            raise SceneError(f"bearing.element_diameter = {dw:g} m does not fit between the "
+                             f"rings (D - d)/2 = {0.5 * (big_d - d):.4g} m; "
+                             f"{_metres_hint('element_diameter', dw)}")
         z = self.elements
         if z * dw > math.pi * dm * (1.0 + 1e-9):
-            raise SceneError(f"bearing.elements = {z} elements of {dw!r} m do not fit on "
-                             f"the pitch circle pi d_m = {math.pi * dm!r} m")
+            raise SceneError(f"bearing.elements = {z} elements of {dw:g} m do not fit on "
+                             f"the pitch circle pi d_m = {math.pi * dm:.4g} m; give the "
+                             "elements per row (and the diameters in metres)")
         if self.width is not None:
             _length(self, "width")
         alpha = self._contact_angle()
-        field_nonnegative(self, "radial_clearance", "m")
+        c_r = field_number(self, "radial_clearance", "m")
+        if c_r < 0.0:
+            raise SceneError(f"bearing.radial_clearance must be >= 0 m, got {c_r:g} m: a "
+                             "negative clearance (preload) is not modelled; give 0 for a "
+                             "bearing without clearance")
         field_number(self, "first_element_azimuth", "deg")
         _optional_positive(self, "static_load_rating", "N")
         if self.type in BALL_TYPES:
@@ -283,7 +319,8 @@ class Geometry:
             if angular:
                 raise SceneError(f"bearing.contact_angle (deg) is required for "
                                  f"{_an(self.type)} bearing: its nominal contact angle, in "
-                                 f"[{MIN_NOMINAL_CONTACT_ANGLE:g}, 60) deg")
+                                 f"[{MIN_NOMINAL_CONTACT_ANGLE:g}, "
+                                 f"{MAX_NOMINAL_CONTACT_ANGLE:g}] deg")
             object.__setattr__(self, "contact_angle", 0.0)
         alpha = field_number(self, "contact_angle", "deg")
         if not angular:
@@ -297,10 +334,11 @@ class Geometry:
                              f"{MIN_NOMINAL_CONTACT_ANGLE:g} deg for {_an(self.type)} bearing: "
                              f"the angle is in degrees, and {alpha!r} looks like radians "
                              f"({alpha!r} rad is {math.degrees(alpha):.4g} deg)")
-        if not 0.0 < alpha < 60.0:
-            raise SceneError(f"bearing.contact_angle must lie in "
-                             f"[{MIN_NOMINAL_CONTACT_ANGLE:g}, 60) deg for {_an(self.type)} "
-                             f"bearing, got {alpha!r} deg")
+        if not 0.0 < alpha <= MAX_NOMINAL_CONTACT_ANGLE:
+            raise SceneError(f"bearing.contact_angle = {alpha!r} deg must lie in "
+                             f"[{MIN_NOMINAL_CONTACT_ANGLE:g}, {MAX_NOMINAL_CONTACT_ANGLE:g}] "
+                             f"deg for {_an(self.type)} bearing (nominal contact angles are "
+                             "10..40 deg, 60 deg for ball-screw support bearings)")
         return alpha
 
     def _check_ball(self) -> None:
@@ -528,7 +566,18 @@ class BearingLubricant:
         field_choice(self, "compressibility", ("incompressible", "dowson-higginson"))
         field_positive(self, "density", "kg/m^3")
         field_choice(self, "temperature_law", ("none", "prokofiev"))
-        field_positive(self, "reference_temperature", "deg C")
+        t_ref = field_number(self, "reference_temperature", "deg C")
+        t_hi = TEMPERATURE_RANGE[1]
+        if t_ref > t_hi:
+            raise SceneError(f"lubricant.reference_temperature = {t_ref:g} deg C lies above "
+                             f"{t_hi:g} deg C: that is no oil temperature (oils decompose long "
+                             "before); temperatures are in deg C, and this looks like kelvin "
+                             f"({t_ref:g} K is {t_ref - 273.15:g} deg C)")
+        if t_ref <= 0.0:
+            raise SceneError(f"lubricant.reference_temperature = {t_ref:g} deg C must be > 0 "
+                             "deg C: the Prokofiev law eta0(t) = reference_viscosity "
+                             "(reference_temperature/t)^exponent is written in deg C; give the "
+                             "temperature of reference_viscosity (e.g. 40 deg C)")
         field_positive(self, "thermal_conductivity", "W/(m K)")
         field_positive(self, "specific_heat", "J/(kg K)")
         if self.temperature_law == "none":
@@ -563,8 +612,9 @@ class Operation:
     radial_load, axial_load : float
         Fr, Fa [N], >= 0, not both zero. The radial load acts along azimuth 0.
     oil_temperature : float or None
-        Oil (and bearing) temperature [deg C], in (0, 500] deg C (``TEMPERATURE_RANGE`` of
-        the scenes); required by a temperature law and by the thermal model. Above
+        Oil (and bearing) temperature [deg C], in [-60, 500] deg C
+        (:data:`OIL_TEMPERATURE_RANGE`: cold starts allowed); required by a temperature law
+        and by the thermal model, which need it > 0 deg C. Above
         :data:`KELVIN_WARNING_TEMPERATURE` the bearing's warnings say it looks like kelvin
         (:func:`input_warnings`).
     """
@@ -584,11 +634,16 @@ class Operation:
                              "load (an unloaded bearing has no EHL contacts)")
         if self.oil_temperature is not None:
             t = field_number(self, "oil_temperature", "deg C")
-            t_lo, t_hi = TEMPERATURE_RANGE
-            if not t_lo < t <= t_hi:
-                raise SceneError(f"operation.oil_temperature must lie in ({t_lo:g}, {t_hi:g}] "
-                                 f"deg C (the Prokofiev law needs t > 0 deg C; oils decompose "
-                                 f"below {t_hi:g} deg C), got {t!r} deg C")
+            t_lo, t_hi = OIL_TEMPERATURE_RANGE
+            if t > t_hi:
+                raise SceneError(f"operation.oil_temperature = {t:g} deg C lies above "
+                                 f"{t_hi:g} deg C: that is no oil temperature (oils decompose "
+                                 "long before); temperatures are in deg C, and this looks like "
+                                 f"kelvin ({t:g} K is {t - 273.15:g} deg C)")
+            if t < t_lo:
+                raise SceneError(f"operation.oil_temperature = {t:g} deg C lies below "
+                                 f"{t_lo:g} deg C, colder than any oil flows; give the oil "
+                                 "temperature in deg C")
 
     @property
     def inner_speed(self) -> float:
@@ -635,11 +690,18 @@ class BearingModel:
         if self.roughness is not None and self.roughness > MAX_ROUGHNESS:
             raise SceneError(f"model.roughness = {self.roughness!r} m exceeds {MAX_ROUGHNESS:g} m "
                              "(10 um rms, beyond any lubricated rolling surface); the "
-                             f"roughness is in metres ({self.roughness:g} um is "
-                             f"{self.roughness * 1e-6:g})")
+                             f"roughness is in metres ({_roughness_hint(self.roughness)})")
         v = field_nonnegative(self, "min_load_fraction", "(dimensionless)")
         if v >= 1.0:
             raise SceneError(f"model.min_load_fraction must be < 1 (dimensionless), got {v!r}")
+
+
+def _roughness_hint(value: float) -> str:
+    """The unit hint of a roughness message read from its value: micrometres from 0.01
+    up (0.2 for 0.2 um), else millimetres (0.0002 for 0.2 um)."""
+    if value >= 0.01:
+        return f"{value:g} um is {value * 1e-6:g}"
+    return f"{value:g} mm is {value * 1e-3:g}"
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -772,18 +834,18 @@ class EmpiricalOptions:
     nikitin_set: Literal["steel", "ceramic", "joint"] = "joint"
 
     def __post_init__(self) -> None:
-        for name in ("palmgren_f0", "palmgren_f1", "friction_coefficient", "skf_r1",
-                     "skf_r2", "skf_s1", "skf_s2", "nikitin_flow_ratio"):
-            _optional_positive(self, name, "(dimensionless)" if not name.startswith("skf")
-                               else "(catalogue units)")
+        for name in ("palmgren_f0", "palmgren_f1", "friction_coefficient",
+                     "nikitin_flow_ratio"):
+            _optional_positive(self, name, "(dimensionless)")
+        for name in SKF_CONSTANT_FIELDS:  # which are needed and > 0: Bearing (by type)
+            if getattr(self, name) is not None:
+                field_number(self, name, "(catalogue units)")
         if self.skf_series is not None and not isinstance(self.skf_series, str):
-            raise SceneError(f"empirical.skf_series must be a string, got {self.skf_series!r}")
-        consts = ("skf_r1", "skf_r2", "skf_s1", "skf_s2")
-        given = [n for n in consts if getattr(self, n) is not None]
-        if given and len(given) != len(consts):
-            raise SceneError(f"empirical: give all four SKF geometry constants "
-                             f"{', '.join('empirical.' + n for n in consts)} (catalogue "
-                             f"units) or none; got only {', '.join(given)}")
+            hint = (f'; write "{self.skf_series}" (a string)'
+                    if isinstance(self.skf_series, int) and not isinstance(self.skf_series, bool)
+                    else "")
+            raise SceneError(f"empirical.skf_series must be a string (a series designation "
+                             f"such as \"62\", no unit), got {self.skf_series!r}{hint}")
         field_choice(self, "lubrication", ("oil-bath", "oil-jet", "oil-air", "grease"))
         field_choice(self, "nikitin_set", ("steel", "ceramic", "joint"))
 
@@ -852,6 +914,15 @@ class Bearing:
         if lub.temperature_law == "prokofiev" and op.oil_temperature is None:
             raise SceneError("operation.oil_temperature (deg C) is required by "
                              "lubricant.temperature_law = 'prokofiev'")
+        needs = ("lubricant.temperature_law = 'prokofiev'" if lub.temperature_law == "prokofiev"
+                 else "model.thermal = 'patch'" if model.thermal == "patch" else None)
+        if needs and op.oil_temperature is not None and op.oil_temperature <= 0.0:
+            raise SceneError(f"operation.oil_temperature = {op.oil_temperature:g} deg C must be "
+                             f"> 0 deg C with {needs}: the Prokofiev law eta0(t) = "
+                             "reference_viscosity (reference_temperature/t)^exponent is written "
+                             "in deg C and has no value at t <= 0; for a cold start give "
+                             "lubricant.temperature_law = 'none' with lubricant.viscosity (Pa s) "
+                             "at that temperature")
         if model.thermal == "patch":
             if g.is_ball:
                 raise SceneError("model.thermal = 'patch' is available for line contacts "
@@ -879,8 +950,35 @@ class Bearing:
                              f"model.thermal = 'none'; got {g.type!r}, model.elasticity = "
                              f"{model.elasticity!r}, model.thermal = {model.thermal!r}")
 
+    def _check_skf_constants(self) -> None:
+        """``empirical.skf_r1 ...``: exactly the constants the SKF model of this type uses
+        (:data:`SKF_CONSTANTS_USED`), each > 0; none for a type without an SKF model."""
+        emp, kind = self.empirical, self.geometry.type
+        given = [n for n in SKF_CONSTANT_FIELDS if getattr(emp, n) is not None]
+        if not given:
+            return
+        used = SKF_CONSTANTS_USED.get(kind)
+        if used is None:
+            raise SceneError(f"empirical.{', '.join(given)}: the SKF model is implemented for "
+                             f"{' and '.join(SKF_CONSTANTS_USED)} bearings only, not for "
+                             f"{kind} bearings; remove the SKF constants (the Palmgren models "
+                             "are evaluated for every type)")
+        extra = [n for n in given if n not in used]
+        if extra:
+            raise SceneError(f"empirical.{extra[0]} = {getattr(emp, extra[0])!r} is not used by "
+                             f"the SKF model of {kind} bearings, which takes "
+                             f"{', '.join(used)} (catalogue units); remove it")
+        missing = [n for n in used if n not in given]
+        if missing:
+            raise SceneError(f"empirical: the SKF model of {kind} bearings needs "
+                             f"{', '.join('empirical.' + n for n in used)} (catalogue units); "
+                             f"got only {', '.join(given)}, missing {', '.join(missing)}")
+        for name in used:
+            field_positive(emp, name, "(catalogue units)")
+
     def _check_skf_series(self) -> None:
         """``empirical.skf_series``: one listed for this type in SKF_GEOMETRY_CONSTANTS."""
+        self._check_skf_constants()
         series = self.empirical.skf_series
         if series is None:
             return
@@ -890,10 +988,18 @@ class Bearing:
             return
         have = (f"listed for {kind} bearings: {', '.join(map(repr, listed))}" if listed else
                 f"no series is listed for {kind} bearings")
+        hint = ""
+        if listed and len(series) > 2 and series[:2] in listed:
+            hint = (f"; {series!r} looks like a bearing designation: its series is "
+                    f"{series[:2]!r} (skf_series = \"{series[:2]}\")")
+        used = SKF_CONSTANTS_USED.get(kind)
+        other = (f"; for another series give {', '.join('empirical.' + n for n in used)} from "
+                 "the SKF catalogue" if used else
+                 f"; the SKF model is not implemented for {kind} bearings: remove "
+                 "empirical.skf_series")
         raise SceneError(f"empirical.skf_series = {series!r} (a series designation, no unit) "
                          f"is not a series with SKF geometry constants here; {have} "
-                         "(SKF_GEOMETRY_CONSTANTS); for another series give empirical.skf_r1, "
-                         "skf_r2, skf_s1, skf_s2 from the SKF catalogue")
+                         f"(SKF_GEOMETRY_CONSTANTS){hint}{other}")
 
     # ------------------------------------------------------------------------------
     @classmethod

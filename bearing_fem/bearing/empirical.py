@@ -497,8 +497,9 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
             "parameters": {"f0": f0, "f_pr": opts.friction_coefficient,
                            "kinematic_viscosity_mm2_s": nu}}
     consts = None
-    if None not in (opts.skf_r1, opts.skf_r2, opts.skf_s1, opts.skf_s2):
-        consts = (opts.skf_r1, opts.skf_r2, opts.skf_s1, opts.skf_s2)
+    if opts.skf_r1 is not None:  # the constants the type uses (checked by Bearing)
+        consts = (opts.skf_r1, opts.skf_r2 if opts.skf_r2 is not None else 0.0, opts.skf_s1,
+                  opts.skf_s2)
     elif opts.skf_series is not None:
         consts = SKF_GEOMETRY_CONSTANTS.get((g.type, opts.skf_series))
     if g.type not in ("deep-groove-ball", "cylindrical-roller"):
@@ -506,9 +507,9 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
                                                     f"{g.type} bearings"}
     elif consts is None:
         out["skf"] = {"available": False,
-                      "reason": "no SKF geometry constants for this series (give "
-                                "empirical.skf_series of a listed series, or skf_r1, skf_r2, "
-                                "skf_s1, skf_s2 from the SKF catalogue)"}
+                      "reason": "no SKF geometry constants (give empirical.skf_series of a "
+                                "listed series, or the constants skf_r1, ... from the SKF "
+                                "catalogue)"}
     elif g.type == "deep-groove-ball" and fa > 0.0 and g.static_load_rating is None:
         out["skf"] = {"available": False,
                       "reason": "bearing.static_load_rating (C0, N) is needed under axial load"}
@@ -522,7 +523,8 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
                       "torque_seal": 0.0, "torque_drag": 0.0,
                       "source": "SKF four-component model (SKF catalogue); open bearing, "
                                 "drag not evaluated",
-                      "parameters": {"R1": r1, "R2": r2, "S1": s1, "S2": s2,
+                      "parameters": {"R1": r1, "R2": r2 if g.is_ball else None, "S1": s1,
+                                     "S2": s2,
                                      "phi_ish": sk["phi_ish"], "phi_rs": sk["phi_rs"],
                                      "mu_sl": sk["mu_sl"], "lubrication": opts.lubrication}}
     if opts.nikitin_flow_ratio is not None:

@@ -32,7 +32,7 @@ from .description import Bearing, input_warnings
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, distribute_loads
-from .totals import LAST_ITERATE_NOTE, bearing_totals, contact_summary, slice_label
+from .totals import bearing_totals, contact_summary, slice_label
 
 __all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
 
@@ -281,6 +281,7 @@ def solve_bearing(bearing: Bearing, *,
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
                              dist.alpha_inner, dist.alpha_outer)
     specs = contact_specs(bearing, dist, kin)
+    warnings.extend(truncated_domain_warnings(bearing, specs))
     results = solve_unique(specs, progress=progress, blas_threads=blas_threads)
     by_element: dict[int, dict[str, Any]] = {}
     for spec in specs:
@@ -319,33 +320,21 @@ def solve_bearing(bearing: Bearing, *,
         warnings.append("estimated discretisation error above "
                         f"{100 * ERROR_WARNING_THRESHOLD:g} %: "
                         + ", ".join(f"{k} {100 * v:.2g} %" for k, v in loose.items())
-                        + " (finer contact grids: [mesh] line_nodes / point_nodes)")
+                        + f" (finer contact grids: [mesh] {_nodes_key(bearing)})")
     eb = totals["energy_balance"]["relative_difference"]
     if eb is not None and abs(eb) > ENERGY_BALANCE_RTOL:
         warnings.append(f"friction torque x omega differs from the contacts' heat power by "
                         f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
                         "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
-    # the contact solver's warnings, once per distinct scene, naming the contacts (and the
-    # slices of a profiled roller) using it
-    users: dict[str, list[str]] = {}
-    for spec in specs:
-        for i, key in enumerate(spec.keys):
-            label = slice_label(spec, i, g.n_slices)
-            name = f"{spec.element} {spec.raceway}" + (f", {label}" if label else "")
-            if name not in users.setdefault(key, []):
-                users[key].append(name)
-    for key, names in users.items():
-        sep = "; " if any("," in n for n in names) else ", "
-        who = sep.join(names[:4]) + (f" (+{len(names) - 4} more)" if len(names) > 4 else "")
-        note = "" if results[key].success else f" ({LAST_ITERATE_NOTE})"
-        for w in results[key].warnings:
-            warnings.append(f"contact{'s' if len(names) > 1 else ''} {who}{note}: {w}")
+    warnings.extend(contact_warnings(bearing, specs, results, drop_missing_estimate=bool(unknown)))
     n_solved = len(results)
     n_scenes = sum(len(s.keys) for s in specs)
     if failed:
         status, success = "contacts_failed", False
         message = (f"{len(failed)} contact(s) unsuccessful, e.g. element {failed[0][0]} "
-                   f"{failed[0][1]}; totals not formed ({n_solved} distinct scenes solved)")
+                   f"{failed[0][1]}; totals not formed ({n_solved} distinct contact scenes "
+                   f"attempted, {sum(not r.success for r in results.values())} of them "
+                   "unsuccessful)")
     else:
         status, success = "converged", True
         m = totals["friction_torque"]
@@ -357,6 +346,148 @@ def solve_bearing(bearing: Bearing, *,
                          distribution=dist, kinematics=kin, specs=specs, contacts=results,
                          elements=elements, totals=totals, empirical=emp, films=films,
                          warnings=warnings, wall_time_s=time.perf_counter() - t0)
+
+
+def _nodes_key(bearing: Bearing) -> str:
+    """The ``[mesh]`` key of the contact grids of this bearing's type."""
+    return "point_nodes" if bearing.geometry.is_ball else "line_nodes"
+
+
+#: Longest failure message of a contact quoted in the bearing's warnings [characters].
+FAILURE_MESSAGE_CHARS = 240
+
+
+def _short(text: str, limit: int = FAILURE_MESSAGE_CHARS) -> str:
+    """``text`` cut after ``limit`` characters (at a word) with an ellipsis."""
+    text = " ".join(str(text).split())
+    if len(text) <= limit:
+        return text
+    return text[:limit].rsplit(" ", 1)[0] + " ..."
+
+
+def bearing_terms(bearing: Bearing, text: str) -> str:
+    """A contact scene's warning in the bearing file's terms: scene fields that come from
+    a bearing field are named by that field (``mesh.nodes`` -> ``[mesh] point_nodes`` or
+    ``line_nodes``, ``thermal.oil_temperature`` -> ``operation.oil_temperature``, the
+    temperature law's fields -> ``lubricant.*``), and a viscosity warning about a viscosity
+    the temperature law computed says so instead of naming ``lubricant.viscosity``."""
+    key = _nodes_key(bearing)
+    text = text.replace("(mesh.nodes)", f"([mesh] {key})").replace("mesh.nodes",
+                                                                      f"mesh.{key}")
+    for name in ("reference_temperature", "reference_viscosity", "exponent",
+                 "piezo_temperatures", "piezo_values"):
+        text = text.replace(f"thermal.{name}", f"lubricant.{name}")
+    text = text.replace("thermal.oil_temperature", "operation.oil_temperature")
+    lub, t = bearing.lubricant, bearing.operation.oil_temperature
+    if lub.temperature_law == "prokofiev" and text.startswith("lubricant.viscosity = "):
+        value, _, rest = text[len("lubricant.viscosity = "):].partition(" Pa s ")
+        rest = rest.split("; did you")[0]
+        text = (f"the temperature law (lubricant.temperature_law = 'prokofiev') gives "
+                f"{float(value):.3g} Pa s at {t:g} deg C (operation.oil_temperature), which "
+                f"{rest}; check lubricant.reference_viscosity (Pa s at "
+                "lubricant.reference_temperature, deg C), lubricant.exponent and the oil "
+                "temperature")
+    return text
+
+
+def contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[str, Any], *,
+                     drop_missing_estimate: bool = False) -> list[str]:
+    """The contact solver's warnings for the bearing's ``warnings``: each text once, in the
+    bearing file's terms (:func:`bearing_terms`), naming the contacts (and the slices of a
+    profiled roller) it applies to, or "all n solved contacts". The warnings of an
+    unsuccessful scene are about its last iterate and are dropped; its failure message
+    (shortened) is given instead. With ``drop_missing_estimate`` (the bearing's own
+    warning lists the contacts without error estimates) a contact's "no error estimate"
+    warning is dropped too."""
+    users: dict[str, list[str]] = {}
+    for spec in specs:
+        for i, key in enumerate(spec.keys):
+            label = slice_label(spec, i, bearing.geometry.n_slices)
+            name = f"{spec.element} {spec.raceway}" + (f", {label}" if label else "")
+            if name not in users.setdefault(key, []):
+                users[key].append(name)
+    texts: dict[str, list[str]] = {}
+    failures: dict[str, list[str]] = {}
+    n_ok = 0
+    for key, names in users.items():
+        res = results[key]
+        if not res.success:
+            why = f"unsuccessful (status {res.status}): {_short(bearing_terms(bearing, res.message))}"
+            failures.setdefault(why, []).extend(names)
+            continue
+        n_ok += len(names)
+        for w in res.warnings:
+            if drop_missing_estimate and w.startswith("no error estimate"):
+                continue
+            texts.setdefault(bearing_terms(bearing, w), []).extend(names)
+
+    def who(names: list[str]) -> str:
+        sep = "; " if any("," in n for n in names) else ", "
+        return (f"contact{'s' if len(names) > 1 else ''} " + sep.join(names[:4])
+                + (f" (+{len(names) - 4} more)" if len(names) > 4 else ""))
+
+    out = [f"{who(names)} {why}" for why, names in failures.items()]
+    for text, names in texts.items():
+        if len(names) == n_ok and n_ok > 1:
+            what = "contact slices" if bearing.geometry.n_slices > 1 else "contacts"
+            out.append(f"all {n_ok} solved {what}: {text}")
+        else:
+            out.append(f"{who(names)}: {text}")
+    return out
+
+
+def default_inlet(scene: Any) -> tuple[float, float]:
+    """(inlet, side) of the default domain of a loaded elastic contact scene [Hertz
+    half-widths]: the contact setups' fully flooded inlet, 4.5 half-widths or 15 (line) /
+    8 (point) hydrodynamic lengths sqrt(2 R h) at low load, and the half-width of a point
+    contact's default y_range, max(3, inlet/2) (``line_setup`` and ``point_setup`` of
+    :mod:`bearing_fem.contacts`; an isoviscous heavily loaded contact has a longer one)."""
+    from .. import formulas, units
+
+    lub, u_m, rx = scene.lubricant, scene.kinematics.mean_speed, scene.contact.rx
+    force, e_prime = scene.load.force, scene.e_prime
+    if scene.contact.kind == "line":
+        b, _ = units.hertz_line(force, rx, e_prime)
+        h = formulas.line_central_film_moes(force, rx, e_prime, lub.viscosity, u_m,
+                                            lub.effective_piezo)
+        return max(4.5, 15.0 * math.sqrt(2.0 * rx * h) / b), 0.0
+    hz = units.hertz_point(force, rx, scene.contact.ry, e_prime)
+    h = formulas.point_central_film_nvm(force, rx, scene.contact.ry, e_prime, lub.viscosity,
+                                        u_m, lub.effective_piezo)
+    inlet = max(4.5, 8.0 * math.sqrt(2.0 * rx * h) / hz.a_x)
+    return inlet, max(3.0, 0.5 * inlet)
+
+
+def truncated_domain_warnings(bearing: Bearing, specs: list[ContactSpec]) -> list[str]:
+    """Warnings for a user ``[mesh] x_range`` that starts downstream of the default inlet
+    of some solved contact (or a ``y_range`` of a ball bearing narrower than the default):
+    the inlet is truncated, which lowers the rolling resistance and the friction torque
+    (measured: an x_range of [-3, 1.2] put a roller bearing's torque 17..19 % low), and the
+    error estimates (grid discretisation only) do not include it."""
+    mesh = bearing.mesh
+    if mesh.x_range is None and mesh.y_range is None:
+        return []
+    inlet, side = 0.0, 0.0
+    for spec in specs:
+        if spec.excluded is not None:
+            continue
+        for sc in spec.scenes:
+            i, s = default_inlet(sc)
+            inlet, side = max(inlet, i), max(side, s)
+    out = []
+    tail = ("the rolling resistance and the friction torque may be underestimated (the "
+            "inlet builds the film and carries the rolling resistance), and the error "
+            "estimates are grid discretisation errors that do not include this domain "
+            "truncation; remove it or start it at or before the default")
+    if mesh.x_range is not None and inlet and mesh.x_range[0] > -inlet:
+        out.append(f"mesh.x_range starts at {mesh.x_range[0]:g} Hertz half-widths, downstream "
+                   f"of the contacts' default inlet at {-inlet:.3g}: the inlet is truncated; "
+                   + tail)
+    if mesh.y_range is not None and side and min(-mesh.y_range[0], mesh.y_range[1]) < side:
+        out.append(f"mesh.y_range = [{mesh.y_range[0]:g}, {mesh.y_range[1]:g}] Hertz "
+                   f"half-widths is narrower than the contacts' default [{-side:.3g}, "
+                   f"{side:.3g}]: the inlet's side flow is truncated; " + tail)
+    return out
 
 
 def _grid(res: Any) -> str:

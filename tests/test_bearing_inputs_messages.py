@@ -1,0 +1,234 @@
+"""Bearing files: accepted edge values (cold oil, 60 deg, the SKF constants of a type),
+the bearing's warnings (once, in the bearing file's terms, failures by their reason), a
+truncated inlet, and the files and figures of failed contacts."""
+from __future__ import annotations
+
+import copy
+import json
+import re
+
+import pytest
+
+from bearing_fem import cli, io
+from bearing_fem.bearing import Bearing, load_example, solve_bearing
+from bearing_fem.bearing.contacts import contact_specs
+from bearing_fem.bearing.empirical import empirical_models
+from bearing_fem.bearing.kinematics import element_kinematics
+from bearing_fem.bearing.loads import distribute_loads
+from bearing_fem.errors import SceneError
+
+from test_bearing_solve import small_roller  # noqa: E402  (tests/ is on sys.path)
+
+
+def _example(name: str) -> dict:
+    return copy.deepcopy(load_example(name).to_dict())
+
+
+def _specs(b: Bearing):
+    dist = distribute_loads(b)
+    kin = element_kinematics(b.operation.inner_speed, b.geometry.mean_diameter,
+                             b.geometry.element_diameter, dist.alpha_inner, dist.alpha_outer)
+    return contact_specs(b, dist, kin)
+
+
+# ---------------------------------------------------------------------------------------
+# accepted and refused values
+# ---------------------------------------------------------------------------------------
+@pytest.mark.parametrize("t", [-20.0, 0.0, -60.0])
+def test_cold_oil_is_accepted_without_a_temperature_law(t):
+    d = _example("6209")
+    d["operation"]["oil_temperature"] = t
+    assert Bearing.from_dict(d).operation.oil_temperature == t, "a cold start is valid input"
+
+
+def test_oil_temperatures_refused_where_they_are_used():
+    d = small_roller().to_dict()
+    d["lubricant"] = {"temperature_law": "prokofiev", "reference_viscosity": 0.06,
+                      "exponent": 2.9, "piezo": 2e-8}
+    d["operation"]["oil_temperature"] = -20.0
+    with pytest.raises(SceneError, match=r"operation\.oil_temperature = -20 deg C must be > 0 "
+                                         r"deg C with lubricant\.temperature_law = 'prokofiev'"):
+        Bearing.from_dict(d)
+    d["operation"]["oil_temperature"] = 600.0
+    with pytest.raises(SceneError, match=r"operation\.oil_temperature = 600 deg C lies above 500 "
+                                         r"deg C: .*oils decompose long before.*600 K is "
+                                         r"326\.85 deg C"):
+        Bearing.from_dict(d)
+    d["operation"]["oil_temperature"] = -80.0
+    with pytest.raises(SceneError, match=r"operation\.oil_temperature = -80 deg C lies below "
+                                         r"-60 deg C"):
+        Bearing.from_dict(d)
+    d["operation"]["oil_temperature"] = 60.0
+    d["lubricant"]["reference_temperature"] = 600.0
+    with pytest.raises(SceneError, match=r"^lubricant\.reference_temperature = 600 deg C lies "
+                                         r"above 500 deg C: .*600 K is 326\.85 deg C"):
+        Bearing.from_dict(d)
+
+
+def test_contact_angle_of_60_deg_is_accepted():
+    d = _example("7010-steel")
+    d["bearing"]["contact_angle"] = 60.0
+    b = Bearing.from_dict(d)
+    assert b.geometry.contact_angle == 60.0, "ball-screw support bearings have 60 deg"
+    dist = distribute_loads(b)  # the load distribution holds at 60 deg
+    assert dist.load_inner.max() > 0.0, dist.load_inner
+    d["bearing"]["contact_angle"] = 60.5
+    with pytest.raises(SceneError, match=r"contact_angle = 60\.5 deg must lie in \[2, 60\] deg"):
+        Bearing.from_dict(d)
+
+
+def test_skf_constants_are_those_of_the_type():
+    d = small_roller().to_dict()
+    d["empirical"] = {"skf_r1": 1.12e-6, "skf_s1": 0.17, "skf_s2": 0.0048}
+    b = Bearing.from_dict(d)
+    skf = empirical_models(b)["skf"]
+    assert skf.get("torque", 0.0) > 0.0, skf
+    d["empirical"]["skf_r2"] = 0.0
+    with pytest.raises(SceneError, match=r"empirical\.skf_r2 = 0\.0 is not used by the SKF "
+                                         r"model of cylindrical-roller bearings"):
+        Bearing.from_dict(d)
+    a = _example("7010-steel")
+    a["empirical"] = {"skf_r1": 4e-7, "skf_r2": 1.7, "skf_s1": 3e-3, "skf_s2": 40.0}
+    with pytest.raises(SceneError, match=r"empirical\.skf_r1, skf_r2, skf_s1, skf_s2: the SKF "
+                                         r"model is implemented for deep-groove-ball and "
+                                         r"cylindrical-roller bearings only"):
+        Bearing.from_dict(a)
+    e = _example("6209")
+    e["empirical"] = {"skf_series": "6205"}
+    with pytest.raises(SceneError, match=r"its series is '62'"):
+        Bearing.from_dict(e)
+    e["empirical"] = {"skf_series": 62}
+    with pytest.raises(SceneError, match=r'write "62" \(a string\)'):
+        Bearing.from_dict(e)
+
+
+@pytest.mark.parametrize("section, key, value, pattern", [
+    ("bearing", "element_diameter", {"bore": 0.025, "outside_diameter": 0.052,
+                                     "pitch_diameter": 0.0385, "element_diameter": 0.014},
+     r"element_diameter = 0\.014 m does not fit between the rings \(D - d\)/2 = 0\.0135 m; "
+     r"dimensions are in metres$"),
+    ("bearing", "radial_clearance", -2e-6, r"radial_clearance must be >= 0 m, got -2e-06 m: a "
+                                           r"negative clearance \(preload\) is not modelled"),
+    ("model", "roughness", 0.0001, r"\(0\.0001 mm is 1e-07\)"),
+    ("model", "roughness", 0.2, r"\(0\.2 um is 2e-07\)"),
+    ("materials", "ring_modulus", 208000.0, r"\(208000 MPa is 2\.08e\+11\)"),
+    ("materials", "element_modulus", 310.0, r"\(310 GPa is 3\.1e\+11\)"),
+    ("mesh", "y_range", [-0.5, 0.5], r"mesh\.y_range .* \(e\.g\. \[-3, 3\]\)"),
+])
+def test_unit_hints_read_the_value(section, key, value, pattern):
+    d = _example("6209")
+    if isinstance(value, dict):
+        d[section].update(value)
+    else:
+        d.setdefault(section, {})[key] = value
+    with pytest.raises(SceneError) as err:
+        Bearing.from_dict(d)
+    assert re.search(pattern, str(err.value)), str(err.value)
+    assert "99999" not in str(err.value), "no float noise"
+
+
+def test_solve_on_a_bearing_file_says_so(tmp_path, capsys):
+    path = tmp_path / "b.toml"
+    path.write_text((io.Path(__file__).parent.parent / "bearing_fem" / "bearings"
+                     / "6209.toml").read_text())
+    assert cli.main(["solve", str(path), "--out", str(tmp_path / "o")]) == cli.EXIT_INVALID
+    assert "this looks like a bearing file: run `bearing-fem bearing FILE`" in \
+        capsys.readouterr().err
+
+
+# ---------------------------------------------------------------------------------------
+# warnings
+# ---------------------------------------------------------------------------------------
+def test_truncated_inlet_warns():
+    from bearing_fem.bearing.solve import truncated_domain_warnings
+
+    b = load_example("6209")
+    d = b.to_dict()
+    d["mesh"] = {"x_range": [-3.0, 1.5]}
+    w = truncated_domain_warnings(Bearing.from_dict(d), _specs(Bearing.from_dict(d)))
+    assert len(w) == 1 and w[0].startswith("mesh.x_range starts at -3 Hertz half-widths, "
+                                           "downstream of the contacts' default inlet"), w
+    assert "underestimated" in w[0] and "do not include this domain truncation" in w[0], w
+    d["mesh"] = {"x_range": [-30.0, 1.5], "y_range": [-2.0, 2.0]}
+    w = truncated_domain_warnings(Bearing.from_dict(d), _specs(Bearing.from_dict(d)))
+    assert len(w) == 1 and w[0].startswith("mesh.y_range = [-2, 2] Hertz half-widths is "
+                                           "narrower"), w
+    assert truncated_domain_warnings(b, _specs(b)) == [], "the default domain: no warning"
+    r = solve_bearing(small_roller(mesh={"line_nodes": 101, "x_range": [-3.0, 1.2]}))
+    assert any(x.startswith("mesh.x_range starts at -3 ") for x in r.warnings), r.warnings
+
+
+def test_warnings_once_in_bearing_terms():
+    from bearing_fem.bearing.solve import bearing_terms
+
+    r = solve_bearing(small_roller(lubricant={"viscosity": 15.0}, mesh={"line_nodes": 101}))
+    visc = [w for w in r.warnings if "lubricant.viscosity = 15 Pa s" in w]
+    assert len(visc) == 1 and visc[0].startswith("all "), r.warnings
+    assert not any("mesh.nodes" in w or "point_nodes" in w for w in r.warnings), r.warnings
+    b = small_roller(lubricant={"viscosity": None, "temperature_law": "prokofiev",
+                                "reference_viscosity": 0.06, "exponent": 2.93},
+                     operation={"oil_temperature": 5.0}, model={"thermal": "patch"})
+    text = bearing_terms(b, "lubricant.viscosity = 26.57 Pa s is above 5 Pa s, thicker than "
+                            "lubricating oils at their working temperature; did you mean "
+                            "0.02657 Pa s (cP given as Pa s)?")
+    assert text.startswith("the temperature law (lubricant.temperature_law = 'prokofiev') "
+                           "gives 26.6 Pa s at 5 deg C"), text
+    assert "did you mean" not in text, text
+    assert bearing_terms(b, "thermal.oil_temperature = 180 deg C is above 150 deg C").startswith(
+        "operation.oil_temperature = 180"), "a bearing file's key"
+    assert bearing_terms(b, "refine the mesh (mesh.nodes)") == \
+        "refine the mesh ([mesh] line_nodes)"
+
+
+@pytest.fixture(scope="module")
+def failed():
+    b = small_roller(solver={"max_iterations": 1, "continuation": False,
+                             "iteration_budget": 1}, mesh={"line_nodes": 101})
+    r = solve_bearing(b)
+    assert not r.success and r.status == "contacts_failed", r.status
+    return r
+
+
+def test_failed_contacts_warn_with_their_reason(failed):
+    assert "distinct contact scenes attempted" in failed.message, failed.message
+    assert "scenes solved" not in failed.message, failed.message
+    carried = [w for w in failed.warnings if w.startswith("contact")]
+    assert carried and all(" unsuccessful (status " in w for w in carried), carried
+    assert not any("last iterate" in w or "between the nodes" in w for w in failed.warnings), \
+        failed.warnings
+
+
+def test_failed_contact_files_and_figure(failed, tmp_path):
+    from bearing_fem.plot_bearing import films_figure
+
+    files = io.export_bearing(failed, tmp_path)
+    folders = [k for k in files if k.startswith("contact_")]
+    assert folders, files
+    s = json.loads((files[folders[0]] / "summary.json").read_text())
+    assert s["status"] in ("budget_exhausted", "max_iterations") and not s["success"], s
+    assert s["message"], "the failure message stays"
+    for key in ("h_min", "p_max", "friction_force", "heat_power", "load"):
+        assert s.get(key, None) is None, (key, s.get(key))
+    vtm = (tmp_path / "contacts.vtm").read_text()
+    assert "<DataSet" not in vtm, "failed contacts are no blocks"
+    fig = films_figure(failed)
+    try:
+        texts = [t.get_text() for ax in fig.axes for t in ax.texts]
+        title = fig.axes[0].get_title()
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+    assert re.search(r"EHL: (\d+) of \1 contacts failed", title), title
+    assert texts and all("no EHL result" in t for t in texts), texts
+
+
+def test_slice_folders_are_numbered_from_one(tmp_path):
+    r = solve_bearing(small_roller(bearing={"profile": "crowned", "crown_drop": 4e-6,
+                                            "slices": 3}, mesh={"line_nodes": 101}))
+    files = io.export_bearing(r, tmp_path)
+    names = sorted(k for k in files if "_slice" in k)
+    assert names and all(re.search(r"_slice0[1-3]$", n) for n in names), names
+    assert any(n.endswith("_slice03") for n in names), names
+    vtk = sorted(p.name for p in (tmp_path / "contacts_vtk").iterdir())
+    assert not any("_slice00" in n for n in vtk), vtk
