@@ -746,9 +746,9 @@ def export_bearing(result: Any, outdir: str | Path) -> dict[str, Path]:
     are left out) and the per-contact result files (``summary.json``, ``result.h5``,
     ``fields.vtu``) of the most loaded element's contacts in
     ``contact_<element>_<raceway>[_slice<k>]/`` (``k`` the slice number from 1, as in the
-    warnings; an unsuccessful contact's ``summary.json`` has its result quantities null). Every file is written under a
-    temporary name first and moved into place with :func:`os.replace` once all are
-    complete; on failure the temporary files are removed.
+    warnings; an unsuccessful contact's ``summary.json`` has its result quantities null).
+    Every file is written under a temporary name first and moved into place with
+    :func:`os.replace` once all are complete; on failure the temporary files are removed.
 
     Parameters
     ----------

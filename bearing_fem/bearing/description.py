@@ -810,7 +810,10 @@ class EmpiricalOptions:
         :data:`bearing_fem.bearing.empirical.SKF_GEOMETRY_CONSTANTS` (checked by
         :class:`Bearing`; another series is an error).
     skf_r1, skf_r2, skf_s1, skf_s2 : float or None
-        Geometry constants given directly (all four or none; they override the series).
+        Geometry constants given directly (they override the series): exactly those the
+        SKF model of the bearing's type uses (:data:`SKF_CONSTANTS_USED`, checked by
+        :class:`Bearing`): all four for deep groove ball bearings, R1, S1, S2 for
+        cylindrical roller bearings; none for types without an SKF model.
     lubrication : {"oil-bath", "oil-jet", "oil-air", "grease"}
         Lubrication method (SKF replenishment constant).
     nikitin_flow_ratio : float or None

@@ -412,7 +412,8 @@ def contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[s
     for key, names in users.items():
         res = results[key]
         if not res.success:
-            why = f"unsuccessful (status {res.status}): {_short(bearing_terms(bearing, res.message))}"
+            why = (f"unsuccessful (status {res.status}): "
+                   f"{_short(bearing_terms(bearing, res.message))}")
             failures.setdefault(why, []).extend(names)
             continue
         n_ok += len(names)
