@@ -232,3 +232,19 @@ def test_slice_folders_are_numbered_from_one(tmp_path):
     assert any(n.endswith("_slice03") for n in names), names
     vtk = sorted(p.name for p in (tmp_path / "contacts_vtk").iterdir())
     assert not any("_slice00" in n for n in vtk), vtk
+
+
+def test_miniature_bearing_in_millimetres_is_refused_up_front():
+    # a 623 (bore 3 mm, D 10 mm, balls 1/16 in) written in millimetres: every length lies
+    # in the accepted [1e-4, 10] m, but a 1.59 m ball is no rolling element
+    import bearing_fem.bearing.description as desc
+
+    with pytest.raises(SceneError) as info:
+        desc.Geometry(type="deep-groove-ball", bore=3.0, outside_diameter=10.0,
+                      element_diameter=1.5875, elements=7)
+    msg = str(info.value)
+    assert "bearing.element_diameter = 1.5875 m" in msg and "0.0015875" in msg, msg
+    assert "bore (3 m)" in msg, msg
+    # the same bearing in metres is accepted
+    desc.Geometry(type="deep-groove-ball", bore=0.003, outside_diameter=0.010,
+                  element_diameter=0.0015875, elements=7)

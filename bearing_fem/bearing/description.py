@@ -87,6 +87,11 @@ MAX_CROWN_DROP_FRACTION = 0.01
 #: and tunnel-boring bearings of several metres. Beyond it the value is almost surely in
 #: millimetres (a 45 mm bore given as 45).
 BEARING_LENGTH_RANGE = (1e-4, 10.0)
+#: Largest rolling-element diameter [m]: the balls and rollers of the largest slewing and
+#: tunnel-boring bearings are about 0.1-0.2 m; beyond 0.5 m the bearing's dimensions are
+#: almost surely millimetres that happen to lie in :data:`BEARING_LENGTH_RANGE` (a
+#: miniature 623 bearing given as bore 3, D 10, D_w 1.5875).
+MAX_ELEMENT_DIAMETER = 0.5
 #: Longest effective roller length as a multiple of the roller diameter [-]: needle
 #: rollers reach about 10 D_w (ISO 3096); beyond twice that the length is a unit slip (a
 #: 10 mm roller given as 10.0 m).
@@ -278,6 +283,12 @@ class Geometry:
             raise SceneError(f"bearing.outside_diameter = {big_d!r} m must exceed "
                              f"bearing.bore = {d!r} m")
         dw = _length(self, "element_diameter")
+        if dw > MAX_ELEMENT_DIAMETER:
+            raise SceneError(f"bearing.element_diameter = {dw:g} m exceeds "
+                             f"{MAX_ELEMENT_DIAMETER:g} m (the balls and rollers of the largest "
+                             f"bearings are 0.1-0.2 m); {_metres_hint('element_diameter', dw)}"
+                             f"; check the bore ({d:g} m) and the outside diameter "
+                             f"({big_d:g} m) too")
         field_integer(self, "elements", 3, 500, "rolling elements per row")
         field_integer(self, "rows", 1, 8, "rows")
         if self.pitch_diameter is not None:
