@@ -248,3 +248,18 @@ def test_miniature_bearing_in_millimetres_is_refused_up_front():
     # the same bearing in metres is accepted
     desc.Geometry(type="deep-groove-ball", bore=0.003, outside_diameter=0.010,
                   element_diameter=0.0015875, elements=7)
+
+
+def test_single_row_tapered_bearing_says_how_it_is_modelled():
+    from bearing_fem.bearing.description import input_warnings
+
+    b = load_example("nncf5040")
+    d = b.to_dict() if hasattr(b, "to_dict") else None
+    assert d is not None, "Bearing.to_dict exists (round trip of bearing files)"
+    d["bearing"].update(type="tapered-roller", contact_angle=15.0, rows=1)
+    d["bearing"].pop("radial_clearance", None)
+    one = Bearing.from_dict(d)
+    notes = [w for w in input_warnings(one) if "opposed pairs" in w]
+    assert len(notes) == 1 and "bearing.rows = 1" in notes[0], input_warnings(one)
+    d["bearing"]["rows"] = 2
+    assert not [w for w in input_warnings(Bearing.from_dict(d)) if "opposed pairs" in w]

@@ -1051,7 +1051,10 @@ def input_warnings(bearing: Bearing) -> list[str]:
     * ``operation.oil_temperature`` or ``lubricant.reference_temperature`` above
       :data:`KELVIN_WARNING_TEMPERATURE` [deg C]: it looks like kelvin;
     * a profiled roller with fewer than :data:`MIN_RECOMMENDED_SLICES` slices: the error
-      bars exclude the slicing error, which is then of several per cent.
+      bars exclude the slicing error, which is then of several per cent;
+    * a tapered roller bearing with an odd number of rows: the model takes its rows in
+      opposed pairs (docs/bearing.md 2.3), so a single row is treated as one row of such a
+      pair, its induced axial force reacted by the opposed bearing.
 
     Returns
     -------
@@ -1072,6 +1075,12 @@ def input_warnings(bearing: Bearing) -> list[str]:
                    "are the grid discretisation errors of each slice's contact and exclude "
                    "the slicing error along the roller, which with so few slices is several "
                    "per cent (docs/bearing.md, \"Slicing error\")")
+    if g.type == "tapered-roller" and g.rows % 2:
+        out.append(f"bearing.rows = {g.rows} for a tapered-roller bearing: rows are modelled in "
+                   "opposed pairs with radial load only (docs/bearing.md 2.3), so each row is "
+                   "taken as one row of a face-to-face or back-to-back pair whose opposed "
+                   "bearing reacts its induced axial force; a single "
+                   "tapered bearing under a combined load is not modelled")
     return out
 
 
