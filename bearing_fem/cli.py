@@ -314,12 +314,12 @@ def _print_bearing(bearing: Any, result: Any, files: dict[str, Path]) -> None:
         if m.get("torque") is not None:
             rows.append((f"{name} torque", _fmt(m["torque"], "N m")))
     rows.append(("wall time", _fmt(s["wall_time_s"], "s")))
+    rows.append(("message", s["message"]))
+    rows += [("warning", w) for w in s["warnings"]]
+    rows.append(("wrote", ", ".join(str(p) for p in files.values())))
+    width = max(len(name) for name, _ in rows)  # one column, however long a model's name
     for name, value in rows:
-        print(f"  {name:<24} {value}")
-    print(f"  {'message':<24} {s['message']}")
-    for w in s["warnings"]:
-        print(f"  {'warning':<24} {w}")
-    print(f"  {'wrote':<24} " + ", ".join(str(p) for p in files.values()))
+        print(f"  {name:<{width}} {value}")
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:

@@ -117,7 +117,21 @@ def test_cli_bearing(tmp_path, capsys):
     names = {p.name for p in out.iterdir()}
     assert {"bearing_summary.json", "elements.csv", "contacts.vtm", "load_distribution.png",
             "films_pressures.png", "torque_comparison.png"} <= names
-    assert "friction torque" in capsys.readouterr().out
+    printed = capsys.readouterr().out
+    assert "friction torque" in printed
+    # one column for the values, however long a row's name (an empirical model's torque)
+    summary = json.loads((out / "bearing_summary.json").read_text())
+    names = ["status", "friction torque", "heat power", "h_min", "p_max", "wall time",
+             "message", "warning", "wrote"]
+    names += [f"{n} torque" for n, m in summary["empirical"].items()
+              if m.get("torque") is not None]
+    width = max(len(n) for n in names)
+    rows = [(n, line) for line in printed.splitlines() for n in names
+            if line.startswith(f"  {n} ")]
+    assert len(rows) >= 8, printed
+    for n, line in rows:
+        assert line[2 + width] == " " and line[3 + width] != " ", \
+            f"the value of {n!r} starts in column {3 + width}: {line!r}"
     bad = tmp_path / "bad.toml"
     bad.write_text(TOML.replace("radial_clearance = 5e-6", "radial_clearance = -5e-6"))
     assert cli.main(["bearing", str(bad), "--out", str(out)]) == cli.EXIT_INVALID
