@@ -71,6 +71,11 @@ def _element_arrays(result: Any) -> dict[str, np.ndarray]:
             "pmax_o": col(lambda e: e["outer"]["p_max"])}
 
 
+#: Smallest span of the contact-angle axis of the load figure [deg] (a radially loaded
+#: deep-groove bearing's angles vary by hundredths of a degree).
+MIN_ANGLE_SPAN = 2.0
+
+
 def plot_load_distribution(result: Any, path: str | Path) -> Path:
     """Element loads [N] (row 0) over azimuth [deg]; contact angles for ball bearings."""
     plt = _pyplot()
@@ -90,6 +95,10 @@ def plot_load_distribution(result: Any, path: str | Path) -> Path:
         ax2 = ax.twinx()
         ax2.plot(a["psi"], a["alpha"], "s--", color="C2", ms=4, label="contact angle")
         ax2.set_ylabel("contact angle [deg]", color="C2")
+        lo, hi = float(np.min(a["alpha"])), float(np.max(a["alpha"]))
+        if hi - lo < MIN_ANGLE_SPAN:  # a nearly constant angle: no magnified noise axis
+            mid = 0.5 * (lo + hi)
+            ax2.set_ylim(mid - 0.5 * MIN_ANGLE_SPAN, mid + 0.5 * MIN_ANGLE_SPAN)
     ax.legend(loc="upper right", fontsize=8)
     ax.set_title(result.bearing.title or result.bearing.geometry.type, fontsize=10)
     return _save(fig, path)
@@ -171,7 +180,8 @@ def torque_figure(result: Any) -> Any:
             vals.append(m["torque"])
     ax.bar(names, vals, color="0.6", label="empirical")
     ax.set_ylabel("friction torque [N m]")
-    ax.legend(fontsize=8)
+    ax.set_ylim(top=ax.get_ylim()[1] * 1.3)  # head room: the legend does not hide a bar
+    ax.legend(fontsize=8, loc="upper left", ncol=2)
     ax.set_title("EHL torque (rolling losses only) vs empirical models", fontsize=10)
     plt.setp(ax.get_xticklabels(), rotation=15, fontsize=8)
     return fig
