@@ -7,6 +7,7 @@ import copy
 import json
 import re
 
+import numpy as np
 import pytest
 
 from bearing_fem import cli, io
@@ -140,26 +141,75 @@ def test_solve_on_a_bearing_file_says_so(tmp_path, capsys):
 # warnings
 # ---------------------------------------------------------------------------------------
 def test_truncated_inlet_warns():
-    from bearing_fem.bearing.solve import truncated_domain_warnings
+    from bearing_fem.bearing.solve import _truncated_domain_warnings
 
     b = load_example("6209")
     d = b.to_dict()
     d["mesh"] = {"x_range": [-3.0, 1.5]}
-    w = truncated_domain_warnings(Bearing.from_dict(d), _specs(Bearing.from_dict(d)))
+    w = _truncated_domain_warnings(Bearing.from_dict(d), _specs(Bearing.from_dict(d)))
     assert len(w) == 1 and w[0].startswith("mesh.x_range starts at -3 Hertz half-widths, "
                                            "downstream of the contacts' default inlet"), w
     assert "underestimated" in w[0] and "do not include this domain truncation" in w[0], w
     d["mesh"] = {"x_range": [-30.0, 1.5], "y_range": [-2.0, 2.0]}
-    w = truncated_domain_warnings(Bearing.from_dict(d), _specs(Bearing.from_dict(d)))
+    w = _truncated_domain_warnings(Bearing.from_dict(d), _specs(Bearing.from_dict(d)))
     assert len(w) == 1 and w[0].startswith("mesh.y_range = [-2, 2] Hertz half-widths is "
                                            "narrower"), w
-    assert truncated_domain_warnings(b, _specs(b)) == [], "the default domain: no warning"
+    assert _truncated_domain_warnings(b, _specs(b)) == [], "the default domain: no warning"
     r = solve_bearing(small_roller(mesh={"line_nodes": 101, "x_range": [-3.0, 1.2]}))
     assert any(x.startswith("mesh.x_range starts at -3 ") for x in r.warnings), r.warnings
 
 
+
+def test_isoviscous_heavily_loaded_default_domain_is_not_called_truncated():
+    """A ball bearing with lubricant.piezo = 0 at 50 rpm: its contacts are isoviscous
+    above Moes M = 1000, whose default domain is x from -1.5, y in +-1.5 (point_setup);
+    that domain given as mesh ranges is no truncation, a shorter one is."""
+    from bearing_fem.bearing.solve import _default_domain, _truncated_domain_warnings
+    from bearing_fem.contacts.point import default_ranges, point_setup
+
+    d = load_example("6209").to_dict()
+    d["lubricant"]["piezo"] = 0.0
+    d["operation"]["inner_rpm"] = 50.0
+    b = Bearing.from_dict(d)
+    scene = next(s for spec in _specs(b) if spec.excluded is None for s in spec.scenes)
+    setup = point_setup(scene, nodes=(17, 17))
+    xr, yr = default_ranges(scene)
+    assert xr == (-1.5, 1.2) and yr == (-1.5, 1.5), (xr, yr, "isoviscous high-load domain")
+    assert setup.grid.x.min() == pytest.approx(xr[0] * setup.x_unit, rel=1e-12), \
+        "the setup takes its x range from default_ranges"
+    assert _default_domain(scene) == (1.5, 1.5), "the warning's default: the setup's one"
+    d["mesh"] = {"x_range": [-1.5, 1.2], "y_range": [-1.5, 1.5]}
+    b = Bearing.from_dict(d)
+    assert _truncated_domain_warnings(b, _specs(b)) == [], \
+        "the solver's own default domain is not truncated"
+    d["mesh"] = {"x_range": [-1.2, 1.2], "y_range": [-1.2, 1.2]}
+    b = Bearing.from_dict(d)
+    w = _truncated_domain_warnings(b, _specs(b))
+    assert len(w) == 2 and "default inlet at -1.5" in w[0] and "[-1.5, 1.5]" in w[1], w
+
+
+def test_line_default_range_is_the_setups_for_a_capped_isoviscous_contact():
+    """An isoviscous line contact whose default grid reaches the node cap takes the short
+    inlet; default_x_range and line_setup agree (and the wide range otherwise)."""
+    from bearing_fem.contacts.line import default_x_range, line_setup
+    from bearing_fem.scene import Scene
+
+    e, r, eta, u_sum = 2.2e11, 0.01, 0.01, 1e-11
+    for m, short in ((1500.0, True), (100.0, False)):
+        u = u_sum * e * r / (2 * eta)
+        scene = Scene.from_dict({
+            "contact": {"kind": "line", "rx": r}, "materials": {"reduced_modulus": e},
+            "lubricant": {"viscosity": eta, "piezo": 0.0},
+            "kinematics": {"u1": u, "u2": u}, "load": {"force": m * u_sum ** 0.5 * e * r},
+            "mesh": {"nodes": 101}})
+        xr = default_x_range(scene)
+        setup = line_setup(scene)
+        assert (xr[1] == 1.2) == short, (m, xr, "short isoviscous inlet above the cap")
+        np.testing.assert_allclose(setup.disc.x[[0, -1]], np.array(xr) * setup.x_unit,
+                                   rtol=1e-12, err_msg=f"M = {m}: setup and default agree")
+
 def test_warnings_once_in_bearing_terms():
-    from bearing_fem.bearing.solve import bearing_terms
+    from bearing_fem.bearing.solve import _bearing_terms
 
     r = solve_bearing(small_roller(lubricant={"viscosity": 15.0}, mesh={"line_nodes": 101}))
     visc = [w for w in r.warnings if "lubricant.viscosity = 15 Pa s" in w]
@@ -168,15 +218,15 @@ def test_warnings_once_in_bearing_terms():
     b = small_roller(lubricant={"viscosity": None, "temperature_law": "prokofiev",
                                 "reference_viscosity": 0.06, "exponent": 2.93},
                      operation={"oil_temperature": 5.0}, model={"thermal": "patch"})
-    text = bearing_terms(b, "lubricant.viscosity = 26.57 Pa s is above 5 Pa s, thicker than "
+    text = _bearing_terms(b, "lubricant.viscosity = 26.57 Pa s is above 5 Pa s, thicker than "
                             "lubricating oils at their working temperature; did you mean "
                             "0.02657 Pa s (cP given as Pa s)?")
     assert text.startswith("the temperature law (lubricant.temperature_law = 'prokofiev') "
                            "gives 26.6 Pa s at 5 deg C"), text
     assert "did you mean" not in text, text
-    assert bearing_terms(b, "thermal.oil_temperature = 180 deg C is above 150 deg C").startswith(
+    assert _bearing_terms(b, "thermal.oil_temperature = 180 deg C is above 150 deg C").startswith(
         "operation.oil_temperature = 180"), "a bearing file's key"
-    assert bearing_terms(b, "refine the mesh (mesh.nodes)") == \
+    assert _bearing_terms(b, "refine the mesh (mesh.nodes)") == \
         "refine the mesh ([mesh] line_nodes)"
 
 

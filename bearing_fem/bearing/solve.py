@@ -281,7 +281,7 @@ def solve_bearing(bearing: Bearing, *,
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
                              dist.alpha_inner, dist.alpha_outer)
     specs = contact_specs(bearing, dist, kin)
-    warnings.extend(truncated_domain_warnings(bearing, specs))
+    warnings.extend(_truncated_domain_warnings(bearing, specs))
     results = solve_unique(specs, progress=progress, blas_threads=blas_threads)
     by_element: dict[int, dict[str, Any]] = {}
     for spec in specs:
@@ -326,7 +326,8 @@ def solve_bearing(bearing: Bearing, *,
         warnings.append(f"friction torque x omega differs from the contacts' heat power by "
                         f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
                         "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
-    warnings.extend(contact_warnings(bearing, specs, results, drop_missing_estimate=bool(unknown)))
+    warnings.extend(_contact_warnings(bearing, specs, results,
+                                      drop_missing_estimate=bool(unknown)))
     n_solved = len(results)
     n_scenes = sum(len(s.keys) for s in specs)
     if failed:
@@ -365,7 +366,7 @@ def _short(text: str, limit: int = FAILURE_MESSAGE_CHARS) -> str:
     return text[:limit].rsplit(" ", 1)[0] + " ..."
 
 
-def bearing_terms(bearing: Bearing, text: str) -> str:
+def _bearing_terms(bearing: Bearing, text: str) -> str:
     """A contact scene's warning in the bearing file's terms: scene fields that come from
     a bearing field are named by that field (``mesh.nodes`` -> ``[mesh] point_nodes`` or
     ``line_nodes``, ``thermal.oil_temperature`` -> ``operation.oil_temperature``, the
@@ -390,10 +391,10 @@ def bearing_terms(bearing: Bearing, text: str) -> str:
     return text
 
 
-def contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[str, Any], *,
-                     drop_missing_estimate: bool = False) -> list[str]:
+def _contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[str, Any], *,
+                      drop_missing_estimate: bool = False) -> list[str]:
     """The contact solver's warnings for the bearing's ``warnings``: each text once, in the
-    bearing file's terms (:func:`bearing_terms`), naming the contacts (and the slices of a
+    bearing file's terms (:func:`_bearing_terms`), naming the contacts (and the slices of a
     profiled roller) it applies to, or "all n solved contacts". The warnings of an
     unsuccessful scene are about its last iterate and are dropped; its failure message
     (shortened) is given instead. With ``drop_missing_estimate`` (the bearing's own
@@ -413,14 +414,14 @@ def contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[s
         res = results[key]
         if not res.success:
             why = (f"unsuccessful (status {res.status}): "
-                   f"{_short(bearing_terms(bearing, res.message))}")
+                   f"{_short(_bearing_terms(bearing, res.message))}")
             failures.setdefault(why, []).extend(names)
             continue
         n_ok += len(names)
         for w in res.warnings:
             if drop_missing_estimate and w.startswith("no error estimate"):
                 continue
-            texts.setdefault(bearing_terms(bearing, w), []).extend(names)
+            texts.setdefault(_bearing_terms(bearing, w), []).extend(names)
 
     def who(names: list[str]) -> str:
         sep = "; " if any("," in n for n in names) else ", "
@@ -437,29 +438,24 @@ def contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[s
     return out
 
 
-def default_inlet(scene: Any) -> tuple[float, float]:
+def _default_domain(scene: Any) -> tuple[float, float]:
     """(inlet, side) of the default domain of a loaded elastic contact scene [Hertz
-    half-widths]: the contact setups' fully flooded inlet, 4.5 half-widths or 15 (line) /
-    8 (point) hydrodynamic lengths sqrt(2 R h) at low load, and the half-width of a point
-    contact's default y_range, max(3, inlet/2) (``line_setup`` and ``point_setup`` of
-    :mod:`bearing_fem.contacts`; an isoviscous heavily loaded contact has a longer one)."""
-    from .. import formulas, units
-
-    lub, u_m, rx = scene.lubricant, scene.kinematics.mean_speed, scene.contact.rx
-    force, e_prime = scene.load.force, scene.e_prime
+    half-widths]: where the default x range starts upstream, -x_range[0], and the
+    half-width of a point contact's default y range (0 for a line contact), from the same
+    functions the contact setups take them from (:func:`bearing_fem.contacts.line.
+    default_x_range`, :func:`bearing_fem.contacts.point.default_ranges`; an isoviscous
+    heavily loaded contact has a shorter inlet)."""
     if scene.contact.kind == "line":
-        b, _ = units.hertz_line(force, rx, e_prime)
-        h = formulas.line_central_film_moes(force, rx, e_prime, lub.viscosity, u_m,
-                                            lub.effective_piezo)
-        return max(4.5, 15.0 * math.sqrt(2.0 * rx * h) / b), 0.0
-    hz = units.hertz_point(force, rx, scene.contact.ry, e_prime)
-    h = formulas.point_central_film_nvm(force, rx, scene.contact.ry, e_prime, lub.viscosity,
-                                        u_m, lub.effective_piezo)
-    inlet = max(4.5, 8.0 * math.sqrt(2.0 * rx * h) / hz.a_x)
-    return inlet, max(3.0, 0.5 * inlet)
+        from ..contacts.line import default_x_range
+
+        return -default_x_range(scene)[0], 0.0
+    from ..contacts.point import default_ranges
+
+    xr, yr = default_ranges(scene)
+    return -xr[0], yr[1]
 
 
-def truncated_domain_warnings(bearing: Bearing, specs: list[ContactSpec]) -> list[str]:
+def _truncated_domain_warnings(bearing: Bearing, specs: list[ContactSpec]) -> list[str]:
     """Warnings for a user ``[mesh] x_range`` that starts downstream of the default inlet
     of some solved contact (or a ``y_range`` of a ball bearing narrower than the default):
     the inlet is truncated, which lowers the rolling resistance and the friction torque
@@ -473,7 +469,7 @@ def truncated_domain_warnings(bearing: Bearing, specs: list[ContactSpec]) -> lis
         if spec.excluded is not None:
             continue
         for sc in spec.scenes:
-            i, s = default_inlet(sc)
+            i, s = _default_domain(sc)
             inlet, side = max(inlet, i), max(side, s)
     out = []
     tail = ("the rolling resistance and the friction torque may be underestimated (the "

@@ -566,6 +566,47 @@ def kodnir_coefficient(scene) -> float:
     return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
 
 
+def _elastic_density(scene: Scene) -> float:
+    """Default grid density of a loaded elastic line scene [nodes per Hertz half-width]:
+    :data:`NODES_PER_HALF_WIDTH`, growing as sqrt(M / :data:`DENSE_MESH_MOES_M`)."""
+    lub = scene.lubricant
+    moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime, lub.viscosity,
+                             scene.kinematics.mean_speed, lub.effective_piezo)["M"]
+    return NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
+
+
+def default_x_range(scene: Scene) -> tuple[float, float]:
+    """The default domain of a loaded elastic line scene, the one :func:`line_setup` takes
+    when ``scene.mesh`` gives no ``x_range``.
+
+    Parameters
+    ----------
+    scene : Scene
+        A line scene with ``load.force`` [N/m] and an elastic model.
+
+    Returns
+    -------
+    (float, float)
+        In Hertz half-widths b [-]: the fully flooded inlet, 4.5 b or 15 hydrodynamic
+        lengths sqrt(2 R h) at low load, to the outlet at 1.5 b; an isoviscous half-space
+        scene whose default grid would exceed :data:`MAX_DEFAULT_ELASTIC_NODES` takes the
+        shorter [-max(:data:`ISOVISCOUS_CAPPED_INLET`, 1 + 15 sqrt(2 R h)/b),
+        :data:`ISOVISCOUS_CAPPED_OUTLET`].
+    """
+    R, w, lub = scene.contact.rx, scene.load.force, scene.lubricant
+    b, _ = units.hertz_line(w, R, scene.e_prime)
+    h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity,
+                                   scene.kinematics.mean_speed, lub.effective_piezo)
+    # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
+    inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
+    x_range = (-inlet, 1.5)
+    capped = (x_range[1] - x_range[0]) * _elastic_density(scene) > MAX_DEFAULT_ELASTIC_NODES - 1
+    if capped and lub.effective_piezo == 0.0 and scene.model.elasticity == "half-space":
+        hydro = 15.0 * math.sqrt(2 * R * h_est) / b
+        x_range = (-max(ISOVISCOUS_CAPPED_INLET, 1.0 + hydro), ISOVISCOUS_CAPPED_OUTLET)
+    return x_range
+
+
 def line_setup(scene: Scene, nodes: int | None = None,
                x_nodes: np.ndarray | None = None) -> LineSetup:
     """Reference scales, default mesh and compliance operator of a line scene.
@@ -595,17 +636,8 @@ def line_setup(scene: Scene, nodes: int | None = None,
         h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity, u_m,
                                        lub.effective_piezo)
         x_unit, p_ref, h_ref = b, p_h, h_est
-        # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
-        inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
-        x_range = scene.mesh.x_range or (-inlet, 1.5)
-        moes_m = units.moes_line(w, R, scene.e_prime, lub.viscosity, u_m,
-                                 lub.effective_piezo)["M"]
-        density = NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
-        capped = (x_range[1] - x_range[0]) * density > MAX_DEFAULT_ELASTIC_NODES - 1
-        if (capped and scene.mesh.x_range is None and lub.effective_piezo == 0.0
-                and model.elasticity == "half-space"):
-            hydro = 15.0 * math.sqrt(2 * R * h_est) / b
-            x_range = (-max(ISOVISCOUS_CAPPED_INLET, 1.0 + hydro), ISOVISCOUS_CAPPED_OUTLET)
+        x_range = scene.mesh.x_range or default_x_range(scene)
+        density = _elastic_density(scene)
     else:
         if scene.load.gap is not None:
             h0 = scene.load.gap

@@ -305,6 +305,41 @@ def _mirrorable(y_range: tuple[float, float], ny: int) -> bool:
     return y_range[0] == -y_range[1] and ny % 2 == 1
 
 
+def default_ranges(scene) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The default domain of a loaded elastic point scene, the one :func:`point_setup`
+    takes when ``scene.mesh`` gives no ``x_range`` or ``y_range``.
+
+    Parameters
+    ----------
+    scene : Scene
+        A point scene with ``load.force`` [N] and an elastic model.
+
+    Returns
+    -------
+    x_range, y_range : (float, float)
+        In Hertz semi-axes a_x, a_y [-]: the fully flooded inlet, 4.5 a_x or 8
+        hydrodynamic lengths sqrt(2 rx h) at low load, to the outlet at 1.5 a_x, and
+        y in +-max(3, inlet/2); an isoviscous scene above :data:`HIGH_LOAD_MOES_M` takes
+        the shorter inlet max(:data:`ISOVISCOUS_HIGH_LOAD_INLET`, 1 + 8 sqrt(2 rx h)/a_x),
+        the outlet :data:`ISOVISCOUS_HIGH_LOAD_OUTLET` and y in
+        +-:data:`ISOVISCOUS_HIGH_LOAD_SIDE`.
+    """
+    rx, ry, lub = scene.contact.rx, scene.contact.ry, scene.lubricant
+    F = scene.load.force
+    hz = units.hertz_point(F, rx, ry, scene.e_prime)
+    h_est = point_central_film_nvm(F, rx, ry, scene.e_prime, lub.viscosity,
+                                   scene.kinematics.mean_speed, lub.effective_piezo)
+    # fully flooded inlet: 4.5 a, or 8 hydrodynamic lengths sqrt(2 rx h) at low load
+    hydro = 8.0 * math.sqrt(2 * rx * h_est) / hz.a_x
+    inlet = max(4.5, hydro)
+    side = max(3.0, 0.5 * inlet)
+    outlet = 1.5
+    if lub.effective_piezo == 0.0 and _moes_point_m(scene) > HIGH_LOAD_MOES_M:
+        inlet = max(ISOVISCOUS_HIGH_LOAD_INLET, 1.0 + hydro)
+        outlet, side = ISOVISCOUS_HIGH_LOAD_OUTLET, ISOVISCOUS_HIGH_LOAD_SIDE
+    return (-inlet, outlet), (-side, side)
+
+
 def point_setup(scene, nodes: tuple[int, int] | None = None,
                 symmetric: bool = False) -> PointSetup:
     """Reference scales, default grid and compliance of a point scene.
@@ -329,16 +364,9 @@ def point_setup(scene, nodes: tuple[int, int] | None = None,
                                        lub.effective_piezo)
         x_unit, y_unit = hz.a_x, hz.a_y
         p_ref, h_ref = hz.p_h, h_est
-        # fully flooded inlet: 4.5 a, or 8 hydrodynamic lengths sqrt(2 rx h) at low load
-        hydro = 8.0 * math.sqrt(2 * rx * h_est) / hz.a_x
-        inlet = max(4.5, hydro)
-        side = max(3.0, 0.5 * inlet)
-        outlet = 1.5
-        if lub.effective_piezo == 0.0 and _moes_point_m(scene) > HIGH_LOAD_MOES_M:
-            inlet = max(ISOVISCOUS_HIGH_LOAD_INLET, 1.0 + hydro)
-            outlet, side = ISOVISCOUS_HIGH_LOAD_OUTLET, ISOVISCOUS_HIGH_LOAD_SIDE
-        xr = scene.mesh.x_range or (-inlet, outlet)
-        yr = scene.mesh.y_range or (-side, side)
+        default_x, default_y = default_ranges(scene)
+        xr = scene.mesh.x_range or default_x
+        yr = scene.mesh.y_range or default_y
         axes = _file_axes(scene, nodes, x_unit, y_unit)
         if axes is not None:
             x, y = axes
