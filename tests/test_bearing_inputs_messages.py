@@ -66,6 +66,21 @@ def test_oil_temperatures_refused_where_they_are_used():
         Bearing.from_dict(d)
 
 
+def test_cold_oil_with_the_thermal_patch_names_the_patch_first():
+    """model.thermal = 'patch' without the Prokofiev law is refused for that, whatever the
+    oil temperature; with it, a cold oil's hint also names model.thermal = 'none'."""
+    with pytest.raises(SceneError, match=r"model\.thermal = 'patch' needs "
+                                         r"lubricant\.temperature_law = 'prokofiev'"):
+        small_roller(operation={"oil_temperature": -10}, model={"thermal": "patch"})
+    with pytest.raises(SceneError) as err:
+        small_roller(operation={"oil_temperature": -10}, model={"thermal": "patch"},
+                     lubricant={"temperature_law": "prokofiev", "viscosity": None,
+                                "reference_viscosity": 0.06, "exponent": 2.9})
+    text = str(err.value)
+    assert text.startswith("operation.oil_temperature = -10 deg C must be > 0 deg C"), text
+    assert "give model.thermal = 'none' and lubricant.temperature_law = 'none'" in text, text
+
+
 def test_contact_angle_of_60_deg_is_accepted():
     d = _example("7010-steel")
     d["bearing"]["contact_angle"] = 60.0

@@ -928,15 +928,6 @@ class Bearing:
         if lub.temperature_law == "prokofiev" and op.oil_temperature is None:
             raise SceneError("operation.oil_temperature (deg C) is required by "
                              "lubricant.temperature_law = 'prokofiev'")
-        needs = ("lubricant.temperature_law = 'prokofiev'" if lub.temperature_law == "prokofiev"
-                 else "model.thermal = 'patch'" if model.thermal == "patch" else None)
-        if needs and op.oil_temperature is not None and op.oil_temperature <= 0.0:
-            raise SceneError(f"operation.oil_temperature = {op.oil_temperature:g} deg C must be "
-                             f"> 0 deg C with {needs}: the Prokofiev law eta0(t) = "
-                             "reference_viscosity (reference_temperature/t)^exponent is written "
-                             "in deg C and has no value at t <= 0; for a cold start give "
-                             "lubricant.temperature_law = 'none' with lubricant.viscosity (Pa s) "
-                             "at that temperature")
         if model.thermal == "patch":
             if g.is_ball:
                 raise SceneError("model.thermal = 'patch' is available for line contacts "
@@ -944,6 +935,19 @@ class Bearing:
             if lub.temperature_law != "prokofiev":
                 raise SceneError("model.thermal = 'patch' needs lubricant.temperature_law "
                                  "= 'prokofiev' (reference_viscosity, exponent)")
+        if (lub.temperature_law == "prokofiev" and op.oil_temperature is not None
+                and op.oil_temperature <= 0.0):
+            patch = model.thermal == "patch"
+            raise SceneError(f"operation.oil_temperature = {op.oil_temperature:g} deg C must be "
+                             "> 0 deg C with lubricant.temperature_law = 'prokofiev'"
+                             + (" (and model.thermal = 'patch', which needs it)" if patch
+                                else "")
+                             + ": the Prokofiev law eta0(t) = reference_viscosity "
+                             "(reference_temperature/t)^exponent is written in deg C and has "
+                             "no value at t <= 0; for a cold start give "
+                             + ("model.thermal = 'none' and " if patch else "")
+                             + "lubricant.temperature_law = 'none' with lubricant.viscosity "
+                             "(Pa s) at that temperature")
         if model.elasticity == "local" and g.is_ball:
             raise SceneError("model.elasticity = 'local' (Kodnir) is defined for line "
                              f"contacts only, got {g.type!r}")
