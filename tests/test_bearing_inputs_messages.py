@@ -12,6 +12,7 @@ import pytest
 
 from bearing_fem import cli, io
 from bearing_fem.bearing import Bearing, load_example, solve_bearing
+from bearing_fem.bearing.description import input_warnings
 from bearing_fem.bearing.contacts import contact_specs
 from bearing_fem.bearing.empirical import empirical_models
 from bearing_fem.bearing.kinematics import element_kinematics
@@ -173,6 +174,93 @@ def test_truncated_inlet_warns():
     r = solve_bearing(small_roller(mesh={"line_nodes": 101, "x_range": [-3.0, 1.2]}))
     assert any(x.startswith("mesh.x_range starts at -3 ") for x in r.warnings), r.warnings
 
+
+
+def test_hot_oil_gets_one_warning_under_the_thermal_patch():
+    """Oil at 250 deg C with model.thermal = 'patch': the bearing's input warning (looks
+    like kelvin, oils oxidise) is the only warning about operation.oil_temperature; the
+    contacts' own hot-oil warning is left out."""
+    b = small_roller(operation={"oil_temperature": 250.0}, model={"thermal": "patch"},
+                     mesh={"line_nodes": 101},
+                     lubricant={"temperature_law": "prokofiev", "viscosity": None,
+                                "reference_viscosity": 0.06, "exponent": 2.9})
+    r = solve_bearing(b)
+    about = [w for w in r.warnings if "oil_temperature" in w]
+    assert len(about) == 1, about
+    assert about[0].startswith("operation.oil_temperature = 250 deg C is above 200 deg C"), about
+    assert "oxidise" in about[0] and "looks like kelvin (250 K is -23.15 deg C)" in about[0], \
+        about
+
+
+def test_reference_temperature_warns_only_under_the_prokofiev_law():
+    d = small_roller().to_dict()
+    d["lubricant"]["reference_temperature"] = 313.0
+    assert input_warnings(Bearing.from_dict(d)) == [], \
+        "lubricant.reference_temperature is unused without the Prokofiev law"
+    d["lubricant"] = {"temperature_law": "prokofiev", "reference_viscosity": 0.06,
+                      "exponent": 2.9, "piezo": 2e-8, "reference_temperature": 313.0}
+    d["operation"]["oil_temperature"] = 60.0
+    (w,) = input_warnings(Bearing.from_dict(d))
+    assert w.startswith("lubricant.reference_temperature = 313 deg C is above 200"), w
+
+
+def test_load_distribution_failure_keeps_the_input_warnings(monkeypatch):
+    from bearing_fem.bearing import solve as bearing_solve
+
+    def fail(bearing):
+        raise RuntimeError("no balance")
+
+    monkeypatch.setattr(bearing_solve, "distribute_loads", fail)
+    r = solve_bearing(small_roller(operation={"oil_temperature": 353.0}))
+    assert r.status == "load_distribution_failed", r.status
+    assert len(r.warnings) == 1 and r.warnings[0].startswith(
+        "operation.oil_temperature = 353 deg C is above 200 deg C"), r.warnings
+
+
+def test_kelvin_hints_share_one_helper(monkeypatch):
+    """Operation, BearingLubricant and input_warnings read a kelvin-like value with one
+    helper, and the oil range ends where the scenes' temperature range does."""
+    from bearing_fem.bearing import description
+    from bearing_fem.scene import TEMPERATURE_RANGE
+
+    assert description.OIL_TEMPERATURE_RANGE[1] is TEMPERATURE_RANGE[1], \
+        "one constant for the hottest accepted temperature"
+    monkeypatch.setattr(description, "_kelvin", lambda t: f"<{t:g} K>")
+    d = small_roller().to_dict()
+    d["operation"]["oil_temperature"] = 600.0
+    with pytest.raises(SceneError, match=r"looks like kelvin \(<600 K>\)"):
+        Bearing.from_dict(d)
+    d["operation"]["oil_temperature"] = 353.0
+    assert "(<353 K>)" in input_warnings(Bearing.from_dict(d))[0], "input_warnings"
+    d["lubricant"]["reference_temperature"] = 600.0
+    with pytest.raises(SceneError, match=r"^lubricant\.reference_temperature .*\(<600 K>\)"):
+        Bearing.from_dict(d)
+
+
+def test_skf_types_come_from_one_table(monkeypatch):
+    """SKF_CONSTANTS_USED lists the types with an SKF model: empirical_models and
+    skf_friction_torque follow it."""
+    from bearing_fem.bearing import empirical
+    from bearing_fem.bearing.description import SKF_CONSTANTS_USED
+
+    b = small_roller(empirical={"skf_r1": 1.09e-6, "skf_s1": 0.16, "skf_s2": 0.0015})
+    assert "torque" in empirical_models(b, 0.0)["skf"], "the SKF model of a listed type"
+    monkeypatch.delitem(SKF_CONSTANTS_USED, "cylindrical-roller")
+    assert empirical_models(b, 0.0)["skf"]["available"] is False, \
+        "a type left out of SKF_CONSTANTS_USED has no SKF model"
+    with pytest.raises(ValueError, match="SKF model implemented for deep-groove-ball bearings, "
+                                         "got 'cylindrical-roller'"):
+        empirical.skf_friction_torque("cylindrical-roller", 30, 62, 1500.0, 30.0, 2000.0,
+                                      r1=1.09e-6, r2=0.0, s1=0.16, s2=0.0015)
+
+
+def test_missing_estimate_warning_names_the_bearings_mesh_key(monkeypatch):
+    from bearing_fem.bearing import solve as bearing_solve
+
+    monkeypatch.setattr(bearing_solve, "_nodes_key", lambda bearing: "<key>")
+    b = small_roller()
+    text = bearing_solve._missing_estimate_warning(b, [], {}, [], ["torque"])
+    assert text.endswith("finer contact grids ([mesh] <key>) give estimates"), text
 
 
 def test_isoviscous_heavily_loaded_default_domain_is_not_called_truncated():

@@ -109,6 +109,12 @@ MAX_ROUGHNESS = 1e-5
 #: kelvin: mineral oils oxidise quickly above about 150 deg C and few synthetic oils run
 #: above 200 deg C, while 273..473 are common temperatures in kelvin.
 KELVIN_WARNING_TEMPERATURE = 200.0
+
+
+def _kelvin(t: float) -> str:
+    """The kelvin reading of a temperature given in deg C, for unit hints:
+    ``"300 K is 26.85 deg C"``."""
+    return f"{t:g} K is {t - 273.15:g} deg C"
 #: Smallest nominal contact angle [deg] of an angular-contact ball or tapered roller
 #: bearing: real ones have 10..40 deg; below 2 deg the value is almost surely in radians
 #: (0.26 for 15 deg) and is refused.
@@ -120,9 +126,9 @@ MIN_NOMINAL_CONTACT_ANGLE = 2.0
 MAX_NOMINAL_CONTACT_ANGLE = 60.0
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
-#: above it the value is kelvin). The Prokofiev law and the thermal model need t > 0 deg C
+#: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`. The Prokofiev law and the thermal model need t > 0 deg C
 #: (checked by :class:`Bearing` where they use it).
-OIL_TEMPERATURE_RANGE = (-60.0, 500.0)
+OIL_TEMPERATURE_RANGE = (-60.0, TEMPERATURE_RANGE[1])
 #: Fewest slices along a profiled roller that docs/bearing.md ("Slicing error")
 #: recommends (the default count): with fewer, a bearing's warnings say that the error
 #: bars exclude the slicing error (measured: 5 slices put the torque 8 % off).
@@ -583,7 +589,7 @@ class BearingLubricant:
             raise SceneError(f"lubricant.reference_temperature = {t_ref:g} deg C lies above "
                              f"{t_hi:g} deg C: that is no oil temperature (oils decompose long "
                              "before); temperatures are in deg C, and this looks like kelvin "
-                             f"({t_ref:g} K is {t_ref - 273.15:g} deg C)")
+                             f"({_kelvin(t_ref)})")
         if t_ref <= 0.0:
             raise SceneError(f"lubricant.reference_temperature = {t_ref:g} deg C must be > 0 "
                              "deg C: the Prokofiev law eta0(t) = reference_viscosity "
@@ -650,7 +656,7 @@ class Operation:
                 raise SceneError(f"operation.oil_temperature = {t:g} deg C lies above "
                                  f"{t_hi:g} deg C: that is no oil temperature (oils decompose "
                                  "long before); temperatures are in deg C, and this looks like "
-                                 f"kelvin ({t:g} K is {t - 273.15:g} deg C)")
+                                 f"kelvin ({_kelvin(t)})")
             if t < t_lo:
                 raise SceneError(f"operation.oil_temperature = {t:g} deg C lies below "
                                  f"{t_lo:g} deg C, colder than any oil flows; give the oil "
@@ -1047,13 +1053,38 @@ class Bearing:
         return replace(self, **sections)
 
 
+def _kelvin_like_temperatures(bearing: Bearing) -> list[tuple[str, float]]:
+    """The temperatures of a bearing that look like kelvin: ``operation.oil_temperature``
+    and, when the Prokofiev law uses it, ``lubricant.reference_temperature``, above
+    :data:`KELVIN_WARNING_TEMPERATURE`.
+
+    Parameters
+    ----------
+    bearing : Bearing
+
+    Returns
+    -------
+    list of (str, float)
+        The field's name and its value [deg C], for :func:`input_warnings` (and the bearing
+        solve, which leaves out the contacts' own warnings about these fields).
+    """
+    temps = [("operation.oil_temperature", bearing.operation.oil_temperature)]
+    if bearing.lubricant.temperature_law == "prokofiev":
+        temps.append(("lubricant.reference_temperature",
+                      bearing.lubricant.reference_temperature))
+    return [(name, float(t)) for name, t in temps
+            if t is not None and t > KELVIN_WARNING_TEMPERATURE]
+
+
 def input_warnings(bearing: Bearing) -> list[str]:
     """Warnings about accepted values that look like a unit slip or limit the accuracy
     (:func:`~bearing_fem.bearing.solve_bearing` puts them first in the bearing's
     ``warnings``).
 
-    * ``operation.oil_temperature`` or ``lubricant.reference_temperature`` above
-      :data:`KELVIN_WARNING_TEMPERATURE` [deg C]: it looks like kelvin;
+    * ``operation.oil_temperature``, or ``lubricant.reference_temperature`` of the
+      Prokofiev law, above :data:`KELVIN_WARNING_TEMPERATURE` [deg C]: it looks like kelvin
+      (:func:`_kelvin_like_temperatures`; the bearing's warnings then leave out the contacts'
+      own warning about a hot oil);
     * a profiled roller with fewer than :data:`MIN_RECOMMENDED_SLICES` slices: the error
       bars exclude the slicing error, which is then of several per cent;
     * a tapered roller bearing with an odd number of rows: the model takes its rows in
@@ -1065,13 +1096,11 @@ def input_warnings(bearing: Bearing) -> list[str]:
     list of str
     """
     out = []
-    temps = (("operation.oil_temperature", bearing.operation.oil_temperature),
-             ("lubricant.reference_temperature", bearing.lubricant.reference_temperature))
-    for name, t in temps:
-        if t is not None and t > KELVIN_WARNING_TEMPERATURE:
-            out.append(f"{name} = {t:g} deg C is above {KELVIN_WARNING_TEMPERATURE:g} deg C, "
-                       "hotter than lubricating oils run: temperatures are in deg C, and "
-                       f"this looks like kelvin ({t:g} K is {t - 273.15:g} deg C)")
+    for name, t in _kelvin_like_temperatures(bearing):
+        out.append(f"{name} = {t:g} deg C is above {KELVIN_WARNING_TEMPERATURE:g} deg C, "
+                   "hotter than lubricating oils run (mineral oils oxidise and degrade above "
+                   "about 150 deg C): temperatures are in deg C, and this looks like kelvin "
+                   f"({_kelvin(t)})")
     g = bearing.geometry
     if not g.is_ball and g.profile != "straight" and g.n_slices < MIN_RECOMMENDED_SLICES:
         out.append(f"bearing.slices = {g.n_slices}, below the recommended minimum of "

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from .. import formulas
 from ..validation import require_nonnegative, require_positive
-from .description import SKF_GEOMETRY_CONSTANTS
+from .description import SKF_CONSTANTS_USED, SKF_GEOMETRY_CONSTANTS
 
 if TYPE_CHECKING:
     from .description import Bearing
@@ -230,6 +230,9 @@ def skf_friction_torque(bearing_type: str, bore_mm: float, outside_mm: float, rp
     nu = require_positive("kinematic_viscosity_mm2s", kinematic_viscosity_mm2s, "mm^2/s")
     fr = require_nonnegative("radial_load", radial_load, "N")
     fa = require_nonnegative("axial_load", axial_load, "N")
+    if bearing_type not in SKF_CONSTANTS_USED:
+        raise ValueError(f"SKF model implemented for {' and '.join(SKF_CONSTANTS_USED)} "
+                         f"bearings, got {bearing_type!r}")
     dm = 0.5 * (d + big_d)
     if bearing_type == "deep-groove-ball":
         if fa == 0.0:
@@ -247,9 +250,8 @@ def skf_friction_torque(bearing_type: str, bore_mm: float, outside_mm: float, rp
         g_rr = r1 * dm**2.41 * fr**0.31
         g_sl = s1 * dm**0.9 * fa + s2 * dm * fr
         mu_default = 0.02
-    else:
-        raise ValueError(f"SKF model implemented for deep-groove-ball and cylindrical-roller "
-                         f"bearings, got {bearing_type!r}")
+    else:  # a type of SKF_CONSTANTS_USED needs its G_rr and G_sl here
+        raise ValueError(f"no SKF G_rr, G_sl formulas for {bearing_type!r} bearings")
     k_rs = 3e-8 if lubrication in ("oil-bath", "oil-jet") else 6e-8
     kz = SKF_KZ[bearing_type]
     phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
@@ -502,7 +504,7 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
                   opts.skf_s2)
     elif opts.skf_series is not None:
         consts = SKF_GEOMETRY_CONSTANTS.get((g.type, opts.skf_series))
-    if g.type not in ("deep-groove-ball", "cylindrical-roller"):
+    if g.type not in SKF_CONSTANTS_USED:
         out["skf"] = {"available": False, "reason": f"SKF model not implemented here for "
                                                     f"{g.type} bearings"}
     elif consts is None:

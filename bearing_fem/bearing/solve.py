@@ -28,7 +28,7 @@ from ..errors import SceneError
 from ..post import ERROR_WARNING_THRESHOLD
 from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
-from .description import Bearing, input_warnings
+from .description import Bearing, _kelvin_like_temperatures, input_warnings
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, distribute_loads
@@ -268,7 +268,7 @@ def solve_bearing(bearing: Bearing, *,
     except (RuntimeError, ValueError) as exc:
         return BearingResult(bearing=bearing, success=False, status="load_distribution_failed",
                              message=f"no ring displacement balances the loads: {exc}",
-                             wall_time_s=time.perf_counter() - t0)
+                             warnings=warnings, wall_time_s=time.perf_counter() - t0)
     flipped = np.flatnonzero(np.maximum(np.abs(dist.alpha_inner), np.abs(dist.alpha_outer))
                              >= 0.5 * math.pi)
     if flipped.size:
@@ -399,7 +399,10 @@ def _contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[
     unsuccessful scene are about its last iterate and are dropped; its failure message
     (shortened) is given instead. With ``drop_missing_estimate`` (the bearing's own
     warning lists the contacts without error estimates) a contact's "no error estimate"
-    warning is dropped too."""
+    warning is dropped too. A warning about a temperature that the bearing's input
+    warnings already call kelvin-like (:func:`~bearing_fem.bearing.description.
+    _kelvin_like_temperatures`, e.g. a hot oil) is dropped: theirs says it, and more."""
+    covered = tuple(f"{name} = " for name, _ in _kelvin_like_temperatures(bearing))
     users: dict[str, list[str]] = {}
     for spec in specs:
         for i, key in enumerate(spec.keys):
@@ -421,7 +424,10 @@ def _contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[
         for w in res.warnings:
             if drop_missing_estimate and w.startswith("no error estimate"):
                 continue
-            texts.setdefault(_bearing_terms(bearing, w), []).extend(names)
+            text = _bearing_terms(bearing, w)
+            if covered and text.startswith(covered):
+                continue
+            texts.setdefault(text, []).extend(names)
 
     def who(names: list[str]) -> str:
         sep = "; " if any("," in n for n in names) else ", "
@@ -532,7 +538,7 @@ def _missing_estimate_warning(bearing: Bearing, specs: list[ContactSpec],
                     example = f" (here e.g. {coarse} below {grid})"
             name = f"{e['index']} {c['raceway']}"
             items.append(f"{name} ({', '.join(dict.fromkeys(grids))})" if grids else name)
-    key = "point_nodes" if bearing.geometry.is_ball else "line_nodes"
+    key = _nodes_key(bearing)
     return (f"no error estimate for {', '.join(unknown)}: contact(s) "
             f"{'; '.join(items[:4])}{' ...' if len(items) > 4 else ''} have none. A contact's "
             "estimate compares its solution with the same solve on the grids of every other "
