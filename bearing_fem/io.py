@@ -704,12 +704,12 @@ def _contact_block_points(res: Any, azimuth: float, race_radius: float, alpha: f
 
 def _slice_suffix(spec: Any, k: int) -> str:
     """``"_slice<n>"`` of the ``k``-th scene of a profiled roller's contact, ``n`` the
-    slice's number counted from one, as in the warnings ("slice 2 of 5"); ``""`` for a
-    contact of one scene."""
-    if len(spec.keys) <= 1:
+    slice's number counted from one roller end, as in the warnings ("slice 6 of 11",
+    :func:`bearing_fem.bearing.totals.slice_label`), also when one slice alone is loaded;
+    ``""`` for a contact that is not sliced."""
+    if not spec.slice_numbers:
         return ""
-    n = spec.slice_numbers[k] if spec.slice_numbers else k + 1
-    return f"_slice{n:02d}"
+    return f"_slice{spec.slice_numbers[k]:02d}"
 
 
 class _BearingContactSummary:

@@ -171,3 +171,21 @@ def test_cli_bearing_names_the_shipped_examples(tmp_path, monkeypatch, capsys, n
     assert f"no bearing file {name!r}" in err and "6209, 7010-hybrid" in err, err
     assert hint in err
     assert not (tmp_path / "o").exists()
+
+
+def test_one_loaded_slice_keeps_its_slice_number_in_the_folder_name(tmp_path):
+    """A profiled roller whose contacts have one loaded slice: the folder is named by that
+    slice's number, as its warnings and labels are ("slice 6 of 11")."""
+    from bearing_fem.bearing.totals import slice_label
+
+    r = solve_bearing(small_roller(bearing={"profile": "crowned", "crown_drop": 8e-5,
+                                            "slices": 11},
+                                   operation={"radial_load": 100.0}, mesh={"line_nodes": 101}))
+    j = r.most_loaded_element()
+    spec = next(s for s in r.specs if s.element == j and s.raceway == "inner")
+    assert len(spec.keys) == 1 and spec.slice_numbers, (spec.keys, spec.slice_numbers)
+    n = spec.slice_numbers[0]
+    assert slice_label(spec, 0, 11) == f"slice {n} of 11"
+    files = io.export_bearing(r, tmp_path)
+    assert f"contact_{j:03d}_inner_slice{n:02d}" in files, sorted(files)
+    assert f"contact_{j:03d}_inner" not in files, "the slice number is in the name"
