@@ -247,6 +247,31 @@ def test_moduli_in_gpa_are_refused_where_read(name, value):
     assert getattr(Bearing.from_dict(d).materials, name) == 3.1e11, "Si3N4 is accepted"
 
 
+@pytest.mark.parametrize("value, hint", [
+    (208.0, "(208 GPa is 2.08e+11)"), (208000.0, "(208000 MPa is 2.08e+11)"),
+    (0.2, "(e.g. 208 GPa is 2.08e+11)"),  # 0.2 GPa = 2e8 Pa: still outside the range
+])
+def test_modulus_hint_names_a_unit_only_when_its_reading_is_accepted(value, hint):
+    d = _base()
+    d["materials"]["element_modulus"] = value
+    with pytest.raises(SceneError) as err:
+        Bearing.from_dict(d)
+    assert str(err.value).endswith("moduli are in Pa " + hint), str(err.value)
+
+
+@pytest.mark.parametrize("value, hint", [
+    (0.2, "(0.2 um is 2e-07)"), (0.0002, "(0.0002 mm is 2e-07)"),
+    (2e-5, "(e.g. 0.2 um is 2e-07)"),  # 20 um in metres: too rough, not 2e-05 mm = 20 nm
+    (50.0, "(e.g. 0.2 um is 2e-07)"),  # 50 um: too rough in any unit
+])
+def test_roughness_hint_names_a_unit_only_when_its_reading_is_accepted(value, hint):
+    d = _base()
+    d["model"]["roughness"] = value
+    with pytest.raises(SceneError) as err:
+        Bearing.from_dict(d)
+    assert str(err.value).endswith("the roughness is in metres " + hint), str(err.value)
+
+
 def test_roughness_in_micrometres_is_refused():
     d = _base()
     d["model"]["roughness"] = 0.2

@@ -105,6 +105,9 @@ BEARING_MODULUS_RANGE = (1e9, 2e12)
 #: parameter h_min/sigma of any EHL film is far below 0.01 and meaningless, and the value
 #: is a unit slip (0.2 for 0.2 um).
 MAX_ROUGHNESS = 1e-5
+#: Composite rms roughness [m] that a unit hint of a refused roughness may suggest: from
+#: the finest finished bearing surfaces (0.05 um) to :data:`MAX_ROUGHNESS`.
+ROUGHNESS_HINT_RANGE = (5e-8, MAX_ROUGHNESS)
 #: Oil temperature [deg C] above which a bearing's warnings say that it looks like
 #: kelvin: mineral oils oxidise quickly above about 150 deg C and few synthetic oils run
 #: above 200 deg C, while 273..473 are common temperatures in kelvin.
@@ -170,13 +173,21 @@ def _length(obj: Any, name: str) -> float:
 
 
 def _modulus_hint(value: float) -> str:
-    """The unit hint of a modulus message read from its value: GPa (208 for 208 GPa) below
-    1e4, MPa (208000) below 1e7, else an example."""
-    if value < 1e4:
-        return f" ({value:g} GPa is {value * 1e9:g})"
-    if value < 1e7:
-        return f" ({value:g} MPa is {value * 1e6:g})"
-    return " (e.g. 208 GPa is 2.08e+11)"
+    """The unit hint of a refused modulus [Pa]: the value read as GPa (208 for 208 GPa) or
+    MPa (208000), whichever lands in :data:`BEARING_MODULUS_RANGE`, else an example."""
+    reading = _unit_reading(value, (("GPa", 1e9), ("MPa", 1e6)), BEARING_MODULUS_RANGE)
+    return f" ({reading})" if reading else " (e.g. 208 GPa is 2.08e+11)"
+
+
+def _unit_reading(value: float, units: tuple[tuple[str, float], ...],
+                  accepted: tuple[float, float]) -> str | None:
+    """``"<value> <unit> is <SI value>"`` for the first unit (name, factor to SI) whose
+    reading of ``value`` lies in ``accepted`` (SI), else None: a hint that names a unit
+    only when the value read in it is a valid input."""
+    for unit, factor in units:
+        if accepted[0] <= value * factor <= accepted[1]:
+            return f"{value:g} {unit} is {value * factor:g}"
+    return None
 
 
 def _modulus(obj: Any, name: str) -> None:
@@ -714,11 +725,11 @@ class BearingModel:
 
 
 def _roughness_hint(value: float) -> str:
-    """The unit hint of a roughness message read from its value: micrometres from 0.01
-    up (0.2 for 0.2 um), else millimetres (0.0002 for 0.2 um)."""
-    if value >= 0.01:
-        return f"{value:g} um is {value * 1e-6:g}"
-    return f"{value:g} mm is {value * 1e-3:g}"
+    """The unit hint of a refused roughness [m]: the value read as micrometres (0.2 for
+    0.2 um) or millimetres (0.0002), whichever lands in :data:`ROUGHNESS_HINT_RANGE`, else
+    an example (2e-05 is 20 um in metres, too rough, and no 2e-05 mm)."""
+    reading = _unit_reading(value, (("um", 1e-6), ("mm", 1e-3)), ROUGHNESS_HINT_RANGE)
+    return reading or "e.g. 0.2 um is 2e-07"
 
 
 @dataclass(frozen=True, kw_only=True)
