@@ -15,9 +15,14 @@ import math
 import os
 import secrets
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:  # annotations only: matplotlib is imported when plotting
+    from matplotlib.figure import Figure
+
+    from .bearing.solve import BearingResult
 
 __all__ = ["plot_load_distribution", "plot_films", "plot_torque_comparison", "torque_figure",
            "failed_contacts", "films_figure", "write_figures", "FIGURES"]
@@ -104,10 +109,23 @@ def plot_load_distribution(result: Any, path: str | Path) -> Path:
     return _save(fig, path)
 
 
-def films_figure(result: Any) -> Any:
-    """The figure of :func:`plot_films` (the caller closes it). Failed contacts have no
-    film or pressure (no point); the title then says "EHL: k of n contacts failed", and
-    when every contact failed the empty axes carry that note."""
+def films_figure(result: BearingResult) -> Figure:
+    """The figure of :func:`plot_films`, not saved (the caller closes it).
+
+    Failed contacts have no film or pressure (no point); the title then says "EHL: k of
+    n contacts failed", and when every contact failed the empty axes carry that note.
+
+    Parameters
+    ----------
+    result : BearingResult
+        A solved bearing (:func:`bearing_fem.bearing.solve_bearing`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two axes over the azimuth [deg]: h_min [um] and p_max [GPa] of the inner and
+        outer contacts.
+    """
     plt = _pyplot()
     a = _element_arrays(result)
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
@@ -141,19 +159,40 @@ def plot_films(result: Any, path: str | Path) -> Path:
     return _save(films_figure(result), path)
 
 
-def failed_contacts(result: Any) -> tuple[int, int]:
-    """(failed, solved): how many of a bearing result's solved contacts (not excluded)
-    were unsuccessful, and how many were solved."""
+def failed_contacts(result: BearingResult) -> tuple[int, int]:
+    """How many of a bearing result's solved contacts were unsuccessful.
+
+    Parameters
+    ----------
+    result : BearingResult
+        A solved bearing (:func:`bearing_fem.bearing.solve_bearing`).
+
+    Returns
+    -------
+    failed, solved : int
+        Unsuccessful contacts, and contacts solved (not excluded as lightly loaded).
+    """
     contacts = [c for e in result.elements for c in (e["inner"], e["outer"])
                 if c["status"] != "excluded"]
     return sum(1 for c in contacts if not c["success"]), len(contacts)
 
 
-def torque_figure(result: Any) -> Any:
-    """The figure of :func:`plot_torque_comparison` (not saved; the caller closes it).
+def torque_figure(result: BearingResult) -> Figure:
+    """The figure of :func:`plot_torque_comparison`, not saved (the caller closes it).
 
     Without an EHL total (a contact failed) there is no EHL bar: its place is labelled
     "EHL: k of n contacts failed" and a note on the axes says so.
+
+    Parameters
+    ----------
+    result : BearingResult
+        A solved bearing (:func:`bearing_fem.bearing.solve_bearing`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Bars of the friction torque [N m]: the EHL total (inner and outer contacts) beside
+        the empirical models.
     """
     plt = _pyplot()
     t = result.totals

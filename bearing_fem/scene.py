@@ -181,10 +181,22 @@ def field_range(obj: Any, name: str, *, hertz_zone: bool = False
 
 
 def require_hertz_zone(where: str, r: tuple[float, float]) -> None:
-    """A domain (start, end) in Hertz half-widths (b, or the semi-axes a_x, a_y) must
-    contain the Hertz zone: start <= -:data:`HERTZ_ZONE` and end >= :data:`HERTZ_ZONE`,
-    else SceneError naming the field ``where``, its value and the unit (a range given in
-    metres, mostly). The one rule for elastic scenes with a load and for bearings."""
+    """Check that a domain contains the Hertz zone: start <= -:data:`HERTZ_ZONE` and end
+    >= :data:`HERTZ_ZONE`. The one rule for elastic scenes with a load and for bearings.
+
+    Parameters
+    ----------
+    where : str
+        The field's name for the message (e.g. ``"mesh.x_range"``).
+    r : (float, float)
+        The domain (start, end) in Hertz half-widths [-] (b, or the semi-axes a_x, a_y).
+
+    Raises
+    ------
+    SceneError
+        The range does not contain [-1, 1]; the message names the field, its value and
+        the unit (a range given in metres, mostly).
+    """
     lo, hi = r
     if lo > -HERTZ_ZONE or hi < HERTZ_ZONE:
         raise SceneError(f"{where} = [{lo:g}, {hi:g}] (in Hertz half-widths) does not contain "
