@@ -29,7 +29,7 @@ from ..scene import (GRADINGS, TEMPERATURE_RANGE, SolverSpec, Traction, field_bo
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
            "BEARING_TYPES", "MATERIAL_PRESETS", "load_example", "example_names",
-           "input_warnings"]
+           "input_warnings", "kelvin_like_temperatures"]
 
 #: Bearing types: radial deep-groove and angular-contact ball bearings (one row),
 #: cylindrical roller bearings (any number of rows) and tapered roller bearings
@@ -1064,7 +1064,7 @@ class Bearing:
         return replace(self, **sections)
 
 
-def _kelvin_like_temperatures(bearing: Bearing) -> list[tuple[str, float]]:
+def kelvin_like_temperatures(bearing: Bearing) -> list[tuple[str, float]]:
     """The temperatures of a bearing that look like kelvin: ``operation.oil_temperature``
     and, when the Prokofiev law uses it, ``lubricant.reference_temperature``, above
     :data:`KELVIN_WARNING_TEMPERATURE`.
@@ -1094,7 +1094,7 @@ def input_warnings(bearing: Bearing) -> list[str]:
 
     * ``operation.oil_temperature``, or ``lubricant.reference_temperature`` of the
       Prokofiev law, above :data:`KELVIN_WARNING_TEMPERATURE` [deg C]: it looks like kelvin
-      (:func:`_kelvin_like_temperatures`; the bearing's warnings then leave out the contacts'
+      (:func:`kelvin_like_temperatures`; the bearing's warnings then leave out the contacts'
       own warning about a hot oil);
     * a profiled roller with fewer than :data:`MIN_RECOMMENDED_SLICES` slices: the error
       bars exclude the slicing error, which is then of several per cent;
@@ -1107,7 +1107,7 @@ def input_warnings(bearing: Bearing) -> list[str]:
     list of str
     """
     out = []
-    for name, t in _kelvin_like_temperatures(bearing):
+    for name, t in kelvin_like_temperatures(bearing):
         out.append(f"{name} = {t:g} deg C is above {KELVIN_WARNING_TEMPERATURE:g} deg C, "
                    "hotter than lubricating oils run (mineral oils oxidise and degrade above "
                    "about 150 deg C): temperatures are in deg C, and this looks like kelvin "

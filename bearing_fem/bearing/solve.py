@@ -28,7 +28,7 @@ from ..errors import SceneError
 from ..post import ERROR_WARNING_THRESHOLD
 from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
-from .description import Bearing, _kelvin_like_temperatures, input_warnings
+from .description import Bearing, input_warnings, kelvin_like_temperatures
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, distribute_loads
@@ -400,9 +400,9 @@ def _contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[
     (shortened) is given instead. With ``drop_missing_estimate`` (the bearing's own
     warning lists the contacts without error estimates) a contact's "no error estimate"
     warning is dropped too. A warning about a temperature that the bearing's input
-    warnings already call kelvin-like (:func:`~bearing_fem.bearing.description.
-    _kelvin_like_temperatures`, e.g. a hot oil) is dropped: theirs says it, and more."""
-    covered = tuple(f"{name} = " for name, _ in _kelvin_like_temperatures(bearing))
+    warnings already call kelvin-like (a hot oil; :func:`kelvin_like_temperatures` of
+    :mod:`bearing_fem.bearing.description`) is dropped: theirs says it, and more."""
+    covered = tuple(f"{name} = " for name, _ in kelvin_like_temperatures(bearing))
     users: dict[str, list[str]] = {}
     for spec in specs:
         for i, key in enumerate(spec.keys):
@@ -448,9 +448,10 @@ def _default_domain(scene: Any) -> tuple[float, float]:
     """(inlet, side) of the default domain of a loaded elastic contact scene [Hertz
     half-widths]: where the default x range starts upstream, -x_range[0], and the
     half-width of a point contact's default y range (0 for a line contact), from the same
-    functions the contact setups take them from (:func:`bearing_fem.contacts.line.
-    default_x_range`, :func:`bearing_fem.contacts.point.default_ranges`; an isoviscous
-    heavily loaded contact has a shorter inlet)."""
+    functions the contact setups take them from (``default_x_range`` of
+    :mod:`bearing_fem.contacts.line`, ``default_ranges`` of
+    :mod:`bearing_fem.contacts.point`; an isoviscous heavily loaded contact has a shorter
+    inlet)."""
     if scene.contact.kind == "line":
         from ..contacts.line import default_x_range
 
