@@ -113,11 +113,6 @@ ROUGHNESS_HINT_RANGE = (5e-8, MAX_ROUGHNESS)
 #: above 200 deg C, while 273..473 are common temperatures in kelvin.
 KELVIN_WARNING_TEMPERATURE = 200.0
 
-
-def _kelvin(t: float) -> str:
-    """The kelvin reading of a temperature given in deg C, for unit hints:
-    ``"300 K is 26.85 deg C"``."""
-    return f"{t:g} K is {t - 273.15:g} deg C"
 #: Smallest nominal contact angle [deg] of an angular-contact ball or tapered roller
 #: bearing: real ones have 10..40 deg; below 2 deg the value is almost surely in radians
 #: (0.26 for 15 deg) and is refused.
@@ -129,13 +124,29 @@ MIN_NOMINAL_CONTACT_ANGLE = 2.0
 MAX_NOMINAL_CONTACT_ANGLE = 60.0
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
-#: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`. The Prokofiev law and the thermal model need t > 0 deg C
-#: (checked by :class:`Bearing` where they use it).
+#: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`.
+#: The Prokofiev law and the thermal model need t > 0 deg C (checked by :class:`Bearing`
+#: where they use it).
 OIL_TEMPERATURE_RANGE = (-60.0, TEMPERATURE_RANGE[1])
 #: Fewest slices along a profiled roller that docs/bearing.md ("Slicing error")
 #: recommends (the default count): with fewer, a bearing's warnings say that the error
 #: bars exclude the slicing error (measured: 5 slices put the torque 8 % off).
 MIN_RECOMMENDED_SLICES = 11
+
+def _kelvin(t: float) -> str:
+    """The kelvin reading of a temperature given in deg C, for unit hints:
+    ``"300 K is 26.85 deg C"``."""
+    return f"{t:g} K is {t - 273.15:g} deg C"
+
+
+def _refuse_above_oil_range(field: str, t: float, t_hi: float) -> None:
+    """SceneError for a temperature ``t`` [deg C] of ``field`` above ``t_hi`` [deg C],
+    which no oil reaches: read as kelvin."""
+    if t > t_hi:
+        raise SceneError(f"{field} = {t:g} deg C lies above {t_hi:g} deg C: that is no oil "
+                         "temperature (oils decompose long before); temperatures are in deg "
+                         f"C, and this looks like kelvin ({_kelvin(t)})")
+
 
 #: Words of the length fields in the hints of their messages.
 _LENGTH_WORDS = {"bore": "bore", "outside_diameter": "outside diameter",
@@ -595,12 +606,7 @@ class BearingLubricant:
         field_positive(self, "density", "kg/m^3")
         field_choice(self, "temperature_law", ("none", "prokofiev"))
         t_ref = field_number(self, "reference_temperature", "deg C")
-        t_hi = TEMPERATURE_RANGE[1]
-        if t_ref > t_hi:
-            raise SceneError(f"lubricant.reference_temperature = {t_ref:g} deg C lies above "
-                             f"{t_hi:g} deg C: that is no oil temperature (oils decompose long "
-                             "before); temperatures are in deg C, and this looks like kelvin "
-                             f"({_kelvin(t_ref)})")
+        _refuse_above_oil_range("lubricant.reference_temperature", t_ref, TEMPERATURE_RANGE[1])
         if t_ref <= 0.0:
             raise SceneError(f"lubricant.reference_temperature = {t_ref:g} deg C must be > 0 "
                              "deg C: the Prokofiev law eta0(t) = reference_viscosity "
@@ -663,11 +669,7 @@ class Operation:
         if self.oil_temperature is not None:
             t = field_number(self, "oil_temperature", "deg C")
             t_lo, t_hi = OIL_TEMPERATURE_RANGE
-            if t > t_hi:
-                raise SceneError(f"operation.oil_temperature = {t:g} deg C lies above "
-                                 f"{t_hi:g} deg C: that is no oil temperature (oils decompose "
-                                 "long before); temperatures are in deg C, and this looks like "
-                                 f"kelvin ({_kelvin(t)})")
+            _refuse_above_oil_range("operation.oil_temperature", t, t_hi)
             if t < t_lo:
                 raise SceneError(f"operation.oil_temperature = {t:g} deg C lies below "
                                  f"{t_lo:g} deg C, colder than any oil flows; give the oil "
@@ -971,6 +973,7 @@ class Bearing:
         if model.centrifugal and g.type in ROLLER_TYPES and g.profile != "straight":
             raise SceneError("model.centrifugal with a profiled roller is not modelled; "
                              "use bearing.profile = 'straight' or model.centrifugal = false")
+        self._check_skf_constants()
         self._check_skf_series()
         if self.mesh.point_nodes is not None and not g.is_ball:
             raise SceneError("mesh.point_nodes applies to ball bearings; use mesh.line_nodes")
@@ -1013,7 +1016,6 @@ class Bearing:
 
     def _check_skf_series(self) -> None:
         """``empirical.skf_series``: one listed for this type in SKF_GEOMETRY_CONSTANTS."""
-        self._check_skf_constants()
         series = self.empirical.skf_series
         if series is None:
             return

@@ -494,9 +494,14 @@ def _truncated_domain_warnings(bearing: Bearing, specs: list[ContactSpec]) -> li
     return out
 
 
+def _grid_text(nx: int, ny: int | None) -> str:
+    """A grid of ``nx`` (by ``ny``) nodes: ``"65x65"`` (point) or ``"401 nodes"`` (line)."""
+    return f"{nx} nodes" if ny is None else f"{nx}x{ny}"
+
+
 def _grid(res: Any) -> str:
-    """A contact result's grid: ``"65x65"`` (point) or ``"401 nodes"`` (line)."""
-    return f"{res.x.size} nodes" if res.y is None else f"{res.x.size}x{res.y.size}"
+    """A contact result's grid (:func:`_grid_text`)."""
+    return _grid_text(res.x.size, None if res.y is None else res.y.size)
 
 
 def _missing_estimate_warning(bearing: Bearing, specs: list[ContactSpec],
@@ -533,10 +538,9 @@ def _missing_estimate_warning(bearing: Bearing, specs: list[ContactSpec],
                 grids.append(f"{label + ' ' if label else ''}{_grid(res)}")
                 n = res.x.size
                 if not example and n % 2 == 1:
-                    half = (n - 1) // 2 + 1
-                    grid, coarse = ((f"{n} nodes", f"{half} nodes") if res.y is None else
-                                    (f"{n}x{res.y.size}", f"{half}x{(res.y.size - 1) // 2 + 1}"))
-                    example = f" (here e.g. {coarse} below {grid})"
+                    half_y = None if res.y is None else (res.y.size - 1) // 2 + 1
+                    example = (f" (here e.g. {_grid_text((n - 1) // 2 + 1, half_y)} below "
+                               f"{_grid(res)})")
             name = f"{e['index']} {c['raceway']}"
             items.append(f"{name} ({', '.join(dict.fromkeys(grids))})" if grids else name)
     key = _nodes_key(bearing)

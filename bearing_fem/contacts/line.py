@@ -598,11 +598,10 @@ def default_x_range(scene: Scene) -> tuple[float, float]:
     h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity,
                                    scene.kinematics.mean_speed, lub.effective_piezo)
     # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
-    inlet = max(4.5, 15.0 * math.sqrt(2 * R * h_est) / b)
-    x_range = (-inlet, 1.5)
+    hydro = 15.0 * math.sqrt(2 * R * h_est) / b
+    x_range = (-max(4.5, hydro), 1.5)
     capped = (x_range[1] - x_range[0]) * _elastic_density(scene) > MAX_DEFAULT_ELASTIC_NODES - 1
     if capped and lub.effective_piezo == 0.0 and scene.model.elasticity == "half-space":
-        hydro = 15.0 * math.sqrt(2 * R * h_est) / b
         x_range = (-max(ISOVISCOUS_CAPPED_INLET, 1.0 + hydro), ISOVISCOUS_CAPPED_OUTLET)
     return x_range
 
