@@ -165,3 +165,85 @@ def test_sliced_roller_profile():
     per_length = (0.5 * delta / c_l) ** (1 / 0.9)
     np.testing.assert_allclose(per_length * b.geometry.effective_length, q, rtol=1e-12,
                                err_msg="slice law reduces to Palmgren for a straight roller")
+
+
+# ---------------------------------------------------------------------------------------
+# tapered rollers under a combined load (Sjovall's integrals)
+# ---------------------------------------------------------------------------------------
+def _tapered(z: int = 20, rows: int = 1, fr: float = 1e5, fa: float = 0.0,
+             beta: float = 15.0, clearance: float = 0.0) -> Bearing:
+    b = load_example("nncf5040")
+    dm = b.geometry.mean_diameter
+    g = replace(b.geometry, type="tapered-roller", contact_angle=beta, rows=rows, elements=z,
+                radial_clearance=clearance, element_diameter=0.9 * math.pi * dm / z)
+    return replace(b, geometry=g,
+                   operation=replace(b.operation, radial_load=fr, axial_load=fa))
+
+
+@pytest.mark.parametrize("eps", [0.3, 0.5, 1.0, 2.0])
+def test_tapered_single_row_matches_sjovall_integrals(eps):
+    """One zero-clearance row under F_a = F_r tan(beta) J_a(eps)/J_r(eps): the load-zone
+    factor is eps, Z Q_max cos(beta) / F_r = 1/J_r(eps), psi_l = arccos(1 - 2 eps)."""
+    n, beta, fr = 10.0 / 9.0, 15.0, 1e5
+    fa = fr * math.tan(math.radians(beta)) * (analytic.harris_axial_integral(eps, n)
+                                              / analytic.harris_radial_integral(eps, n))
+    z = 200
+    d = distribute_loads(_tapered(z=z, fr=fr, fa=fa, beta=beta))
+    np.testing.assert_allclose([d.radial_sum, d.axial_sum], [fr, fa], rtol=1e-9,
+                               err_msg="the ring displacement balances both loads")
+    np.testing.assert_allclose(d.max_load * z * math.cos(math.radians(beta)) / fr,
+                               1.0 / analytic.harris_radial_integral(eps, n), rtol=1e-3,
+                               err_msg="200 rollers: the discrete sums within 0.1% of the "
+                                       "continuous integrals (measured 5e-5)")
+    expected = math.pi if eps >= 1.0 else math.acos(1.0 - 2.0 * eps)
+    assert abs(d.load_zone_half_angle - expected) < math.radians(0.05), (
+        math.degrees(d.load_zone_half_angle), math.degrees(expected))
+    # epsilon = (1 + (delta_a/delta_r) tan(beta))/2 (Harris)
+    ratio = d.axial_displacement / d.radial_displacement
+    np.testing.assert_allclose(0.5 * (1.0 + ratio * math.tan(math.radians(beta))), eps,
+                               rtol=2e-3, atol=1e-6, err_msg="load-zone factor of the "
+                               "displacements (the continuous limit)")
+
+
+def test_sjovall_ratio_of_half_loaded_rows():
+    """J_a/J_r at eps = 1/2: 1.26 for line contacts, 1.216 for point contacts (Harris;
+    the axial force a radial load induces in one row)."""
+    for n, value in ((10.0 / 9.0, 1.26), (1.5, 1.216)):
+        r = analytic.harris_axial_integral(0.5, n) / analytic.harris_radial_integral(0.5, n)
+        assert r == pytest.approx(value, abs=3e-3), (n, r)
+
+
+def test_tapered_pairs_and_pure_axial_load():
+    # opposed rows: the first row takes the axial load, both balance to rounding
+    for fa in (1e3, 2e4, 1e5):
+        d = distribute_loads(_tapered(rows=2, fa=fa))
+        np.testing.assert_allclose([d.radial_sum, d.axial_sum], [1e5, fa], rtol=1e-9)
+        q = d.load_inner.reshape(2, -1)
+        assert q[0].max() > q[1].max(), "the row facing the axial load carries more"
+    # a small axial load changes the pair's loads continuously from the radial-only model
+    d0 = distribute_loads(_tapered(rows=2))
+    d1 = distribute_loads(_tapered(rows=2, fa=1.0))
+    np.testing.assert_allclose(d1.load_inner, d0.load_inner, rtol=0, atol=1e-3 * d0.max_load,
+                               err_msg="F_a = 1 N against F_r = 100 kN")
+    # axial load only: every roller of the row equal, Q = F_a / (Z sin(beta))
+    d = distribute_loads(_tapered(fr=0.0, fa=5e4))
+    np.testing.assert_allclose(d.load_inner, 5e4 / (20 * math.sin(math.radians(15.0))),
+                               rtol=1e-9)
+    assert d.load_zone_half_angle == pytest.approx(math.pi)
+
+
+def test_tapered_single_row_axial_load_limits():
+    from bearing_fem.bearing.description import single_row_min_axial_load
+    from bearing_fem.errors import SceneError
+
+    b = _tapered(fa=1e5)
+    fa_min = single_row_min_axial_load(b.geometry, 1e5)
+    np.testing.assert_allclose(fa_min, 1e5 * math.tan(math.radians(15.0)), rtol=1e-12,
+                               err_msg="a roller on the load line: F_r tan(beta)")
+    with pytest.raises(SceneError, match=r"operation\.axial_load = 25000 N is too small.*"
+                                         r"needs more than 2\.679e\+04 N.*1\.26 F_r"):
+        _tapered(fa=2.5e4)
+    d = distribute_loads(_tapered(fa=1.02 * fa_min))
+    np.testing.assert_allclose([d.radial_sum, d.axial_sum], [1e5, 1.02 * fa_min], rtol=1e-9,
+                               err_msg="just above the limit the row still balances")
+    assert d.load_zone_half_angle < math.radians(30.0), "a narrow load zone near the limit"

@@ -333,3 +333,28 @@ def test_line_films_against_moes():
                                         c["entrainment_speed"], 2e-8)
     np.testing.assert_allclose(c["h_central"], h, rtol=0.10,
                                err_msg="most loaded roller contact within 10% of Moes")
+
+
+def test_single_tapered_row_under_combined_load_solves():
+    """A single-row tapered bearing (30205 size) under a combined load: the load
+    distribution balances both loads, every loaded contact converges, the summary reports
+    the axial balance and no opposed-pair warning."""
+    b = small_roller(bearing={"type": "tapered-roller", "contact_angle": 14.0,
+                              "radial_clearance": 0.0, "bore": 0.025,
+                              "outside_diameter": 0.052, "pitch_diameter": 0.0385,
+                              "element_diameter": 0.0065, "elements": 16,
+                              "effective_length": 0.010},
+                     operation={"radial_load": 4000.0, "axial_load": 1200.0})
+    r = solve_bearing(b)
+    assert r.success, r.message
+    s = r.summary()
+    json.dumps(s, allow_nan=False)
+    lb, ld = s["load_balance"], s["load_distribution"]
+    assert abs(lb["axial_relative_error"]) < 1e-9 and abs(lb["radial_relative_error"]) < 1e-9, lb
+    assert ld["axial_displacement"] != 0.0
+    # F_a = 1200 N is below the 1.26 F_r tan(14 deg) = 1257 N of a half-loaded row: the
+    # axial displacement draws back and fewer than half the rollers carry load
+    loaded = [e for e in s["elements"] if e["in_load_zone"]]
+    assert 0 < len(loaded) < 8 and ld["elements_loaded"] == len(loaded), len(loaded)
+    assert ld["load_zone_half_angle_deg"] < 90.0, ld
+    assert not [w for w in r.warnings if "opposed pair" in w], r.warnings

@@ -933,17 +933,41 @@ class Bearing:
         if not isinstance(self.title, str):
             raise SceneError(f"title must be a string, got {self.title!r}")
         g, op, lub, model = self.geometry, self.operation, self.lubricant, self.model
-        if op.axial_load > 0.0 and g.type in ROLLER_TYPES:
+        if op.axial_load > 0.0 and g.type == "cylindrical-roller":
             raise SceneError(f"operation.axial_load = {op.axial_load!r} N: axial loads of "
-                             f"{g.type} bearings (ribs, paired rows) are not modelled; give "
-                             "0 N")
+                             f"{g.type} bearings (carried by the ribs) are not modelled; "
+                             "give 0 N")
+        if op.axial_load > 0.0 and g.type == "tapered-roller" and g.rows % 2 and g.rows > 1:
+            raise SceneError(f"operation.axial_load = {op.axial_load!r} N with bearing.rows = "
+                             f"{g.rows}: an axially loaded tapered-roller bearing is modelled "
+                             "with one row, or with rows in opposed pairs (an even number); "
+                             "give rows = 1 or an even number, or axial_load = 0 N")
         if g.type == "angular-contact-ball" and op.axial_load <= 0.0:
             raise SceneError("operation.axial_load must be > 0 N for a single-row "
                              "angular-contact ball bearing (it cannot carry a radial load "
                              "without an axial reaction), got 0 N")
-        if g.type in ROLLER_TYPES and op.radial_load <= 0.0:
-            raise SceneError(f"operation.radial_load must be > 0 N for a {g.type} bearing, "
-                             "got 0 N")
+        if (g.type == "tapered-roller" and g.rows == 1 and op.axial_load > 0.0
+                and op.radial_load > 0.0):
+            fa_min = single_row_min_axial_load(g, op.radial_load)
+            if op.axial_load <= fa_min * (1.0 + 1e-9):
+                from ..analytic import harris_axial_integral, harris_radial_integral
+
+                half = (harris_axial_integral(0.5, 10.0 / 9.0)
+                        / harris_radial_integral(0.5, 10.0 / 9.0))
+                tb = math.tan(math.radians(g.contact_angle))
+                raise SceneError(
+                    f"operation.axial_load = {op.axial_load:g} N is too small for "
+                    f"operation.radial_load = {op.radial_load:g} N on one row of tapered "
+                    f"rollers at {g.contact_angle:g} deg: a single row needs more than "
+                    f"{fa_min:.4g} N (F_r tan(beta) over the roller nearest the load line), "
+                    f"and {half:.3g} F_r tan(beta) = {half * op.radial_load * tb:.4g} N to "
+                    "load half its rollers; give the bearing's net axial load (including "
+                    "the force its opposed bearing exerts), or rows = 2 for an opposed pair")
+        if g.type in ROLLER_TYPES and op.radial_load <= 0.0 and not (
+                g.type == "tapered-roller" and op.axial_load > 0.0):
+            raise SceneError(f"operation.radial_load must be > 0 N for a {g.type} bearing"
+                             + (" without axial load" if g.type == "tapered-roller" else "")
+                             + ", got 0 N")
         if lub.temperature_law == "prokofiev" and op.oil_temperature is None:
             raise SceneError("operation.oil_temperature (deg C) is required by "
                              "lubricant.temperature_law = 'prokofiev'")
@@ -1100,9 +1124,9 @@ def input_warnings(bearing: Bearing) -> list[str]:
       own warning about a hot oil);
     * a profiled roller with fewer than :data:`MIN_RECOMMENDED_SLICES` slices: the error
       bars exclude the slicing error, which is then of several per cent;
-    * a tapered roller bearing with an odd number of rows: the model takes its rows in
-      opposed pairs (docs/bearing.md 2.3), so a single row is treated as one row of such a
-      pair, its induced axial force reacted by the opposed bearing.
+    * a tapered roller bearing with an odd number of rows and no axial load: the model
+      takes its rows in opposed pairs (docs/bearing.md 2.3), so a single row is treated as
+      one row of such a pair, its induced axial force reacted by the opposed bearing.
 
     Returns
     -------
@@ -1121,13 +1145,41 @@ def input_warnings(bearing: Bearing) -> list[str]:
                    "are the grid discretisation errors of each slice's contact and exclude "
                    "the slicing error along the roller, which with so few slices is several "
                    "per cent (docs/bearing.md, \"Slicing error\")")
-    if g.type == "tapered-roller" and g.rows % 2:
-        out.append(f"bearing.rows = {g.rows} for a tapered-roller bearing: rows are modelled in "
-                   "opposed pairs with radial load only (docs/bearing.md 2.3), so each row is "
-                   "taken as one row of a face-to-face or back-to-back pair whose opposed "
-                   "bearing reacts its induced axial force; a single "
-                   "tapered bearing under a combined load is not modelled")
+    if g.type == "tapered-roller" and g.rows % 2 and bearing.operation.axial_load == 0.0:
+        out.append(f"bearing.rows = {g.rows} for a tapered-roller bearing without axial load: "
+                   "each row is taken as one row of an opposed pair (face-to-face or "
+                   "back-to-back) whose other bearing reacts its induced axial force "
+                   "(docs/bearing.md 2.3); for a single row under a combined load give "
+                   "operation.axial_load (N), the bearing's net axial load")
     return out
+
+
+def single_row_min_axial_load(geometry: Geometry, radial_load: float) -> float:
+    """Smallest axial load [N] that one row of angled elements balances with a radial load.
+
+    The limit of a row whose axial displacement draws back until only the element nearest
+    the load line (azimuth psi_j closest to 0) carries: F_a -> F_r tan(beta) / cos(psi_j).
+    Below it no ring position balances the two loads (the rest of the induced axial force
+    must come from an opposed bearing).
+
+    Parameters
+    ----------
+    geometry : Geometry
+        ``contact_angle`` beta [deg], ``elements`` and ``first_element_azimuth`` [deg].
+    radial_load : float
+        F_r [N], >= 0.
+
+    Returns
+    -------
+    float
+        F_a limit [N] (inf if no element lies within 90 deg of the load line).
+    """
+    z = geometry.elements
+    psi0 = math.radians(geometry.first_element_azimuth)
+    cos_max = max(math.cos(psi0 + 2.0 * math.pi * j / z) for j in range(z))
+    if cos_max <= 0.0:
+        return math.inf
+    return float(radial_load) * math.tan(math.radians(geometry.contact_angle)) / cos_max
 
 
 def example_names() -> list[str]:

@@ -20,8 +20,10 @@ contact forces and its centrifugal force F_c = m d_m omega_c^2 / 2 (Jones-Harris
 gyroscopic moment): the two contact angles then differ.
 
 Roller bearings (any number of rows sharing the radial load; tapered rollers with both
-raceways at the contact angle beta, paired rows, rib contact neglected): the element
-approach is delta = (delta_r cos psi - c_r) cos beta; straight rollers follow
+raceways at the contact angle beta, rib contact neglected): the element approach is
+delta = (delta_r cos psi - c_r) cos beta, plus s delta_a sin beta for tapered rows under
+an axial load (s = +1, -1 for opposed rows; one row, or rows in opposed pairs;
+sum Q cos beta cos psi = F_r and sum s Q sin beta = F_a); straight rollers follow
 Palmgren's delta = 2 c Q^0.9 (both contacts), profiled rollers are cut into slices,
 each contact's slice approach delta/2 - z(y) (z the profile drop) loading the slice with
 q = (approach / c_l)^(10/9) per unit length, c_l = c l^0.9. Row equilibrium:
@@ -74,14 +76,17 @@ class LoadDistribution:
     radial_displacement, axial_displacement : float
         delta_r [m] and the axial displacement of the inner ring [m]: for angular-contact
         ball bearings from the position where the balls just touch at the nominal angle
-        (z_a - A sin alpha_0), for deep-groove bearings from the centred ring (z_a); 0 for
-        rollers.
+        (z_a - A sin alpha_0), for deep-groove bearings from the centred ring (z_a); for
+        tapered rollers under axial load delta_a, towards the first row's load (its
+        rollers approach by delta_a sin(beta)); 0 for other rollers.
     axial_offset : float
         z_a [m] (balls; 0 for rollers).
     load_zone_half_angle : float
-        psi_l [rad] where the (continuous) approach vanishes; pi for a full load zone.
+        psi_l [rad] where the (continuous) approach vanishes; pi for a full load zone
+        (opposed tapered rows under axial load: the wider of the two rows' zones).
     radial_sum, axial_sum : float
-        sum Q_i cos(alpha_i) cos(psi) and sum Q_i sin(alpha_i) over all elements [N].
+        sum Q_i cos(alpha_i) cos(psi) and sum Q_i sin(alpha_i) over all elements [N]
+        (opposed tapered rows: their axial components with opposite signs).
     centrifugal_force : float
         F_c per element [N] (0 unless ``model.centrifugal``).
     slice_positions, slice_widths : ndarray or None
@@ -347,7 +352,8 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
     psi, row = element_azimuths(bearing)
     cos_psi = np.cos(psi)
     beta = math.radians(g.contact_angle)
-    cb = math.cos(beta)
+    cb, sb = math.cos(beta), math.sin(beta)
+    row_sign = np.where(row % 2 == 0, 1.0, -1.0)  # opposed rows of a tapered pair
     cr = float(g.radial_clearance)
     c = roller_compliance(bearing)          # delta_contact = c Q^0.9
     fc = centrifugal_force(bearing) * cb    # normal component at the outer raceway
@@ -364,8 +370,10 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
         y = widths = drop = None
         c_l = None
 
-    def loads(dr: float):
+    def loads(dr: float, da: float = 0.0):
         delta = (dr * cos_psi - cr) * cb
+        if da != 0.0:  # tapered rows under axial load (opposed rows: opposite sign)
+            delta = delta + row_sign * (da * sb)
         if n_sl > 1:
             app = np.clip(0.5 * delta[:, None] - drop[None, :], 0.0, None)
             q = (app / c_l) ** (1.0 / 0.9) * widths[None, :]
@@ -386,20 +394,97 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
         qi = loads(dr)[0]
         return float(np.sum(qi[row == 0] * cb * cos_psi[row == 0])) - fr_row
 
-    d_guess = 2.0 * c * (5.0 * fr_row / (g.elements * cb)) ** 0.9 / cb + cr
-    dr = _bracket_root(resid, 0.0, d_guess, "radial displacement")
-    qi, qo, delta, sl = loads(dr)
-    half = math.pi if dr <= cr else math.acos(cr / dr)
+    fa = float(bearing.operation.axial_load)
+    if fa > 0.0:  # a tapered bearing under axial load (the description refuses others)
+        dr, da = _tapered_displacements(bearing, loads, cos_psi, row, row_sign, cb, sb, c)
+        half = _tapered_load_zone(dr, da, cr, cb, sb, g.rows)
+    else:
+        d_guess = 2.0 * c * (5.0 * fr_row / (g.elements * cb)) ** 0.9 / cb + cr
+        dr, da = _bracket_root(resid, 0.0, d_guess, "radial displacement"), 0.0
+        half = math.pi if dr <= cr else math.acos(cr / dr)
+    qi, qo, delta, sl = loads(dr, da)
     alpha = np.full(psi.shape, beta)
     k_n = (2.0 * c) ** (-1.0 / 0.9)
     return LoadDistribution(
         azimuth=psi, row=row, load_inner=qi, load_outer=qo, alpha_inner=alpha,
         alpha_outer=alpha.copy(), approach=delta, in_load_zone=qi > 0.0,
-        radial_displacement=float(dr), axial_displacement=0.0, axial_offset=0.0,
+        radial_displacement=float(dr), axial_displacement=float(da), axial_offset=0.0,
         load_zone_half_angle=float(half),
-        radial_sum=float(np.sum(qi * cb * cos_psi)), axial_sum=0.0, centrifugal_force=fc,
+        radial_sum=float(np.sum(qi * cb * cos_psi)),
+        axial_sum=float(np.sum(row_sign * qi * sb)) if da != 0.0 else 0.0,
+        centrifugal_force=fc,
         slice_positions=y, slice_widths=widths, slice_loads=sl,
         exponent=LOAD_EXPONENT_LINE, stiffness=float(k_n), clearance=cr)
+
+
+def _tapered_displacements(bearing: Bearing, loads, cos_psi: np.ndarray, row: np.ndarray,
+                           row_sign: np.ndarray, cb: float, sb: float,
+                           c: float) -> tuple[float, float]:
+    """(delta_r, delta_a) [m] of a tapered-roller bearing under a radial and an axial load.
+
+    Row k's rollers approach by (delta_r cos psi - c_r) cos(beta) + s_k delta_a sin(beta),
+    s_k = +1 for even k and -1 for odd k (opposed rows); the ring displacement balances
+    sum Q cos(beta) cos(psi) = F_r and sum s_k Q sin(beta) = F_a (nested Brent: delta_r
+    for each delta_a). One row needs F_a above
+    :func:`~bearing_fem.bearing.description.single_row_min_axial_load`, which the bearing
+    description checks.
+    """
+    g, op = bearing.geometry, bearing.operation
+    fr, fa = float(op.radial_load), float(op.axial_load)
+
+    def sums(dr: float, da: float) -> tuple[float, float]:
+        qi = loads(dr, da)[0]
+        return (float(np.sum(qi * cb * cos_psi)), float(np.sum(row_sign * qi * sb)))
+
+    scale = 2.0 * c * (5.0 * max(fr, fa) / (g.elements * min(cb, sb))) ** 0.9
+    scale = max(scale, float(g.radial_clearance), 1e-12)
+
+    def solve_dr(da: float) -> float:
+        if fr <= 0.0:
+            return 0.0
+        return _bracket_root(lambda d: sums(d, da)[0] - fr, 0.0, scale,
+                             "radial displacement")
+
+    def axial_resid(da: float) -> float:
+        return sums(solve_dr(da), da)[1] - fa
+
+    lo, hi = 0.0, scale
+    f0 = axial_resid(0.0)
+    if f0 > 0.0:  # the radial load alone induces more than F_a: the ring moves back
+        hi, lo = 0.0, -scale
+        for _ in range(200):
+            if axial_resid(lo) < 0.0:
+                break
+            lo *= 2.0
+        else:
+            raise RuntimeError("no axial displacement balances the load (bracket grew to "
+                               f"{lo!r} m)")
+    else:
+        for _ in range(200):
+            if axial_resid(hi) > 0.0:
+                break
+            hi *= 2.0
+        else:
+            raise RuntimeError("no axial displacement balances the load (bracket grew to "
+                               f"{hi!r} m)")
+    da = brentq(axial_resid, lo, hi, xtol=1e-22, rtol=BALANCE_RTOL * 1e-2, maxiter=500)
+    return solve_dr(da), float(da)
+
+
+def _tapered_load_zone(dr: float, da: float, cr: float, cb: float, sb: float,
+                       rows: int) -> float:
+    """Half angle psi_l [rad] of the widest load zone of the rows (continuous approach
+    (delta_r cos psi - c_r) cos(beta) +- delta_a sin(beta) > 0)."""
+    half = 0.0
+    for s in ((1.0,) if rows == 1 else (1.0, -1.0)):
+        free = s * da * sb - cr * cb       # the approach at cos(psi) = 0
+        if dr <= 0.0:
+            h = math.pi if free > 0.0 else 0.0
+        else:
+            cpl = -free / (dr * cb)
+            h = math.pi if cpl <= -1.0 else (0.0 if cpl >= 1.0 else math.acos(cpl))
+        half = max(half, h)
+    return half
 
 
 def distribute_loads(bearing: Bearing) -> LoadDistribution:
