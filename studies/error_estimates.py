@@ -26,7 +26,14 @@ order is not observable. Does it predict the true error?
    against the change to the same bearing with twice-finer contact grids: the 6209 ball
    bearing at its default 129^2 (against 257^2) and the NNCF 5040 roller bearing on its
    default line grids (against 2N - 1 nodes, ~80 s); quick: 6209 only.
-4. **Energy balance** of the same map solves: the heat power uses the conservative
+4. **What the levels can tell** (``estimator_ceiling``): every estimate made from the
+   grid sequence is a function of its level differences. With d2 the last difference
+   (solution minus the level below) and d3 the change to the twice-finer solve, any
+   estimate c |d2| agrees only where |d3/d2| lies in a window of width FACTOR^2: the
+   share reached by the best constant c, fitted to these very data, bounds every such
+   rule; the correlation of log|d3/d2| with log|d2/d1| over the map says whether the
+   trend of the coarser levels (the observed order) predicts the next change at all.
+5. **Energy balance** of the same map solves: the heat power uses the conservative
    Poiseuille form Q_P = u_m int h dp/dx dA; the discrete physical dissipation
    int h^3 |grad p|^2/(12 eta) dA plus the numerical dissipation of the stabilisation
    must add up to it (the discrete weak form tested with the pressure itself), and Q_P
@@ -356,12 +363,76 @@ def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dic
                                               default=math.nan),
             "max_direct_vs_conservative": max((abs(r["direct_vs_conservative"]) for r in sel),
                                               default=math.nan)}
+    both = [r for r in maps if r["status"] == "converged" and r["fine_status"] == "converged"]
+    summary["estimator_ceiling"] = estimator_ceiling(both)
     summary["bearing_agreement"] = {
         k: [r[f"{k}_agree"] for r in bearings] for k in BEARING_QUANTITIES}
     summary["seconds"] = time.perf_counter() - t0
     (outdir / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
     _figure(outdir / "estimates.png", maps, oracles)
     return {"oracles": oracles, "maps": maps, "bearings": bearings, "summary": summary}
+
+
+def _level_differences(row: dict, key: str) -> np.ndarray | None:
+    """Relative differences of ``key`` between successive solves of a map row (the grid
+    sequence behind its estimate, then the twice-finer solve), or None if a value is
+    missing."""
+    values = json.loads(row[f"{key}_values"])
+    if len(values) < 3 or any(v is None for v in values) or values[-2] == 0.0:
+        return None
+    return np.diff(np.asarray(values, dtype=float)) / abs(values[-2])
+
+
+def estimator_ceiling(rows: list[dict]) -> dict:
+    """How well any estimate built from the grid sequence's level differences can agree
+    with the change to the twice-finer solve, over map rows (see item 4 of the module
+    docstring).
+
+    Returns
+    -------
+    dict
+        ``pairs`` (case-quantities), ``best_constant_share`` and ``best_constant`` (the
+        largest share of pairs whose change d3 lies within a factor FACTOR of c |d2|, over
+        c; pairs without two differences before d3 count as misses, pairs with d2 and d3
+        both below FLOOR as agreeing; ``best_constant`` None if no c agrees anywhere),
+        ``trend_correlation`` (Pearson correlation of log|d3/d2| with log|d2/d1| over
+        the pairs with three non-zero differences; None where undefined: fewer than
+        three such pairs, or a constant ratio), ``trend_pairs`` (how many), and for the
+        rule |d2|/3 (Richardson with the formal order 2 assumed everywhere)
+        ``formal_order_agree`` (pairs agreeing) and ``formal_order_under`` (misses below
+        the change).
+    """
+    last, change, r_next, r_prev = [], [], [], []
+    for row in rows:
+        for k in QUANTITIES:
+            d = _level_differences(row, k)
+            if d is None:
+                last.append(math.nan)
+                change.append(math.nan)
+                continue
+            last.append(abs(d[-2]))
+            change.append(abs(d[-1]))
+            if d.size >= 3 and np.all(d != 0.0):
+                r_next.append(math.log(abs(d[-1] / d[-2])))
+                r_prev.append(math.log(abs(d[-2] / d[-3])))
+    last_a, change_a = np.asarray(last), np.asarray(change)
+    best, best_c = 0.0, math.nan
+    for c in np.geomspace(1e-2, 1.0, 401):
+        share = float(np.mean([agree(c * a, b) if math.isfinite(a) else False
+                               for a, b in zip(last_a, change_a)])) if last else 0.0
+        if share > best:
+            best, best_c = share, float(c)
+    # the formal order assumed everywhere: c = 1/(2^2 - 1)
+    formal = [(agree(a / 3.0, b), a / 3.0 < b) for a, b in zip(last_a, change_a)
+              if math.isfinite(a)]
+    corr = None  # undefined with fewer than three pairs or a constant ratio
+    if len(r_next) > 2 and np.std(r_next) > 0.0 and np.std(r_prev) > 0.0:
+        corr = float(np.corrcoef(r_next, r_prev)[0, 1])
+    return {"pairs": len(last), "best_constant_share": best,
+            "best_constant": best_c if math.isfinite(best_c) else None,
+            "trend_correlation": corr, "trend_pairs": len(r_next),
+            "formal_order_agree": sum(1 for ok, _ in formal if ok),
+            "formal_order_under": sum(1 for ok, low in formal if not ok and low)}
 
 
 def _write_csv(path: Path, rows: list[dict]) -> None:

@@ -54,3 +54,40 @@ def test_quick_study(tmp_path):
             f"6209 bearing {k}: estimate {b[f'{k}_estimate']:.2e} within a factor 3 of the "
             f"change to 257^2 contacts {b[f'{k}_change']:.2e} (measured 5.9e-2 vs 3.6e-2)")
     assert (tmp_path / "bearings.csv").is_file()
+
+
+def _row(sequences: dict[str, list[float]]) -> dict:
+    """A map row holding, per quantity, its values on the grid sequence and the finer
+    solve (as ``map_row`` writes them)."""
+    import json
+    return {f"{q}_values": json.dumps(sequences.get(q, [1.0, 1.0, 1.0, 1.0]))
+            for q in error_estimates.QUANTITIES}
+
+
+def test_estimator_ceiling_on_known_sequences():
+    # second-order sequences q = 1 + a h^2 (h = 8, 4, 2, 1 in units of the finest step):
+    # d3/d2 = 1/4 everywhere, so one constant (near 1/4) makes every pair agree, and the
+    # trend is exactly predictive (every pair has the same ratios: the correlation is
+    # undefined, None, because both ratio lists are constant)
+    seq = [1.0 + 1e-3 * h**2 for h in (8.0, 4.0, 2.0, 1.0)]
+    rows = [_row({q: seq for q in error_estimates.QUANTITIES}) for _ in range(4)]
+    c = error_estimates.estimator_ceiling(rows)
+    assert c["pairs"] == 20 and c["trend_pairs"] == 20
+    np.testing.assert_allclose(c["best_constant_share"], 1.0,
+                               err_msg="geometric sequences: a constant rule agrees everywhere")
+    assert 0.25 / 3 <= c["best_constant"] <= 0.25 * 3, c["best_constant"]
+    assert c["trend_correlation"] is None
+    # |d2|/3 against d3 = |d2|/4: within the factor 3 everywhere
+    assert c["formal_order_agree"] == 20 and c["formal_order_under"] == 0
+    # changes whose ratio d3/d2 spreads over 1/100 .. 1 (beyond the factor-3 window of
+    # width 9): no constant reaches every pair, and a trend that runs against the next
+    # change correlates negatively
+    spread = []
+    for r3, r2 in ((1e-2, 1.0), (1.0, 1e-2), (1e-2, 1.0), (1.0, 1e-2), (1e-1, 0.3)):
+        d1 = 1e-2
+        d2 = d1 * r2
+        d3 = d2 * r3
+        spread.append(_row({"h_central": list(np.cumsum([1.0, d1, d2, d3]))}))
+    c2 = error_estimates.estimator_ceiling(spread)
+    assert c2["best_constant_share"] < 1.0
+    assert c2["trend_correlation"] < -0.5, c2["trend_correlation"]
