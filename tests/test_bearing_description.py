@@ -11,11 +11,11 @@ from bearing_fem.bearing import Bearing, example_names, load_example
 from bearing_fem.bearing.description import input_warnings
 from bearing_fem.errors import SceneError
 
-EXAMPLES = ("6209", "7010-steel", "7010-hybrid", "nncf5040")
+EXAMPLES = ("6209", "7010-steel", "7010-hybrid", "nncf5040", "30205")
 
 
 def test_examples_shipped_and_round_trip():
-    assert set(EXAMPLES) <= set(example_names()), "the four example bearings are package data"
+    assert set(EXAMPLES) <= set(example_names()), "the example bearings are package data"
     for name in EXAMPLES:
         b = load_example(name)
         again = Bearing.from_dict(b.to_dict())

@@ -247,3 +247,16 @@ def test_tapered_single_row_axial_load_limits():
     np.testing.assert_allclose([d.radial_sum, d.axial_sum], [1e5, 1.02 * fa_min], rtol=1e-9,
                                err_msg="just above the limit the row still balances")
     assert d.load_zone_half_angle < math.radians(30.0), "a narrow load zone near the limit"
+
+
+def test_30205_example_has_a_full_load_zone():
+    """The shipped single-row tapered example: F_a/F_r = 0.5 lies above
+    tan(beta) J_a(1)/J_r(1) (= 0.47 at 13.9 deg), so every roller is loaded."""
+    b = load_example("30205")
+    n = 10.0 / 9.0
+    full = math.tan(math.radians(b.geometry.contact_angle)) * (
+        analytic.harris_axial_integral(1.0, n) / analytic.harris_radial_integral(1.0, n))
+    assert b.operation.axial_load / b.operation.radial_load > full
+    d = distribute_loads(b)
+    assert d.in_load_zone.all() and d.load_zone_half_angle == pytest.approx(math.pi)
+    np.testing.assert_allclose([d.radial_sum, d.axial_sum], [4000.0, 2000.0], rtol=1e-9)
