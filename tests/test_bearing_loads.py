@@ -260,3 +260,45 @@ def test_30205_example_has_a_full_load_zone():
     d = distribute_loads(b)
     assert d.in_load_zone.all() and d.load_zone_half_angle == pytest.approx(math.pi)
     np.testing.assert_allclose([d.radial_sum, d.axial_sum], [4000.0, 2000.0], rtol=1e-9)
+
+
+def test_tapered_combined_loads_seeded_sweep():
+    """120 seeded tapered bearings (1, 2 or 4 rows, 8-30 deg, clearance, crowned
+    profiles, centrifugal force, F_a from half to 100x a single row's limit): each is
+    refused by the description (SceneError naming the field) or balances both loads to
+    1e-8 with finite loads."""
+    from bearing_fem.bearing.description import single_row_min_axial_load
+    from bearing_fem.errors import SceneError
+
+    base = load_example("30205")
+    rng = np.random.default_rng(20261127)
+    solved = refused = 0
+    for _ in range(120):
+        rows = int(rng.choice([1, 2, 4]))
+        g = replace(base.geometry, rows=rows, contact_angle=float(rng.uniform(8.0, 30.0)),
+                    radial_clearance=float(rng.choice([0.0, 1e-6, 1e-5, 5e-5])),
+                    first_element_azimuth=float(rng.uniform(0.0, 30.0)), width=0.015 * rows)
+        fr = float(10 ** rng.uniform(0.0, 5.0)) if rng.random() > 0.1 else 0.0
+        if rows == 1 and fr > 0.0:
+            fa = single_row_min_axial_load(g, fr) * float(
+                rng.choice([0.5, 1.0, 1.0 + 1e-8, 1.001, 1.1, 2.0, 10.0, 100.0]))
+        else:
+            fa = float(10 ** rng.uniform(0.0, 5.0))
+        try:
+            if rng.random() < 0.3:
+                g = replace(g, profile="crowned", crown_drop=5e-6)
+            b = replace(base, geometry=g,
+                        operation=replace(base.operation, radial_load=fr, axial_load=fa,
+                                          inner_rpm=float(10 ** rng.uniform(1.0, 4.5))),
+                        model=replace(base.model, centrifugal=bool(rng.random() < 0.3)))
+        except SceneError as exc:
+            assert "operation.axial_load" in str(exc) or "bearing." in str(exc), str(exc)
+            refused += 1
+            continue
+        d = distribute_loads(b)
+        assert np.all(np.isfinite(d.load_inner)) and np.all(d.load_inner >= 0.0)
+        scale = max(fr, fa)
+        assert abs(d.radial_sum - fr) <= 1e-8 * scale and abs(d.axial_sum - fa) <= 1e-8 * scale, (
+            rows, fr, fa, d.radial_sum, d.axial_sum)
+        solved += 1
+    assert solved > 80 and refused > 5, (solved, refused)
