@@ -59,8 +59,8 @@ def _save(fig: Any, path: str | Path) -> Path:
     return path
 
 
-def _element_arrays(result: Any) -> dict[str, np.ndarray]:
-    el = [e for e in result.elements if e["row"] == 0]
+def _element_arrays(result: Any, row: int = 0) -> dict[str, np.ndarray]:
+    el = [e for e in result.elements if e["row"] == row]
     order = np.argsort([e["azimuth_deg"] for e in el])
     el = [el[i] for i in order]
 
@@ -81,15 +81,43 @@ def _element_arrays(result: Any) -> dict[str, np.ndarray]:
 MIN_ANGLE_SPAN = 2.0
 
 
+def _opposed_row(result: Any) -> dict[str, np.ndarray] | None:
+    """The element arrays of the second row when its loads differ from the first row's
+    (opposed tapered rows under an axial load), else None (identical rows: one shown).
+
+    Parameters
+    ----------
+    result : BearingResult
+        A solved bearing (:func:`bearing_fem.bearing.solve_bearing`).
+
+    Returns
+    -------
+    dict or None
+        Per-element arrays of row 1 (azimuth [deg], loads [N], films [m], pressures
+        [Pa]), ordered by azimuth.
+    """
+    if result.bearing.geometry.rows < 2:
+        return None
+    first, second = _element_arrays(result, 0), _element_arrays(result, 1)
+    if np.allclose(first["load"], second["load"], rtol=1e-9, atol=0.0):
+        return None
+    return second
+
+
 def plot_load_distribution(result: Any, path: str | Path) -> Path:
-    """Element loads [N] (row 0) over azimuth [deg]; contact angles for ball bearings."""
+    """Element loads [N] over azimuth [deg] (row 0, and the opposed row where it differs);
+    contact angles for ball bearings."""
     plt = _pyplot()
     a = _element_arrays(result)
     fig, ax = plt.subplots(figsize=(7, 4))
+    other = _opposed_row(result)
     ax.bar(a["psi"], a["load"], width=0.6 * 360.0 / max(len(a["psi"]), 1), color="C0",
-           label="inner contact load")
+           label="inner contact load" + (", row 1" if other is not None else ""))
     if np.any(a["load_outer"] != a["load"]):
         ax.plot(a["psi"], a["load_outer"], "o", color="C3", label="outer contact load")
+    if other is not None:
+        ax.plot(other["psi"], other["load"], "D", color="C1", ms=5,
+                label="inner contact load, row 2 (opposed)")
     half = math.degrees(result.distribution.load_zone_half_angle)
     if half < 180.0:
         ax.axvspan(-half, half, color="C0", alpha=0.08, label=f"load zone +-{half:.1f} deg")
@@ -124,7 +152,8 @@ def films_figure(result: BearingResult) -> Figure:
     -------
     matplotlib.figure.Figure
         Two axes over the azimuth [deg]: h_min [um] and p_max [GPa] of the inner and
-        outer contacts.
+        outer contacts of the first row, and of the opposed row where its loads differ
+        (tapered rows under an axial load).
     """
     plt = _pyplot()
     a = _element_arrays(result)
@@ -133,6 +162,13 @@ def films_figure(result: BearingResult) -> Figure:
         ax1.plot(a["psi"], a[key] * 1e6, mk, label=lab)
     for key, lab, mk in (("pmax_i", "inner", "o-"), ("pmax_o", "outer", "s-")):
         ax2.plot(a["psi"], a[key] * 1e-9, mk, label=lab)
+    other = _opposed_row(result)
+    if other is not None:  # the opposed row's loaded elements (no result elsewhere: NaN)
+        for ax, key, scale in ((ax1, "hmin_i", 1e6), (ax1, "hmin_o", 1e6),
+                               (ax2, "pmax_i", 1e-9), (ax2, "pmax_o", 1e-9)):
+            side = "inner" if key.endswith("_i") else "outer"
+            ax.plot(other["psi"], other[key] * scale, "o--" if side == "inner" else "s--",
+                    mfc="none", label=f"{side}, row 2 (opposed)")
     ax1.set_ylabel("h_min [um]")
     ax2.set_ylabel("p_max [GPa]")
     ax2.set_xlabel("azimuth psi [deg]")
@@ -154,8 +190,8 @@ def films_figure(result: BearingResult) -> Figure:
 
 
 def plot_films(result: Any, path: str | Path) -> Path:
-    """Minimum film [um] and maximum pressure [GPa] per element (row 0) over azimuth
-    (:func:`films_figure`)."""
+    """Minimum film [um] and maximum pressure [GPa] per element (row 0, and the opposed
+    row where its loads differ) over azimuth (:func:`films_figure`)."""
     return _save(films_figure(result), path)
 
 

@@ -189,3 +189,27 @@ def test_one_loaded_slice_keeps_its_slice_number_in_the_folder_name(tmp_path):
     files = io.export_bearing(r, tmp_path)
     assert f"contact_{j:03d}_inner_slice{n:02d}" in files, sorted(files)
     assert f"contact_{j:03d}_inner" not in files, "the slice number is in the name"
+
+
+def test_figures_show_an_opposed_tapered_row_that_differs(tmp_path):
+    """A tapered pair under a small axial load: the two rows carry different loads, and
+    the films figure draws the opposed row too; under radial load only the rows are equal
+    and one is drawn."""
+    import matplotlib.pyplot as plt
+
+    from bearing_fem.plot_bearing import _opposed_row, films_figure, write_figures
+
+    geometry = {"type": "tapered-roller", "contact_angle": 14.0, "rows": 2,
+                "radial_clearance": 0.0, "width": 0.03}
+    pair = solve_bearing(small_roller(bearing=geometry, operation={"axial_load": 100.0},
+                                      mesh={"line_nodes": 201}))
+    assert pair.success, pair.message
+    other = _opposed_row(pair)
+    assert other is not None and other["load"].max() < pair.distribution.max_load
+    fig = films_figure(pair)
+    labels = [line.get_label() for line in fig.axes[0].lines]
+    plt.close(fig)
+    assert "inner, row 2 (opposed)" in labels, labels
+    assert set(write_figures(pair, tmp_path)) == {"load_distribution", "films", "torque"}
+    radial = solve_bearing(small_roller(bearing=geometry, mesh={"line_nodes": 201}))
+    assert _opposed_row(radial) is None, "equal rows: one row is drawn"
