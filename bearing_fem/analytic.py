@@ -793,6 +793,12 @@ def harris_radial_integral(epsilon: float, exponent: float) -> float:
     float
         J_r [-].
     """
+    return _load_zone_integral(epsilon, exponent, radial=True)
+
+
+def _load_zone_integral(epsilon: float, exponent: float, radial: bool) -> float:
+    """(1/2pi) int [1 - (1 - cos psi)/(2 epsilon)]^n w(psi) dpsi over the loaded arc,
+    w = cos psi (``radial``: J_r) or 1 (J_a) [-]."""
     from scipy.integrate import quad
 
     require_positive("epsilon", epsilon, "(dimensionless)")
@@ -802,8 +808,8 @@ def harris_radial_integral(epsilon: float, exponent: float) -> float:
 
     def f(t: float) -> float:  # psi = lim t; 1 - cos psi = 2 sin^2(psi/2) (no cancellation)
         psi = lim * t
-        base = 1.0 - np.sin(0.5 * psi) ** 2 / eps
-        return max(base, 0.0) ** n * np.cos(psi)
+        base = max(1.0 - np.sin(0.5 * psi) ** 2 / eps, 0.0) ** n
+        return base * np.cos(psi) if radial else base
 
     val = lim * quad(f, 0.0, 1.0, epsabs=0.0, epsrel=1e-10, limit=200)[0]
     return float(val / np.pi)
@@ -834,19 +840,7 @@ def harris_axial_integral(epsilon: float, exponent: float) -> float:
     float
         J_a [-].
     """
-    from scipy.integrate import quad
-
-    require_positive("epsilon", epsilon, "(dimensionless)")
-    require_positive("exponent", exponent, "(dimensionless)")
-    eps, n = float(epsilon), float(exponent)
-    lim = np.pi if eps >= 1.0 else float(np.arccos(1.0 - 2.0 * eps))
-
-    def f(t: float) -> float:  # psi = lim t, as in harris_radial_integral
-        base = 1.0 - np.sin(0.5 * lim * t) ** 2 / eps
-        return max(base, 0.0) ** n
-
-    val = lim * quad(f, 0.0, 1.0, epsabs=0.0, epsrel=1e-10, limit=200)[0]
-    return float(val / np.pi)
+    return _load_zone_integral(epsilon, exponent, radial=False)
 
 
 def harris_load_zone(radial_load: float, elements: int, stiffness: float, exponent: float,
