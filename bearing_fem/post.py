@@ -33,6 +33,7 @@ integrals run over the whole domain (p = 0 where the film has cavitated).
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
@@ -528,3 +529,25 @@ def estimate_warnings(estimate: Mapping[str, Any] | None,
                        f"{100 * e:.3g}% ({how}, {estimate.get('grids', '')}); refine the "
                        "mesh (mesh.nodes)")
     return out
+
+
+#: The sentence of :func:`estimate_warnings` for one quantity (its last clause may name
+#: the mesh field in other terms, as a bearing does).
+_ESTIMATE_WARNING = re.compile(
+    r"(?P<key>\w+) is not mesh-converged: estimated discretisation error "
+    r"(?P<error>[0-9.e+-]+)% \((?P<how>richardson|level difference), (?P<grids>[^;]*)\); "
+    r"(?P<tail>refine the mesh .*)")
+
+
+def parse_estimate_warning(text: str) -> dict[str, str] | None:
+    """The parts of one :func:`estimate_warnings` sentence, or None for another text.
+
+    Returns
+    -------
+    dict or None
+        ``key`` (the quantity), ``error`` (the estimated relative error in per cent, as
+        written), ``how`` (``richardson`` or ``level difference``), ``grids`` (the grids
+        note) and ``tail`` (the closing advice).
+    """
+    m = _ESTIMATE_WARNING.fullmatch(text)
+    return m.groupdict() if m else None

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -308,7 +309,8 @@ def test_sliced_roller_warnings_name_slices_and_the_slicing_error():
                            "errors of each slice's contact and exclude the slicing error"), w[1]
     carried = [x for x in w if x.startswith("contact")]
     assert carried and all(", slice " in x.split(": ")[0] for x in carried), carried
-    assert any(x.startswith("contact 0 inner, slice 3 of 5: ") for x in carried), carried
+    # the contacts' p_max warnings merged into one sentence, naming contacts and slices
+    assert any(re.match(r"contacts? 0 inner, slice \d of 5", x) for x in carried), carried
     c = s["elements"][0]["inner"]
     assert c["warnings"] and all(x.startswith("slice ") and " of 5: " in x
                                  for x in c["warnings"]), c["warnings"]
@@ -358,3 +360,32 @@ def test_single_tapered_row_under_combined_load_solves():
     assert 0 < len(loaded) < 8 and ld["elements_loaded"] == len(loaded), len(loaded)
     assert ld["load_zone_half_angle_deg"] < 90.0, ld
     assert not [w for w in r.warnings if "opposed pair" in w], r.warnings
+
+
+def test_contacts_estimate_warnings_merge_into_one_sentence_per_quantity():
+    """Contacts whose p_max is not mesh-converged by different amounts: one sentence for
+    the quantity with the range of the estimates (the grids named when shared); other
+    warnings are kept as they are."""
+    from bearing_fem import post
+    from bearing_fem.bearing.solve import _merge_estimate_warnings
+
+    def sentence(error: float, grids: str, how: str = "level difference") -> str:
+        est = {"p_max": error, "method": {"p_max": how}, "grids": grids, "levels": 3}
+        (text,) = post.estimate_warnings(est)
+        return text
+
+    a = sentence(0.2, "grids 1001, 2001, 4001")
+    b = sentence(0.35, "grids 1001, 2001, 4001", "richardson")
+    c = sentence(0.3, "grids 951, 1901, 3801")
+    assert post.parse_estimate_warning(a)["error"] == "20", post.parse_estimate_warning(a)
+    assert post.parse_estimate_warning("h_min lies between the nodes") is None
+    other = "h_min lies between the nodes"
+    merged = _merge_estimate_warnings({a: ["0 inner"], other: ["0 inner"], b: ["1 inner"]})
+    assert list(merged) == [
+        "p_max is not mesh-converged: estimated discretisation error 20 to 35% (richardson "
+        "or level difference, grids 1001, 2001, 4001); refine the mesh (mesh.nodes)", other]
+    assert list(merged.values())[0] == ["0 inner", "1 inner"]
+    three = _merge_estimate_warnings({a: ["0 inner"], b: ["1 inner"], c: ["2 outer"]})
+    (text,) = three
+    assert "20 to 35%" in text and "each contact's grid and two coarser" in text, text
+    assert _merge_estimate_warnings({a: ["0 inner"]}) == {a: ["0 inner"]}, "one: unchanged"

@@ -25,7 +25,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ..errors import SceneError
-from ..post import ERROR_WARNING_THRESHOLD
+from ..post import ERROR_WARNING_THRESHOLD, parse_estimate_warning
 from ..result import json_safe
 from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing, input_warnings, kelvin_like_temperatures
@@ -429,6 +429,8 @@ def _contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[
                 continue
             texts.setdefault(text, []).extend(names)
 
+    texts = _merge_estimate_warnings(texts)
+
     def who(names: list[str]) -> str:
         sep = "; " if any("," in n for n in names) else ", "
         return (f"contact{'s' if len(names) > 1 else ''} " + sep.join(names[:4])
@@ -442,6 +444,37 @@ def _contact_warnings(bearing: Bearing, specs: list[ContactSpec], results: dict[
         else:
             out.append(f"{who(names)}: {text}")
     return out
+
+
+def _merge_estimate_warnings(texts: dict[str, list[str]]) -> dict[str, list[str]]:
+    """Contacts' warnings that one quantity is not mesh-converged as one sentence with
+    the range of their estimated errors, naming the grids when all contacts share them
+    (text -> contact names, in the order of first appearance); other warnings
+    unchanged."""
+    groups: dict[tuple[str, str], list[str]] = {}
+    for text in texts:
+        parts = parse_estimate_warning(text)
+        if parts is not None:
+            groups.setdefault((parts["key"], parts["tail"]), []).append(text)
+    merged: dict[str, list[str]] = {}
+    for text, names in texts.items():
+        parts = parse_estimate_warning(text)
+        members = groups.get((parts["key"], parts["tail"])) if parts else None
+        if not members or len(members) < 2:
+            merged.setdefault(text, []).extend(names)
+            continue
+        if text != members[0]:
+            continue  # folded into the first member's sentence
+        found = [parse_estimate_warning(t) for t in members]
+        errors = [float(f["error"]) for f in found]
+        hows = " or ".join(sorted({f["how"] for f in found}, reverse=True))
+        grids = {f["grids"] for f in found}
+        where = grids.pop() if len(grids) == 1 else "each contact's grid and two coarser"
+        sentence = (f"{parts['key']} is not mesh-converged: estimated discretisation error "
+                    f"{min(errors):.3g} to {max(errors):.3g}% ({hows}, {where}); "
+                    f"{parts['tail']}")
+        merged[sentence] = [n for t in members for n in texts[t]]
+    return merged
 
 
 def _default_domain(scene: Any) -> tuple[float, float]:
