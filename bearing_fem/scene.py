@@ -108,7 +108,7 @@ def field_nonnegative(obj: Any, name: str, unit: str) -> float:
     return value
 
 
-def _bounded(obj: Any, name: str, unit: str, lo: float, hi: float, *,
+def field_bounded(obj: Any, name: str, unit: str, lo: float, hi: float, *,
              open_low: bool = False, why: str = "") -> float:
     """A finite number in [lo, hi] (or (lo, hi] with ``open_low``), else SceneError.
 
@@ -496,11 +496,11 @@ class Contact:
 
     def __post_init__(self) -> None:
         field_choice(self, "kind", ("line", "point"))
-        _bounded(self, "rx", "m", *LENGTH_RANGE)
+        field_bounded(self, "rx", "m", *LENGTH_RANGE)
         if self.kind == "point":
             if self.ry is None:
                 raise SceneError("contact.ry is required for a point contact (m)")
-            _bounded(self, "ry", "m", *LENGTH_RANGE)
+            field_bounded(self, "ry", "m", *LENGTH_RANGE)
             ratio = max(self.ry / self.rx, self.rx / self.ry)
             if ratio > MAX_RADIUS_RATIO:
                 raise SceneError(f"contact.ry / contact.rx = {self.ry / self.rx:.4g} is too "
@@ -516,7 +516,7 @@ class Contact:
                 raise SceneError(f"contact.ry applies to point contacts only, got "
                                  f"{show_value(self.ry)} m for a line contact")
             if self.length is not None:
-                _bounded(self, "length", "m", *LENGTH_RANGE)
+                field_bounded(self, "length", "m", *LENGTH_RANGE)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -546,14 +546,14 @@ class Materials:
             if any(v is not None for v in pair):
                 raise SceneError("materials: give either reduced_modulus (Pa) or e1, nu1, e2, "
                                  "nu2, not both")
-            _bounded(self, "reduced_modulus", "Pa", *MODULUS_RANGE)
+            field_bounded(self, "reduced_modulus", "Pa", *MODULUS_RANGE)
             return
         for name in ("e1", "nu1", "e2", "nu2"):
             if getattr(self, name) is None:
                 raise SceneError(f"materials.{name} is required (or give materials."
                                  "reduced_modulus in Pa)")
         for name in ("e1", "e2"):
-            _bounded(self, name, "Pa", *MODULUS_RANGE)
+            field_bounded(self, name, "Pa", *MODULUS_RANGE)
         for name in ("nu1", "nu2"):
             field_poisson(self, name)
         e_prime = self.e_prime
@@ -592,7 +592,7 @@ class Lubricant:
     density: Literal["incompressible", "dowson-higginson"] = "incompressible"
 
     def __post_init__(self) -> None:
-        _bounded(self, "viscosity", "Pa s", *VISCOSITY_RANGE)
+        field_bounded(self, "viscosity", "Pa s", *VISCOSITY_RANGE)
         field_piezo(self)
         field_choice(self, "viscosity_law", ("barus", "roelands", "constant"))
         field_choice(self, "density", ("incompressible", "dowson-higginson"))
@@ -619,8 +619,8 @@ class Kinematics:
     u2: float
 
     def __post_init__(self) -> None:
-        _bounded(self, "u1", "m/s", -MAX_SPEED, MAX_SPEED)
-        _bounded(self, "u2", "m/s", -MAX_SPEED, MAX_SPEED)
+        field_bounded(self, "u1", "m/s", -MAX_SPEED, MAX_SPEED)
+        field_bounded(self, "u2", "m/s", -MAX_SPEED, MAX_SPEED)
         if self.mean_speed <= 0.0:
             raise SceneError(f"kinematics: the mean speed (u1 + u2)/2 must be at least "
                              f"{MIN_MEAN_SPEED:g} m/s (positive: the inlet is at x < 0), got "
@@ -668,9 +668,9 @@ class Load:
             raise SceneError("load: give exactly one of load.force (N or N/m) and load.gap (m), "
                              f"got force={show_value(self.force)}, gap={show_value(self.gap)}")
         if self.force is not None:
-            _bounded(self, "force", "N (point) or N/m (line)", *FORCE_RANGE)
+            field_bounded(self, "force", "N (point) or N/m (line)", *FORCE_RANGE)
         else:
-            _bounded(self, "gap", "m", *GAP_RANGE)
+            field_bounded(self, "gap", "m", *GAP_RANGE)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -821,7 +821,7 @@ class SolverSpec:
         field_bool(self, "continuation")
         field_integer(self, "iteration_budget", 1, 100000, "Newton iterations")
         if self.time_limit is not None:
-            _bounded(self, "time_limit", "s", 0.0, 1e6, open_low=True)
+            field_bounded(self, "time_limit", "s", 0.0, 1e6, open_low=True)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -886,27 +886,27 @@ class Thermal:
 
     def __post_init__(self) -> None:
         t_lo, t_hi = TEMPERATURE_RANGE
-        _bounded(self, "oil_temperature", "deg C", t_lo, t_hi, open_low=True,
+        field_bounded(self, "oil_temperature", "deg C", t_lo, t_hi, open_low=True,
                  why="the Prokofiev law needs t > 0 deg C")
-        _bounded(self, "exponent", "(dimensionless)", 0.0, 20.0, open_low=True,
+        field_bounded(self, "exponent", "(dimensionless)", 0.0, 20.0, open_low=True,
                  why="oils have 2..4")
         field_choice(self, "temperature_law", ("prokofiev",))
-        _bounded(self, "reference_temperature", "deg C", t_lo, t_hi, open_low=True)
+        field_bounded(self, "reference_temperature", "deg C", t_lo, t_hi, open_low=True)
         if self.reference_viscosity is not None:
-            _bounded(self, "reference_viscosity", "Pa s", *VISCOSITY_RANGE)
+            field_bounded(self, "reference_viscosity", "Pa s", *VISCOSITY_RANGE)
         for name, unit, lo, hi in (("conductivity", "W/(m K)", 1e-3, 1e4),
                                    ("density", "kg/m^3", 1.0, 1e5),
                                    ("heat_capacity", "J/(kg K)", 1.0, 1e5)):
-            _bounded(self, name, unit, lo, hi)
+            field_bounded(self, name, unit, lo, hi)
             if getattr(self, name + "2") is not None:
-                _bounded(self, name + "2", unit, lo, hi)
+                field_bounded(self, name + "2", unit, lo, hi)
         field_choice(self, "source_model", ("jaeger", "fe"))
         field_choice(self, "contact_temperature", ("mean", "max"))
         field_piezo_table(self)
         field_integer(self, "max_iterations", 1, 1000, "fixed-point iterations")
-        _bounded(self, "tolerance", "K", 0.0, 100.0, open_low=True)
-        _bounded(self, "relaxation", "(dimensionless)", 0.0, 1.0, open_low=True)
-        _bounded(self, "max_temperature_rise", "K", 0.0, 1e4, open_low=True)
+        field_bounded(self, "tolerance", "K", 0.0, 100.0, open_low=True)
+        field_bounded(self, "relaxation", "(dimensionless)", 0.0, 1.0, open_low=True)
+        field_bounded(self, "max_temperature_rise", "K", 0.0, 1e4, open_low=True)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -943,9 +943,9 @@ class Traction:
 
     def __post_init__(self) -> None:
         field_choice(self, "model", TRACTION_MODELS)
-        _bounded(self, "eyring_stress", "Pa", 1e3, 1e10, why="oils have 2e6..1e7 Pa")
-        _bounded(self, "limiting_shear_stress", "Pa", 0.0, 1e10)
-        _bounded(self, "limiting_slope", "(dimensionless)", 0.0, 1.0,
+        field_bounded(self, "eyring_stress", "Pa", 1e3, 1e10, why="oils have 2e6..1e7 Pa")
+        field_bounded(self, "limiting_shear_stress", "Pa", 0.0, 1e10)
+        field_bounded(self, "limiting_slope", "(dimensionless)", 0.0, 1.0,
                  why="oils have 0.05..0.1; above 1 the friction coefficient would exceed 1")
         if self.limiting_shear_stress == 0.0 and self.limiting_slope == 0.0:
             raise SceneError("traction: limiting_shear_stress (Pa) and limiting_slope (-) are "
@@ -992,7 +992,7 @@ class Transient:
             raise SceneError(f"transient.amplitude must lie in [0, 1) (dimensionless: the gap "
                              f"would close), got {amp!r}")
         if self.angular_frequency is not None:
-            _bounded(self, "angular_frequency", "rad/s", 0.0, 1e9, open_low=True)
+            field_bounded(self, "angular_frequency", "rad/s", 0.0, 1e9, open_low=True)
         field_integer(self, "steps", 2, 10000, "time steps per period")
         field_integer(self, "periods", 1, 100, "periods")
         field_choice(self, "scheme", ("bdf2", "euler", "quasi-steady"))

@@ -74,7 +74,7 @@ def _base() -> dict:
     ("bearing", "contact_angle", 15.0, r"contact_angle applies to angular-contact"),
     ("bearing", "type", "spherical", r"bearing\.type must be one of"),
     ("bearing", "effective_length", 0.01, r"effective_length applies to roller bearings"),
-    ("lubricant", "viscosity", 0.0, r"lubricant\.viscosity must be > 0 Pa s"),
+    ("lubricant", "viscosity", 0.0, r"lubricant\.viscosity must lie in \[1e-06, 1e\+06\] Pa s, got 0\.0"),
     ("lubricant", "piezo", 1e-5, r"lubricant\.piezo must be <= 1e-6 1/Pa"),
     ("operation", "inner_rpm", -5, r"operation\.inner_rpm must be > 0 1/min"),
     ("operation", "radial_load", "4 kN", r"operation\.radial_load must be a number in N"),
@@ -340,3 +340,33 @@ def test_unlisted_skf_series_is_an_error():
                                          r"empirical\.skf_s2 .* got only skf_r1, skf_s1, "
                                          r"missing skf_s2"):
         Bearing.from_dict(d)
+
+
+@pytest.mark.parametrize("field, value, unit", [
+    ("density", 0.87, "kg/m\\^3"), ("density", 1e-300, "kg/m\\^3"),
+    ("specific_heat", 2.0, "J/\\(kg K\\)"), ("thermal_conductivity", 130.0, "W/\\(m K\\)"),
+    ("viscosity", 1e-300, "Pa s")])
+def test_oil_properties_outside_any_oil_are_refused(field, value, unit):
+    """Oil density, conductivity and specific heat in g/cm^3, mW or kJ (or absurd values)
+    are refused naming the field, the value and the unit (they overflowed Nikitin's
+    criteria); the viscosity takes the contact scenes' range."""
+    d = copy.deepcopy(load_example("7010-steel").to_dict())
+    d["lubricant"][field] = value
+    with pytest.raises(SceneError, match=rf"lubricant\.{field} must lie in .* {unit}, got "):
+        Bearing.from_dict(d)
+
+
+def test_nikitin_overflow_is_reported_not_raised():
+    """Accepted extremes that still overflow Nikitin's criteria (Re = u d_b / nu with a gas
+    viscosity and a light fluid at high speed) give an unavailable model, never an
+    exception or a non-finite number."""
+    import json
+
+    from bearing_fem.bearing.empirical import _nikitin_entry
+
+    b = load_example("7010-steel")
+    entry = _nikitin_entry(b, 1e300, 1e-9, 500.0, 2000.0, 1.0)
+    assert entry["available"] is False and "overflow" in entry["reason"], entry
+    ok = _nikitin_entry(b, 10000.0, 1e-5, 500.0, 2000.0, 1047.2)
+    assert ok["heat_power"] > 0.0
+    json.dumps([entry, ok], allow_nan=False)

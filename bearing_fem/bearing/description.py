@@ -20,11 +20,11 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import (GRADINGS, TEMPERATURE_RANGE, SolverSpec, Traction, field_bool,
-                     field_choice, field_integer, field_name_prefix, field_nonnegative,
-                     field_number, field_piezo, field_piezo_table, field_poisson,
-                     field_positive, field_range, parse_toml, read_text_file,
-                     sections_from_dict, sections_to_dict)
+from ..scene import (GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec, Traction,
+                     field_bool, field_bounded, field_choice, field_integer,
+                     field_name_prefix, field_nonnegative, field_number, field_piezo,
+                     field_piezo_table, field_poisson, field_positive, field_range,
+                     parse_toml, read_text_file, sections_from_dict, sections_to_dict)
 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
@@ -41,6 +41,14 @@ ROLLER_TYPES = ("cylindrical-roller", "tapered-roller")
 #: Types with a nominal contact angle (``bearing.contact_angle``, required).
 ANGULAR_TYPES = ("angular-contact-ball", "tapered-roller")
 
+#: Accepted oil properties of ``[lubricant]`` (the empirical models' kinematic viscosity
+#: and Nikitin's criteria): density [kg/m^3] (oils 700..2000: mineral about 870,
+#: perfluoropolyethers 1900), thermal conductivity [W/(m K)] (0.1..0.2) and specific heat
+#: [J/(kg K)] (1700..2500), with margins for water-based fluids; outside them a value is a
+#: unit slip (g/cm^3, kJ/(kg K)) and is refused, naming the field.
+OIL_DENSITY_RANGE = (100.0, 5000.0)
+OIL_CONDUCTIVITY_RANGE = (0.01, 10.0)
+OIL_SPECIFIC_HEAT_RANGE = (100.0, 1e4)
 #: Material presets: name -> (Young's modulus [Pa], Poisson ratio [-], density [kg/m^3]).
 #: Bearing steel (AISI 52100) and hot-isostatically pressed silicon nitride (Si3N4).
 MATERIAL_PRESETS: dict[str, tuple[float, float, float]] = {
@@ -603,7 +611,8 @@ class BearingLubricant:
         field_piezo(self)
         field_choice(self, "viscosity_law", ("barus", "roelands", "constant"))
         field_choice(self, "compressibility", ("incompressible", "dowson-higginson"))
-        field_positive(self, "density", "kg/m^3")
+        field_bounded(self, "density", "kg/m^3", *OIL_DENSITY_RANGE,
+                      why="oils have 700..2000 kg/m^3")
         field_choice(self, "temperature_law", ("none", "prokofiev"))
         t_ref = field_number(self, "reference_temperature", "deg C")
         _refuse_above_oil_range("lubricant.reference_temperature", t_ref, TEMPERATURE_RANGE[1])
@@ -612,13 +621,16 @@ class BearingLubricant:
                              "deg C: the Prokofiev law eta0(t) = reference_viscosity "
                              "(reference_temperature/t)^exponent is written in deg C; give the "
                              "temperature of reference_viscosity (e.g. 40 deg C)")
-        field_positive(self, "thermal_conductivity", "W/(m K)")
-        field_positive(self, "specific_heat", "J/(kg K)")
+        field_bounded(self, "thermal_conductivity", "W/(m K)", *OIL_CONDUCTIVITY_RANGE,
+                      why="oils have 0.1..0.2 W/(m K)")
+        field_bounded(self, "specific_heat", "J/(kg K)", *OIL_SPECIFIC_HEAT_RANGE,
+                      why="oils have 1700..2500 J/(kg K)")
         if self.temperature_law == "none":
             if self.viscosity is None:
                 raise SceneError("lubricant.viscosity (Pa s at the oil temperature) is "
                                  "required unless lubricant.temperature_law = 'prokofiev'")
-            field_positive(self, "viscosity", "Pa s")
+            field_bounded(self, "viscosity", "Pa s", *VISCOSITY_RANGE,
+                          why="the contact scenes' range: gases to bitumen")
             for name in ("reference_viscosity", "exponent", "piezo_temperatures"):
                 if getattr(self, name) is not None:
                     raise SceneError(f"lubricant.{name} needs lubricant.temperature_law = "
@@ -632,6 +644,8 @@ class BearingLubricant:
                     raise SceneError(f"lubricant.{name} ({unit}) is required for "
                                      "temperature_law = 'prokofiev'")
                 field_positive(self, name, unit)
+            field_bounded(self, "reference_viscosity", "Pa s", *VISCOSITY_RANGE,
+                          why="the contact scenes' range: gases to bitumen")
         field_piezo_table(self)
 
 

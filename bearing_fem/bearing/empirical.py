@@ -534,21 +534,35 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
             out["nikitin"] = {"available": False,
                               "reason": "Nikitin's model is fitted on ball bearings"}
         else:
-            a_th = lub.thermal_conductivity / (lub.density * lub.specific_heat)
-            args = (n, g.bore, g.outside_diameter, g.element_diameter, g.contact_angle,
-                    g.elements, nu_m2s, lub.density, a_th, fr, fa)
-            tot = nikitin_power_loss(*args, flow_ratio=opts.nikitin_flow_ratio,
-                                     coefficient_set=opts.nikitin_set)
-            material = "ceramic" if bearing.materials.elements == "si3n4" else "steel"
-            split = nikitin_split(*args, material=material, flow_range="max")
-            out["nikitin"] = {
-                "torque": tot["heat_power"] / omega, "heat_power": tot["heat_power"],
-                "friction_heat_power": split["friction"],
-                "churning_heat_power": split["churning"],
-                "friction_coefficient": split["friction_coefficient"],
-                "source": "Nikitin (2011): Q = phi m rho d_b^2 u^3 (criterial); split by "
-                          f"the {material} coefficients at the maximum oil flow",
-                "parameters": {"flow_ratio": opts.nikitin_flow_ratio,
-                               "coefficient_set": opts.nikitin_set, "Re": tot["Re"],
-                               "Pr": tot["Pr"], "Eu": tot["Eu"], "cage_speed_m_s": tot["u"]}}
+            out["nikitin"] = _nikitin_entry(bearing, n, nu_m2s, fr, fa, omega)
     return out
+
+
+def _nikitin_entry(bearing: Bearing, rpm: float, nu_m2s: float, fr: float, fa: float,
+                   omega: float) -> dict[str, Any]:
+    """Nikitin's total loss and its split for a ball bearing (``empirical_models``), or
+    ``{"available": False, ...}`` when his criteria overflow (an oil and speed far outside
+    the fitted range)."""
+    g, lub, opts = bearing.geometry, bearing.lubricant, bearing.empirical
+    a_th = lub.thermal_conductivity / (lub.density * lub.specific_heat)
+    args = (rpm, g.bore, g.outside_diameter, g.element_diameter, g.contact_angle,
+            g.elements, nu_m2s, lub.density, a_th, fr, fa)
+    material = "ceramic" if bearing.materials.elements == "si3n4" else "steel"
+    try:
+        tot = nikitin_power_loss(*args, flow_ratio=opts.nikitin_flow_ratio,
+                                 coefficient_set=opts.nikitin_set)
+        split = nikitin_split(*args, material=material, flow_range="max")
+    except OverflowError:
+        tot, split = {"heat_power": math.inf}, {}
+    if not all(math.isfinite(v) for v in (tot["heat_power"], *split.values())):
+        return {"available": False,
+                "reason": "Nikitin's criteria overflow for this oil and speed (Re, Pr or Eu "
+                          "beyond double precision): far outside the fitted range"}
+    return {"torque": tot["heat_power"] / omega, "heat_power": tot["heat_power"],
+            "friction_heat_power": split["friction"], "churning_heat_power": split["churning"],
+            "friction_coefficient": split["friction_coefficient"],
+            "source": "Nikitin (2011): Q = phi m rho d_b^2 u^3 (criterial); split by the "
+                      f"{material} coefficients at the maximum oil flow",
+            "parameters": {"flow_ratio": opts.nikitin_flow_ratio,
+                           "coefficient_set": opts.nikitin_set, "Re": tot["Re"],
+                           "Pr": tot["Pr"], "Eu": tot["Eu"], "cage_speed_m_s": tot["u"]}}
