@@ -184,7 +184,9 @@ class Result:
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
         if out["error_estimate"] is not None:
             out["units"].update(error_estimate_units(out["error_estimate"]))
-        out["dimensionless"] = dimensionless_groups(self.scene)
+        out["dimensionless"] = dimensionless_groups(
+            self.scene, viscosity=self.quantities.get("contact_viscosity"),
+            piezo=self.quantities.get("contact_piezo"))
         out["version"] = VERSION
         out["scene"] = self.scene.to_dict()
         return out
@@ -201,12 +203,21 @@ def number_or_none(value: Any) -> Any:
     return v if np.isfinite(v) else None
 
 
-def dimensionless_groups(scene: Scene) -> dict[str, float]:
+def dimensionless_groups(scene: Scene, *, viscosity: float | None = None,
+                         piezo: float | None = None) -> dict[str, float]:
     """Moes/Hamrock groups of a loaded elastic scene (empty where not defined).
 
     Parameters
     ----------
     scene : Scene
+    viscosity : float, optional
+        eta0 [Pa s] of the groups; default ``lubricant.viscosity``. A thermal scene's
+        result passes its ``contact_viscosity`` (the eta0 it was solved with at the
+        contact temperature): its ``lubricant.viscosity`` is the value at the reference
+        temperature, or unused when ``thermal.reference_viscosity`` is given.
+    piezo : float, optional
+        alpha [1/Pa] of the groups; default the scene's effective alpha (a thermal
+        result passes its ``contact_piezo``); 0 for the ``constant`` law either way.
 
     Returns
     -------
@@ -221,10 +232,13 @@ def dimensionless_groups(scene: Scene) -> dict[str, float]:
     if scene.load.force is None or scene.e_prime is None:
         return {}
     lub, kin = scene.lubricant, scene.kinematics
+    eta0 = lub.viscosity if viscosity is None else float(viscosity)
+    alpha = (lub.effective_piezo if piezo is None or lub.viscosity_law == "constant"
+             else float(piezo))
     if scene.contact.kind == "line":
         g = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
-                            lub.viscosity, kin.mean_speed, lub.effective_piezo)
+                            eta0, kin.mean_speed, alpha)
     else:
         g = units.moes_point(scene.load.force, scene.contact.rx, scene.contact.ry,
-                             scene.e_prime, lub.viscosity, kin.mean_speed, lub.effective_piezo)
+                             scene.e_prime, eta0, kin.mean_speed, alpha)
     return {k: float(g[k]) for k in ("M", "L", "W", "U", "G") if k in g}

@@ -123,6 +123,27 @@ def test_coupled_solve_converges_to_a_fixed_point(eyring_result):
         f"the thermal loop count is a whole number in the summary, got {n_it!r}"
 
 
+def test_dimensionless_groups_use_the_solved_contact_viscosity(eyring_result):
+    """The Moes groups of a thermal result describe the contact that was solved: eta0 at
+    the contact temperature, not lubricant.viscosity (the value at the reference
+    temperature, 40 deg C here, or unused when thermal.reference_viscosity is given)."""
+    from bearing_fem import units
+    r = eyring_result
+    q, s = r.quantities, r.scene
+    groups = r.summary()["dimensionless"]
+    want = units.moes_line(s.load.force, s.contact.rx, s.e_prime, q["contact_viscosity"],
+                           s.kinematics.mean_speed, q["contact_piezo"])
+    for key in ("M", "L", "U"):
+        np.testing.assert_allclose(groups[key], want[key], rtol=1e-12,
+                                   err_msg=f"{key} at the contact viscosity, not eta(40 C)")
+    ref = replace(s, thermal=replace(s.thermal, reference_viscosity=0.05),
+                  lubricant=replace(s.lubricant, viscosity=1e-3))
+    r2 = replace(r, scene=ref)
+    np.testing.assert_allclose(r2.summary()["dimensionless"]["M"], groups["M"], rtol=1e-12,
+                               err_msg="lubricant.viscosity is unused beside "
+                               "thermal.reference_viscosity; the groups do not depend on it")
+
+
 def test_energy_heat_into_bodies_equals_heat_power(eyring_result):
     q = eyring_result.quantities
     np.testing.assert_allclose(q["heat_flux_body1"] + q["heat_flux_body2"], q["heat_power"],
