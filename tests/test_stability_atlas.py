@@ -117,7 +117,8 @@ def test_barus_line_beyond_the_double_precision_viscosity(load_study):
     assert 0.002 < s["friction_coefficient"] < 0.15, "eyring-limiting: a physical friction"
     eta = r.extra_fields["viscosity_Pa_s"]
     assert np.all(np.isfinite(eta)) and eta.max() == np.finfo(float).max
-    assert any("viscosity overflows double precision" in w for w in r.warnings), r.warnings
+    assert any("viscosity overflows double precision" in w and "Barus" in w
+               and "reduced pressure, is not affected" in w for w in r.warnings), r.warnings
     d = scene.to_dict()
     d["traction"] = {"model": "newtonian"}
     newt = bf.solve(bf.Scene.from_dict(d))

@@ -924,7 +924,9 @@ class LineModel:
         if outlet is not None:
             q["outlet_position"] = outlet
             q["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
-        out.extra_fields["viscosity_Pa_s"], more = reported_viscosity(problem.flux.viscosity(p))
+        out.extra_fields["viscosity_Pa_s"], more = reported_viscosity(
+            problem.flux.viscosity(p), law=scene.lubricant.viscosity_law,
+            reduced=problem.uses_reduced)
         out.warnings += more
         return out
 
