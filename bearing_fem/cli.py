@@ -217,16 +217,9 @@ def _cmd_demo(args: argparse.Namespace) -> int:
     return _solve_and_write(scene, out, out / DEMO_PNG, args.quiet)
 
 
-def _h5_attrs(path: str | Path) -> dict[str, Any]:
-    import h5py
-
-    with h5py.File(path, "r") as f:
-        return {"kind": str(f.attrs["kind"]), "status": str(f.attrs.get("status", "")),
-                "success": bool(f.attrs.get("success", True)),
-                "message": str(f.attrs.get("message", ""))}
-
-
 def _cmd_plot(args: argparse.Namespace) -> int:
+    from .io import read_result
+
     path = Path(args.result)
     if path.is_dir():
         path = path / "result.h5"
@@ -234,7 +227,9 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         raise _InputError(f"no result file {str(path)!r} (give a result.h5 written by "
                           "'bearing-fem solve')")
     try:
-        attrs = _h5_attrs(path)
+        attrs = read_result(path)   # the one check of a contact result file
+    except ValueError as exc:       # names the file and what it lacks
+        raise _InputError(str(exc)) from None
     except (OSError, KeyError) as exc:
         raise _InputError(f"{str(path)!r} is not a bearing_fem result.h5: {exc}") from None
     if attrs["kind"] == "line" and args.kind in ("map", "surface"):

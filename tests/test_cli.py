@@ -400,3 +400,13 @@ def test_plot_exit_2_on_missing_or_foreign_file(tmp_path, capsys):
     assert cli.main(["plot", str(foreign)]) == 2
     err = capsys.readouterr().err
     assert "missing.h5" in err and "foreign.h5" in err and "Traceback" not in err
+    # an HDF5 file of another output (a squeeze series' time series): the reason in words,
+    # not h5py's "Unable to synchronously open attribute"
+    import h5py
+    other = tmp_path / "squeeze.h5"
+    with h5py.File(other, "w") as f:
+        f.create_dataset("x", data=[0.0, 1.0])
+    assert cli.main(["plot", str(other)]) == 2
+    err = capsys.readouterr().err
+    assert "not a contact result" in err and "no attribute(s) kind" in err, err
+    assert "synchronously" not in err and "Traceback" not in err, err
