@@ -65,7 +65,8 @@ def input_warnings(scene: Scene) -> list[str]:
     -------
     list of str
         One sentence per finding, in a fixed order (viscosity, moduli, Hertz pressure,
-        pressure-viscosity, contact size, gap, temperature); empty when all is well.
+        pressure-viscosity, contact size, gap, elastic line gap, temperature); empty when
+        all is well.
     """
     hertz = scene.hertz_scales()
     checks: list[Callable[[], str | None]] = [
@@ -79,6 +80,7 @@ def input_warnings(scene: Scene) -> list[str]:
         lambda: _piezo_viscous(scene, hertz),
         lambda: _large_contact(hertz),
         lambda: _thick_gap(scene),
+        lambda: _elastic_line_gap(scene),
         lambda: _hot_oil(scene),
     ]
     return [text for text in (check() for check in checks) if text]
@@ -164,6 +166,16 @@ def _thick_gap(scene: Scene) -> str | None:
         return None
     return (f"load.gap = {gap:.4g} m is {gap / rx:.3g} x contact.rx: the Reynolds equation "
             f"assumes a film much thinner than the radius (below {GAP_RATIO_HIGH:g})")
+
+
+def _elastic_line_gap(scene: Scene) -> str | None:
+    gap = scene.load.gap
+    if gap is None or scene.contact.kind != "line" or scene.model.elasticity != "half-space":
+        return None
+    return (f"load.gap = {gap:.4g} m on an elastic (half-space) line contact: the "
+            "plane-strain displacement has no absolute datum (ln|x - s| with x in metres), "
+            "so the film at a given gap depends on that convention and h_central - gap is "
+            "no physical approach; give load.force for a physical solve")
 
 
 def _hot_oil(scene: Scene) -> str | None:

@@ -148,6 +148,18 @@ def test_thick_gap():
     assert "load.gap = 0.0005 m" in text and "0.05 x contact.rx" in text
 
 
+def test_gap_on_an_elastic_line_contact():
+    """The plane-strain displacement is defined up to a constant (that of ln|x - s| in
+    metres): a prescribed gap on a half-space line contact gives a film that depends on
+    the length unit, which the result must say (gap 0.1 um gave h_central 0.92 um)."""
+    text = _one(_scene(ROLLER, load__force=None, load__gap=1e-7))
+    assert "load.gap = 1e-07 m" in text and "no absolute datum" in text, text
+    assert "load.force" in text, "the way out is named"
+    for quiet in (_scene(ROLLER, load__force=None, load__gap=1e-6, model__elasticity="rigid"),
+                  _scene(BALL, load__force=None, load__gap=1e-7)):
+        assert input_warnings(quiet) == [], "rigid lines and elastic points have a datum"
+
+
 def test_hot_oil():
     data = copy.deepcopy(ROLLER)
     data["model"] = {"thermal": "patch"}
