@@ -53,8 +53,10 @@ def test_a_repeated_node_in_a_line_grid_file_is_refused(tmp_path):
             "kinematics": {"u1": 1.0, "u2": 1.0}, "load": load, "model": model,
             "mesh": {"file": str(path)}})
         with pytest.raises(SceneError, match=r"mesh.file .*dup.vtu': the nodes must be "
-                                             r"distinct; x = .* appears 2 times"):
+                                             r"distinct; x = .* appears 2 times") as err:
             bf.solve(scene)
+        assert "np.float64" not in str(err.value), \
+            f"the value as a number, not a numpy repr: {err.value}"
 
 
 def test_rigid_barus_line_beyond_its_load_limit_is_no_solution():

@@ -658,7 +658,7 @@ def line_setup(scene: Scene, nodes: int | None = None,
         repeated = np.flatnonzero(np.diff(x_file) <= 0.0)
         if repeated.size:
             raise SceneError(f"mesh.file {scene.mesh.file!r}: the nodes must be distinct; "
-                             f"x = {x_file[repeated[0]]!r} (in the units of mesh.x_range) "
+                             f"x = {float(x_file[repeated[0]])!r} (in the units of mesh.x_range) "
                              f"appears {int(np.sum(x_file == x_file[repeated[0]]))} times")
         xs = every_other(x_file, nodes or x_file.size) * x_unit
         disc = LineDiscretisation.from_nodes(xs)  # graded nodes allowed (any model)
