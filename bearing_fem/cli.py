@@ -187,6 +187,8 @@ def _solve_series_and_write(scene: Any, outdir: Path, quiet: bool) -> int:
         print(f"  {'instants':<21} {s['instants']} ({s['scheme']})")
         print(f"  {'wall time':<21} {_fmt(s['wall_time_s'], 's')}")
         print(f"  {'message':<21} {s['message']}")
+        for text in s.get("warnings") or []:
+            print(f"  {'warning':<21} {text}")
         print(f"  {'wrote':<21} " + ", ".join(str(p) for p in files.values()))
     if series.success:
         return EXIT_OK

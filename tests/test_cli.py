@@ -410,3 +410,24 @@ def test_plot_exit_2_on_missing_or_foreign_file(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "not a contact result" in err and "no attribute(s) kind" in err, err
     assert "synchronously" not in err and "Traceback" not in err, err
+
+
+def test_solve_series_prints_its_warnings(tmp_path, capsys):
+    """A [transient] scene's summary lists its warnings as 'warning' lines, as a single
+    solve's does (docs/cli.md); an elastic series says it has no error estimate."""
+    data = {
+        "title": "elastic squeeze",
+        "contact": {"kind": "point", "rx": 6.35e-3, "ry": 6.35e-3},
+        "materials": {"reduced_modulus": 2.26e11},
+        "lubricant": {"viscosity": 0.0612, "viscosity_law": "constant"},
+        "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": 1e-7},
+        "mesh": {"nodes": [33, 33], "x_range": [-4.0, 4.0], "y_range": [-4.0, 4.0]},
+        "transient": {"amplitude": 0.3, "steps": 4},
+    }
+    out = tmp_path / "out"
+    assert cli.main(["solve", str(_write(tmp_path, data)), "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    lines = [ln for ln in printed.splitlines() if ln.strip().startswith("warning")]
+    saved = json.loads((out / "summary.json").read_text())["warnings"]
+    assert saved and len(lines) == len(saved), (printed, saved)
+    assert any("no error estimate" in ln and "one grid" in ln for ln in lines), printed
