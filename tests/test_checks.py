@@ -160,6 +160,22 @@ def test_gap_on_an_elastic_line_contact():
         assert input_warnings(quiet) == [], "rigid lines and elastic points have a datum"
 
 
+def test_range_in_metres_on_a_rigid_scene():
+    """Rigid and prescribed-gap ranges are in hydrodynamic lengths sqrt(2 r h0): a range
+    given in metres spans a sliver of the film (5e-9 N/m carried), said in a warning."""
+    text = _one(_scene(ROLLER, load__force=None, load__gap=1e-6, model__elasticity="rigid",
+                       mesh__x_range=[-0.001, 0.0005]))
+    assert "mesh.x_range = [-0.001, 0.0005]" in text and "sqrt(2 rx h0)" in text, text
+    assert "metres" in text, text
+    ball = _scene(BALL, load__force=None, load__gap=5e-7, mesh__x_range=[-4.0, 2.0],
+                  mesh__y_range=[-0.002, 0.002])
+    assert "mesh.y_range" in _one(ball), "elastic point with a gap: same unit"
+    for quiet in (_scene(ROLLER, load__force=None, load__gap=1e-6, model__elasticity="rigid",
+                         mesh__x_range=[-0.5, 5.0]),   # a starved inlet is physics
+                  _scene(ROLLER, mesh__x_range=[-4.5, 1.5])):
+        assert input_warnings(quiet) == [], input_warnings(quiet)
+
+
 def test_hot_oil():
     data = copy.deepcopy(ROLLER)
     data["model"] = {"thermal": "patch"}
