@@ -525,7 +525,8 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
     ``parameter``), residual, and what was spent when the budget ran out."""
     note = ""
     if outcome.continuation_steps:
-        note = f", continuation in {parameter} ({outcome.continuation_steps} steps)"
+        n = outcome.continuation_steps
+        note = f", continuation in {parameter} ({n} step{'' if n == 1 else 's'})"
     grids = "[" + ", ".join(lb.removesuffix(" nodes") for lb in outcome.labels) + "]"
     for lb in outcome.restarts:
         note += f"; {lb} failed, the sequence started again one grid finer"
