@@ -74,7 +74,9 @@ def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
         ("h_min", _fmt(s.get("h_min"), units.get("h_min", "m"))),
         ("p_max", _fmt(s.get("p_max"), units.get("p_max", "Pa"))),
         ("friction coefficient", _fmt(s.get("friction_coefficient"))),
-        ("heat power", _fmt(s.get("heat_power"), units.get("heat_power", "W"))),
+        ("heat power", _fmt(s.get("heat_power"), units.get("heat_power", "W"))
+         + (f" ({_fmt(s['heat_power_total'], 'W')} over contact.length)"
+            if s.get("heat_power_total") is not None else "")),
         ("iterations", f"{s.get('newton_iterations', 0)} Newton, "
                        f"{s.get('linear_solves', 0)} linear solves"),
         ("wall time", _fmt(s.get("wall_time_s"), "s")),

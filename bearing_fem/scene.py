@@ -485,7 +485,8 @@ class Contact:
         :data:`LENGTH_RANGE`, with ry/rx within 1/:data:`MAX_RADIUS_RATIO` ..
         :data:`MAX_RADIUS_RATIO` (a more slender contact is a line contact).
     length : float or None
-        Effective contact length [m]; line contacts only, used for totals.
+        Effective contact length [m]; line contacts only, the summary gives the
+        load, friction force and heat power over it (``*_total``).
     """
 
     _section = "contact"

@@ -431,3 +431,24 @@ def test_solve_series_prints_its_warnings(tmp_path, capsys):
     saved = json.loads((out / "summary.json").read_text())["warnings"]
     assert saved and len(lines) == len(saved), (printed, saved)
     assert any("no error estimate" in ln and "one grid" in ln for ln in lines), printed
+
+
+def test_contact_length_gives_totals(tmp_path, capsys):
+    """contact.length is documented as 'used for totals': the summary of a line contact
+    with a length has the load, friction force and heat power over that length (N, W),
+    and the printed heat power gives the total beside the per-metre value."""
+    data = dict(RIGID_OK, contact={"kind": "line", "rx": 0.01, "length": 0.012})
+    out = tmp_path / "out"
+    assert cli.main(["solve", _write(tmp_path, data), "--out", str(out)]) == 0
+    s = _summary(out)
+    for key, total, unit in (("load", "load_total", "N"),
+                             ("friction_force", "friction_force_total", "N"),
+                             ("heat_power", "heat_power_total", "W")):
+        np.testing.assert_allclose(s[total], s[key] * 0.012, rtol=1e-12,
+                                   err_msg=f"{total} = {key} [per metre] x contact.length")
+        assert s["units"][total] == unit and s["units"][key] == unit + "/m"
+    printed = capsys.readouterr().out
+    assert f"{s['heat_power_total']:.4g} W over contact.length" in printed, printed
+    out2 = tmp_path / "no_length"
+    assert cli.main(["solve", _write(tmp_path, RIGID_OK, "b.toml"), "--out", str(out2)]) == 0
+    assert not [k for k in _summary(out2) if k.endswith("_total")], "no length, no totals"
