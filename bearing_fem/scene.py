@@ -1228,7 +1228,7 @@ class Scene:
         ----------
         path : str or Path
             A UTF-8 TOML file (a byte-order mark is accepted); a relative ``mesh.file``
-            in it is relative to the file's folder.
+            in it is relative to the file's folder (and stored as an absolute path).
 
         Returns
         -------
@@ -1240,8 +1240,10 @@ class Scene:
             An unreadable or malformed file, or an invalid scene (see :meth:`from_dict`).
         """
         path = Path(path)
+        # absolute: the scene (stored in summary.json and result.h5) must name the grid
+        # file wherever it is read back, not relative to the folder the solve ran in
         return cls.from_toml_string(read_text_file(path, "scene file"), source=str(path),
-                                    base_dir=path.parent)
+                                    base_dir=path.absolute().parent)
 
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>",
