@@ -97,6 +97,34 @@ def test_jaeger_agrees_with_fe_moving_source_at_high_peclet():
                                err_msg="FE moving source vs Jaeger high-Pe integral")
 
 
+def test_flash_temperature_of_a_surface_running_along_minus_x():
+    """A body moving along -x carries its heat towards -x: the Blok maximum of a
+    semi-elliptic band lies at x = -0.652 b, the mirror image of the +x body's (the
+    coupled loop used |u| for both surfaces, so a counter-running surface got the field of
+    one running along +x)."""
+    b = 1e-4
+    x = np.linspace(-1.5 * b, 1.5 * b, 1201)
+    xm = 0.5 * (x[1:] + x[:-1])
+    q = 1e8 * np.sqrt(np.clip(1.0 - (xm / b) ** 2, 0.0, None))
+    forward = coupling.flash_temperature(x, q, x, 46.0, 7850.0, 470.0, 5.0)
+    backward = coupling.flash_temperature(x, q, x, 46.0, 7850.0, 470.0, -5.0)
+    np.testing.assert_allclose(backward, forward[::-1], rtol=1e-12, atol=1e-12,
+                               err_msg="a symmetric band: T(-V)(x) = T(+V)(-x)")
+    np.testing.assert_allclose(x[np.argmax(backward)] / b, -0.652, atol=0.01,
+                               err_msg="Blok maximum 0.652 b downstream of the motion")
+
+
+def test_counter_running_surface_heats_upstream():
+    """End to end: with u2 < 0 the second surface's temperature field peaks at x < 0 and
+    the first surface's at x > 0."""
+    r = bf.solve(_scene(u1=3.0, u2=-0.5))
+    assert r.success, r.message
+    t1 = r.extra_fields["surface_temperature_rise_body1_K"]
+    t2 = r.extra_fields["surface_temperature_rise_body2_K"]
+    assert r.x[np.argmax(t1)] > 0.0 > r.x[np.argmax(t2)], \
+        (r.x[np.argmax(t1)], r.x[np.argmax(t2)])
+
+
 # ------------------------------------------------------------------ coupled solve
 @pytest.fixture(scope="module")
 def eyring_result():

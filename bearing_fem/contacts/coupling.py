@@ -104,7 +104,19 @@ def flash_temperature(x_nodes: np.ndarray, q_elements: np.ndarray, x_eval: np.nd
                       conductivity: float, density: float, heat_capacity: float,
                       speed: float, *, source_model: str = "jaeger") -> np.ndarray:
     """Surface temperature rise [K] at ``x_eval`` [m] of a body moving at ``speed`` [m/s]
-    under the element flux ``q_elements`` [W/m^2] (``"jaeger"`` closed form or ``"fe"``)."""
+    under the element flux ``q_elements`` [W/m^2] (``"jaeger"`` closed form or ``"fe"``).
+
+    ``speed`` is the body's surface velocity along x: a body moving along -x (negative
+    speed, e.g. a surface running against the entrainment) carries its heat towards -x,
+    so its field is that of the mirrored problem (x -> -x) at the speed's magnitude.
+    ``x_nodes`` [m] ascend; ``q_elements`` has one value per element between them.
+    """
+    if speed < 0.0:
+        xn = np.asarray(x_nodes, dtype=float)
+        mirrored = flash_temperature(-xn[::-1], np.asarray(q_elements, dtype=float)[::-1],
+                                     -np.asarray(x_eval, dtype=float), conductivity, density,
+                                     heat_capacity, -speed, source_model=source_model)
+        return mirrored
     if source_model == "jaeger":
         return jaeger_surface_temperature(x_nodes, q_elements, x_eval, conductivity, density,
                                           heat_capacity, speed)
@@ -150,6 +162,7 @@ def solve_thermal(scene: Scene) -> Result:
                          f"contact.kind = {scene.contact.kind!r}")
     th = scene.thermal
     kin = scene.kinematics
+    velocities = (kin.u1, kin.u2)     # signed: a surface may run along -x
     speeds = (abs(kin.u1), abs(kin.u2))
     if min(speeds) <= 0.0:
         raise SceneError(f"model.thermal = 'patch' (moving-source flash temperature) needs both "
@@ -203,7 +216,8 @@ def solve_thermal(scene: Scene) -> Result:
         q_e, _ = model.heat_flux(res.pressure, res.h0)
         xn = res.x
         temps = [flash_temperature(xn, fractions[i] * q_e, xn, lam[i], rho[i], cap[i],
-                                   speeds[i], source_model=th.source_model) for i in range(2)]
+                                   velocities[i], source_model=th.source_model)
+                 for i in range(2)]
         p_pos = np.maximum(res.pressure, 0.0)
         wts = np.gradient(xn) * p_pos
         mean_rise = float(np.mean([wts @ T_i for T_i in temps]) / wts.sum())
