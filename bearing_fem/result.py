@@ -188,8 +188,9 @@ class Result:
 
         A line contact with ``contact.length`` also has the totals over that length
         (:func:`line_totals`). Besides the numbers: ``status``, ``success``, ``message``,
-        ``warnings`` (list of str), ``error_estimate`` (dict or None), ``units`` (unit of every dimensional
-        key), ``dimensionless`` (Moes/Hamrock groups), ``version`` and ``scene``.
+        ``warnings`` (list of str), ``error_estimate`` (dict or None), ``units`` (unit of
+        every dimensional key), ``dimensionless`` (Moes/Hamrock groups), ``version`` and
+        ``scene``.
         A quantity that is undefined (e.g. a friction coefficient without a positive
         load) is ``None``, never NaN.
         """
