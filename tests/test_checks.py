@@ -176,6 +176,23 @@ def test_range_in_metres_on_a_rigid_scene():
         assert input_warnings(quiet) == [], input_warnings(quiet)
 
 
+def test_traction_parameter_the_model_does_not_use():
+    """An Eyring stress given with the Newtonian or limiting model (or a limiting stress with
+    the Eyring model) was silently ignored; the generic defaults are not flagged."""
+    text = _one(_scene(ROLLER, traction__model="newtonian", traction__eyring_stress=3e6))
+    assert "traction.eyring_stress = 3e+06 Pa is not used by traction.model = 'newtonian'" \
+        in text, text
+    text = _one(_scene(ROLLER, traction__model="eyring", traction__limiting_slope=0.05,
+                       traction__limiting_shear_stress=1e6))
+    assert "limiting_shear_stress = 1e+06 Pa, traction.limiting_slope = 0.05 are not " \
+           "used by traction.model = 'eyring' (it uses eyring_stress)" in text, text
+    for quiet in (_scene(ROLLER, traction__model="eyring", traction__eyring_stress=3e6),
+                  _scene(ROLLER, traction__model="limiting"),
+                  _scene(ROLLER, traction__model="eyring-limiting",
+                         traction__eyring_stress=8e6, traction__limiting_slope=0.06)):
+        assert input_warnings(quiet) == [], input_warnings(quiet)
+
+
 def test_hot_oil():
     data = copy.deepcopy(ROLLER)
     data["model"] = {"thermal": "patch"}
