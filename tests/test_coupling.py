@@ -125,6 +125,35 @@ def test_counter_running_surface_heats_upstream():
         (r.x[np.argmax(t1)], r.x[np.argmax(t2)])
 
 
+def test_oil_too_thin_for_its_law_is_named_in_thermal_terms():
+    """A Roelands oil of 0.001 Pa s at 40 deg C is 1.9e-5 Pa s at 150 deg C, below the
+    Roelands range: the refusal said 'lubricant.viscosity = 1.9e-05 Pa s is outside ...',
+    a value the file does not hold. It now names the oil temperature and the given value;
+    a temperature reached only during the loop ends it with status 'diverged'."""
+    base = _scene(oil_temperature=150.0, exponent=3.0)
+    thin = replace(base, lubricant=replace(base.lubricant, viscosity=0.001,
+                                           viscosity_law="roelands"))
+    with pytest.raises(SceneError) as err:
+        bf.solve(thin)
+    text = str(err.value)
+    assert text.startswith("thermal.oil_temperature = 150 deg C") and \
+        "lubricant.viscosity = 0.001 Pa s at 40 deg C" in text, text
+
+
+def test_leaving_the_law_during_the_loop_is_diverged(monkeypatch):
+    calls = []
+    real = coupling.contact_viscosity
+
+    def viscosity(scene, temperature):
+        calls.append(temperature)
+        return real(scene, temperature) if len(calls) == 1 else 1e-9   # below 1e-6 Pa s
+
+    monkeypatch.setattr(coupling, "contact_viscosity", viscosity)
+    r = bf.solve(_scene())
+    assert r.status == "diverged" and not r.success, r.message
+    assert "thermal iteration 2" in r.message and "eta0 = 1e-09 Pa s" in r.message, r.message
+
+
 # ------------------------------------------------------------------ coupled solve
 @pytest.fixture(scope="module")
 def eyring_result():

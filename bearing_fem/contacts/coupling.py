@@ -200,10 +200,27 @@ def solve_thermal(scene: Scene) -> Result:
             break
         eta0 = contact_viscosity(scene, T)
         alpha = contact_piezo(scene, T)
-        lub = replace(scene.lubricant, viscosity=eta0, piezo=alpha)
         inner = replace(sol, iteration_budget=left_its, time_limit=None if sol.time_limit
                         is None else sol.time_limit - elapsed)
-        iso = replace(scene, model=iso_model, lubricant=lub, thermal=None, solver=inner)
+        try:
+            lub = replace(scene.lubricant, viscosity=eta0, piezo=alpha)
+            iso = replace(scene, model=iso_model, lubricant=lub, thermal=None, solver=inner)
+        except SceneError as exc:
+            # the oil's laws leave the range of the viscosity law at this temperature:
+            # say so in the user's terms (not as the value of lubricant.viscosity)
+            src = (f"thermal.reference_viscosity = {th.reference_viscosity:.4g} Pa s"
+                   if th.reference_viscosity is not None else
+                   f"lubricant.viscosity = {scene.lubricant.viscosity:.4g} Pa s")
+            where = (f"at {T:.4g} deg C the oil has eta0 = {eta0:.4g} Pa s and alpha = "
+                     f"{alpha:.4g} 1/Pa ({src} at {th.reference_temperature:.4g} deg C), "
+                     f"refused as the isothermal scene's: {exc}")
+            if it == 1:   # already at the oil temperature: the input is out of range
+                raise SceneError(f"thermal.oil_temperature = {t_oil:.4g} deg C: {where}") \
+                    from None
+            status = "diverged"
+            msg = (f"diverged: thermal iteration {it}: {where}; the last isothermal solve "
+                   "is kept")
+            break
         model = LineModel(iso)
         res = solve_newton_model(model, iso, time.perf_counter())
         newton_its += res.newton_iterations
