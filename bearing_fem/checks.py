@@ -83,7 +83,9 @@ def input_warnings(scene: Scene) -> list[str]:
     """
     hertz = scene.hertz_scales()
     checks: list[Callable[[], str | None]] = [
-        lambda: _viscosity("lubricant.viscosity", scene.lubricant.viscosity),
+        lambda: (None if scene.thermal is not None
+                 and scene.thermal.reference_viscosity is not None   # then unused
+                 else _viscosity("lubricant.viscosity", scene.lubricant.viscosity)),
         lambda: (None if scene.thermal is None or scene.thermal.reference_viscosity is None
                  else _viscosity("thermal.reference_viscosity",
                                  scene.thermal.reference_viscosity)),

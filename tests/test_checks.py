@@ -84,6 +84,10 @@ def test_thermal_reference_viscosity_checked():
     data["thermal"] = {"oil_temperature": 60.0, "exponent": 2.9, "reference_viscosity": 30.0}
     text = _one(Scene.from_dict(data))
     assert text.startswith("thermal.reference_viscosity = 30 Pa s")
+    # beside thermal.reference_viscosity, lubricant.viscosity is not used: no warning on it
+    data["lubricant"]["viscosity"] = 1e-5
+    data["thermal"]["reference_viscosity"] = 0.05
+    assert input_warnings(Scene.from_dict(data)) == []
 
 
 def test_soft_bodies():
