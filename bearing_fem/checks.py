@@ -53,7 +53,7 @@ GAP_RATIO_HIGH = 1e-2
 #: film's pressure, which builds over several (default [-100, 5]) [-]: mostly a range
 #: given in metres ([-0.001, 0.0005] on a 10 mm roller at 1 um carried 5e-9 N/m).
 HYDRODYNAMIC_RANGE_LOW = 1.0
-#: The ``[traction]`` parameters each model uses, with their units.
+#: The ``[traction]`` parameters each model uses (the others it ignores).
 TRACTION_PARAMETERS = {
     "eyring-limiting": ("eyring_stress", "limiting_shear_stress", "limiting_slope"),
     "eyring": ("eyring_stress",), "limiting": ("limiting_shear_stress", "limiting_slope"),
