@@ -364,6 +364,55 @@ def martin_existence_ratio(h0: _Any, radius: _Any, viscosity: _Any, mean_speed: 
                                                                mean_speed)
 
 
+def martin_barus_load_limit(radius: float, viscosity: float, mean_speed: float,
+                            piezo: float) -> tuple[float, float]:
+    """Largest load per unit length a rigid Barus cylinder with the Reynolds outlet
+    carries, and the gap at which it does (5.2).
+
+    The Barus pressure p = -ln(1 - alpha q)/alpha of Martin's reduced pressure q exists
+    while alpha q_max < 1; q_max grows as h0^(-3/2) as the gap closes, so the load grows
+    to its limit at the gap h0* where alpha q_max = 1. There p has a logarithmic (so
+    integrable) singularity at x = -x_c, and the limit is
+    W* = int_{-inf}^{x_c} p dx. No load above W* has a solution.
+
+    Parameters
+    ----------
+    radius : float
+        R [m].
+    viscosity : float
+        eta0 [Pa s].
+    mean_speed : float
+        u_m [m/s], > 0.
+    piezo : float
+        alpha [1/Pa], > 0.
+
+    Returns
+    -------
+    (float, float)
+        W* [N/m] and h0* [m].
+    """
+    from scipy.integrate import quad
+
+    require_positive("radius", radius, "m")
+    require_positive("viscosity", viscosity, "Pa s")
+    require_positive("mean_speed", mean_speed, "m/s")
+    require_positive("piezo", piezo, "1/Pa")
+    gc = martin_outlet_angle()
+    hs = 1.0 / np.cos(gc) ** 2
+    peak = float(_martin_shape(-gc, hs))
+    # alpha P0(h0) peak = 1 with P0 = eta0 u_m sqrt(2 R h0)/h0^2
+    h0 = (piezo * viscosity * mean_speed * np.sqrt(2.0 * radius) * peak) ** (2.0 / 3.0)
+    length = np.sqrt(2.0 * radius * h0)
+
+    def integrand(g: float) -> float:
+        aq = min(float(_martin_shape(g, hs)) / peak, 1.0 - 1e-16)   # alpha q
+        return -np.log1p(-aq) / piezo * length / np.cos(g) ** 2
+
+    inlet = quad(integrand, -np.pi / 2.0, -gc, limit=200)[0]
+    outlet = quad(integrand, -gc, gc, limit=200)[0]
+    return float(inlet + outlet), float(h0)
+
+
 # --- Hertz dry limits (docs/theory.md section 14.3) ---------------------------------------------------
 def hertz_line_pressure(x: _Any, b: float, p_h: float) -> np.ndarray:
     """Hertz line pressure p = p_h sqrt(1 - (x/b)^2) for |x| <= b, else 0 [Pa] (5.3).

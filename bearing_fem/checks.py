@@ -13,11 +13,13 @@ from __future__ import annotations
 
 from typing import Callable
 
+from .physics.traction import GENERIC_MINERAL_OIL
 from .scene import Scene
 
 __all__ = ["input_warnings", "VISCOSITY_HIGH", "VISCOSITY_LOW", "E_PRIME_LOW",
            "ALPHA_PH_HIGH", "HERTZ_PRESSURE_HIGH", "LINE_PRESSURE_LOW", "HARD_E_PRIME",
-           "HERTZ_RATIO_HIGH", "GAP_RATIO_HIGH", "OIL_TEMPERATURE_HIGH", "OIL_DENSITY"]
+           "HERTZ_RATIO_HIGH", "GAP_RATIO_HIGH", "OIL_TEMPERATURE_HIGH", "OIL_DENSITY",
+           "HYDRODYNAMIC_RANGE_LOW", "TRACTION_PARAMETERS"]
 
 #: Viscosity above which no lubricating oil runs at its working temperature [Pa s]
 #: (an ISO VG 1500 gear oil at 40 deg C is about 1.3 Pa s).
@@ -46,6 +48,17 @@ HERTZ_RATIO_HIGH = 0.1
 #: Prescribed gap over rx above which the film is not thin against the radius [-]
 #: (the Reynolds equation assumes h << rx).
 GAP_RATIO_HIGH = 1e-2
+#: Width of a domain in hydrodynamic lengths sqrt(2 r h0) (the unit of ``mesh.x_range``
+#: and ``y_range`` in rigid and prescribed-gap scenes) below which it cannot hold the
+#: film's pressure, which builds over several (default [-100, 5]) [-]: mostly a range
+#: given in metres ([-0.001, 0.0005] on a 10 mm roller at 1 um carried 5e-9 N/m).
+HYDRODYNAMIC_RANGE_LOW = 1.0
+#: The ``[traction]`` parameters each model uses (the others it ignores).
+TRACTION_PARAMETERS = {
+    "eyring-limiting": ("eyring_stress", "limiting_shear_stress", "limiting_slope"),
+    "eyring": ("eyring_stress",), "limiting": ("limiting_shear_stress", "limiting_slope"),
+    "newtonian": ()}
+_TRACTION_UNITS = {"eyring_stress": " Pa", "limiting_shear_stress": " Pa", "limiting_slope": ""}
 #: Oil temperature above which mineral oils oxidise and degrade quickly [deg C].
 OIL_TEMPERATURE_HIGH = 150.0
 #: Density of a mineral oil [kg/m^3], used only to suggest a dynamic viscosity when a
@@ -65,11 +78,14 @@ def input_warnings(scene: Scene) -> list[str]:
     -------
     list of str
         One sentence per finding, in a fixed order (viscosity, moduli, Hertz pressure,
-        pressure-viscosity, contact size, gap, temperature); empty when all is well.
+        pressure-viscosity, contact size, gap, elastic line gap, domain, traction,
+        temperature); empty when all is well.
     """
     hertz = scene.hertz_scales()
     checks: list[Callable[[], str | None]] = [
-        lambda: _viscosity("lubricant.viscosity", scene.lubricant.viscosity),
+        lambda: (None if scene.thermal is not None
+                 and scene.thermal.reference_viscosity is not None   # then unused
+                 else _viscosity("lubricant.viscosity", scene.lubricant.viscosity)),
         lambda: (None if scene.thermal is None or scene.thermal.reference_viscosity is None
                  else _viscosity("thermal.reference_viscosity",
                                  scene.thermal.reference_viscosity)),
@@ -79,6 +95,9 @@ def input_warnings(scene: Scene) -> list[str]:
         lambda: _piezo_viscous(scene, hertz),
         lambda: _large_contact(hertz),
         lambda: _thick_gap(scene),
+        lambda: _elastic_line_gap(scene),
+        lambda: _narrow_hydrodynamic_range(scene),
+        lambda: _unused_traction(scene),
         lambda: _hot_oil(scene),
     ]
     return [text for text in (check() for check in checks) if text]
@@ -164,6 +183,44 @@ def _thick_gap(scene: Scene) -> str | None:
         return None
     return (f"load.gap = {gap:.4g} m is {gap / rx:.3g} x contact.rx: the Reynolds equation "
             f"assumes a film much thinner than the radius (below {GAP_RATIO_HIGH:g})")
+
+
+def _elastic_line_gap(scene: Scene) -> str | None:
+    gap = scene.load.gap
+    if gap is None or scene.contact.kind != "line" or scene.model.elasticity != "half-space":
+        return None
+    return (f"load.gap = {gap:.4g} m on an elastic (half-space) line contact: the "
+            "plane-strain displacement has no absolute datum (ln|x - s| with x in metres), "
+            "so the film at a given gap depends on that convention and h_central - gap is "
+            "no physical approach; give load.force for a physical solve")
+
+
+def _narrow_hydrodynamic_range(scene: Scene) -> str | None:
+    mesh = scene.mesh
+    if scene.load.gap is None and scene.model.elasticity != "rigid":
+        return None   # elastic under load: ranges in Hertz half-widths, checked when built
+    for name, r, radius in (("x_range", mesh.x_range, "rx"), ("y_range", mesh.y_range, "ry")):
+        if r is not None and r[1] - r[0] < HYDRODYNAMIC_RANGE_LOW:
+            return (f"mesh.{name} = [{r[0]:g}, {r[1]:g}] spans {r[1] - r[0]:.3g} hydrodynamic "
+                    f"lengths sqrt(2 {radius} h0), the unit of ranges in rigid and "
+                    f"prescribed-gap scenes: too narrow for the film's pressure, which "
+                    f"builds over several (default x in [-100, 5]); was it given in metres?")
+    return None
+
+
+def _unused_traction(scene: Scene) -> str | None:
+    tr = scene.traction
+    if tr is None:
+        return None
+    unused = [f"traction.{name} = {getattr(tr, name):g}{_TRACTION_UNITS[name]}"
+              for name in _TRACTION_UNITS if name not in TRACTION_PARAMETERS[tr.model]
+              and getattr(tr, name) != GENERIC_MINERAL_OIL[name]]
+    if not unused:
+        return None
+    used = ", ".join(TRACTION_PARAMETERS[tr.model]) or "none of the parameters"
+    verb = "is" if len(unused) == 1 else "are"
+    return (f"{', '.join(unused)} {verb} not used by traction.model = {tr.model!r} (it uses "
+            f"{used}); for an Eyring or limiting stress choose a model that has it")
 
 
 def _hot_oil(scene: Scene) -> str | None:

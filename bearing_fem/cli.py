@@ -74,7 +74,9 @@ def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
         ("h_min", _fmt(s.get("h_min"), units.get("h_min", "m"))),
         ("p_max", _fmt(s.get("p_max"), units.get("p_max", "Pa"))),
         ("friction coefficient", _fmt(s.get("friction_coefficient"))),
-        ("heat power", _fmt(s.get("heat_power"), units.get("heat_power", "W"))),
+        ("heat power", _fmt(s.get("heat_power"), units.get("heat_power", "W"))
+         + (f" ({_fmt(s['heat_power_total'], 'W')} over contact.length)"
+            if s.get("heat_power_total") is not None else "")),
         ("iterations", f"{s.get('newton_iterations', 0)} Newton, "
                        f"{s.get('linear_solves', 0)} linear solves"),
         ("wall time", _fmt(s.get("wall_time_s"), "s")),
@@ -187,6 +189,8 @@ def _solve_series_and_write(scene: Any, outdir: Path, quiet: bool) -> int:
         print(f"  {'instants':<21} {s['instants']} ({s['scheme']})")
         print(f"  {'wall time':<21} {_fmt(s['wall_time_s'], 's')}")
         print(f"  {'message':<21} {s['message']}")
+        for text in s.get("warnings") or []:
+            print(f"  {'warning':<21} {text}")
         print(f"  {'wrote':<21} " + ", ".join(str(p) for p in files.values()))
     if series.success:
         return EXIT_OK
@@ -217,16 +221,9 @@ def _cmd_demo(args: argparse.Namespace) -> int:
     return _solve_and_write(scene, out, out / DEMO_PNG, args.quiet)
 
 
-def _h5_attrs(path: str | Path) -> dict[str, Any]:
-    import h5py
-
-    with h5py.File(path, "r") as f:
-        return {"kind": str(f.attrs["kind"]), "status": str(f.attrs.get("status", "")),
-                "success": bool(f.attrs.get("success", True)),
-                "message": str(f.attrs.get("message", ""))}
-
-
 def _cmd_plot(args: argparse.Namespace) -> int:
+    from .io import read_result
+
     path = Path(args.result)
     if path.is_dir():
         path = path / "result.h5"
@@ -234,7 +231,9 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         raise _InputError(f"no result file {str(path)!r} (give a result.h5 written by "
                           "'bearing-fem solve')")
     try:
-        attrs = _h5_attrs(path)
+        attrs = read_result(path)   # the one check of a contact result file
+    except ValueError as exc:       # names the file and what it lacks
+        raise _InputError(str(exc)) from None
     except (OSError, KeyError) as exc:
         raise _InputError(f"{str(path)!r} is not a bearing_fem result.h5: {exc}") from None
     if attrs["kind"] == "line" and args.kind in ("map", "surface"):

@@ -459,10 +459,13 @@ def _matplotlib_line(d: PlotData, out: Path) -> None:
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
-    if d.kind == "point":  # centre line y = 0
+    what = "line contact"
+    if d.kind == "point":  # centre line y = 0, or the grid line nearest to it
         j = int(np.argmin(np.abs(d.y)))
         p, h = d.pressure[j], d.film[j]
         scale = None if d.semi_axes is None else d.semi_axes[0]
+        what = ("centre line y = 0" if d.y[j] == 0.0 else
+                f"grid line y = {d.y[j] * 1e3:.3g} mm (no node row at y = 0)")
     else:
         p, h = d.pressure, d.film
         scale = d.x_unit
@@ -487,4 +490,4 @@ def _matplotlib_line(d: PlotData, out: Path) -> None:
         ref = max(lo, centre) if np.isfinite(centre) else lo
         top = min(top, 4.0 * ref) if ref > 0 else top
         ax2.set_ylim(min(0.0, lo), max(top * 1.05, 1e-9))
-    _save(fig, ax, d, "centre line y = 0" if d.kind == "point" else "line contact", out)
+    _save(fig, ax, d, what, out)

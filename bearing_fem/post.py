@@ -302,27 +302,49 @@ NEWTONIAN_FRICTION_LIMIT = 0.2
 MAX_FRICTION_COEFFICIENT = 1.0
 
 
-#: Largest double [-]: a viscosity beyond it (Barus at alpha p > 709.78) is reported
+#: Largest double [-]: a viscosity beyond it (e.g. Barus at alpha p > 709.78) is reported
 #: clipped at it (:func:`reported_viscosity`).
 _MAX_FLOAT = float(np.finfo(float).max)
 #: alpha p beyond which the Barus viscosity overflows [-]: ln(_MAX_FLOAT) = 709.78.
 _BARUS_OVERFLOW = math.log(_MAX_FLOAT)
 
 
-def reported_viscosity(eta: np.ndarray) -> tuple[np.ndarray, list[str]]:
-    """The viscosity field as reported [Pa s], and warnings: where the law overflows
-    double precision (Barus at alpha p > 709.78; the film equation, in the reduced
-    pressure, is unaffected) the field is clipped at the largest double."""
+def reported_viscosity(eta: np.ndarray, *, law: str, reduced: bool
+                       ) -> tuple[np.ndarray, list[str]]:
+    """The viscosity field as reported, and warnings where it overflows double precision.
+
+    Parameters
+    ----------
+    eta : ndarray
+        Nodal viscosity [Pa s] by the scene's law (inf where it overflows).
+    law : str
+        The scene's ``lubricant.viscosity_law`` (``"barus"``, ``"roelands"``,
+        ``"constant"``), named in the warning.
+    reduced : bool
+        True when the Reynolds equation was solved in the reduced (Kapitsa) pressure,
+        which the overflow does not affect; False when the solve itself used this
+        viscosity.
+
+    Returns
+    -------
+    eta : ndarray
+        The field [Pa s], clipped at the largest double where the law overflows.
+    warnings : list of str
+        One sentence when some node overflows, else empty.
+    """
     eta = np.asarray(eta, dtype=float)
     over = ~np.isfinite(eta)
     if not np.any(over):
         return eta, []
     share = float(np.mean(over))
+    where = (f"Barus at alpha p > {_BARUS_OVERFLOW:.1f}" if law == "barus"
+             else f"{law.capitalize()} law")
+    effect = ("the film solution, in the reduced pressure, is not affected" if reduced
+              else "the Reynolds equation was solved with this viscosity, so the film and "
+              "pressure are not meaningful there")
     return np.where(over, _MAX_FLOAT, eta), [
         f"the viscosity overflows double precision at {100 * share:.3g}% of the nodes "
-        f"(Barus at alpha p > {_BARUS_OVERFLOW:.1f}): viscosity_Pa_s is clipped at "
-        f"{_MAX_FLOAT:.3g} Pa s there (the film solution, in the reduced pressure, is "
-        "not affected)"]
+        f"({where}): viscosity_Pa_s is clipped at {_MAX_FLOAT:.3g} Pa s there ({effect})"]
 
 
 def friction_coefficient(friction: float, load: float, gross: float) -> tuple[float | None,

@@ -53,6 +53,10 @@ _UNITS_POINT = {
     "contact_viscosity": "Pa s", "contact_piezo": "1/Pa", "gmres_iterations": "1",
     "wall_time_s": "s",
 }
+#: Per-metre summary keys of a line contact and the totals over ``contact.length`` that
+#: :meth:`Result.summary` adds when the length is given (key, total key, total unit).
+LINE_TOTALS = (("load", "load_total", "N"), ("friction_force", "friction_force_total", "N"),
+               ("heat_power", "heat_power_total", "W"))
 
 
 def summary_units(kind: str) -> dict[str, str]:
@@ -60,7 +64,31 @@ def summary_units(kind: str) -> dict[str, str]:
     if kind == "point":
         return dict(_UNITS_POINT)
     per_m = {"N": "N/m", "W": "W/m"}
-    return {k: per_m.get(u, u) for k, u in _UNITS_POINT.items()}
+    units = {k: per_m.get(u, u) for k, u in _UNITS_POINT.items()}
+    units.update({total: unit for _, total, unit in LINE_TOTALS})
+    return units
+
+
+def line_totals(summary: Mapping[str, Any], length: float) -> dict[str, float | None]:
+    """Totals of a line contact over its length: the per-metre load, friction force and
+    heat power times ``length``.
+
+    Parameters
+    ----------
+    summary : mapping
+        Per-metre values [N/m, W/m] under the keys of :data:`LINE_TOTALS` (absent or None
+        where undefined).
+    length : float
+        ``contact.length`` [m].
+
+    Returns
+    -------
+    dict
+        ``load_total`` [N], ``friction_force_total`` [N], ``heat_power_total`` [W] for
+        each per-metre key present; None where its value is None.
+    """
+    return {total: (None if summary[key] is None else float(summary[key]) * length)
+            for key, total, _ in LINE_TOTALS if key in summary}
 
 
 def error_estimate_units(estimate: Mapping[str, Any], prefix: str = "error_estimate"
@@ -158,9 +186,11 @@ class Result:
     def summary(self) -> dict[str, Any]:
         """The result as a flat dict of SI numbers (``docs/api.md`` lists every key).
 
-        Besides the numbers: ``status``, ``success``, ``message``, ``warnings`` (list of
-        str), ``error_estimate`` (dict or None), ``units`` (unit of every dimensional
-        key), ``dimensionless`` (Moes/Hamrock groups), ``version`` and ``scene``.
+        A line contact with ``contact.length`` also has the totals over that length
+        (:func:`line_totals`). Besides the numbers: ``status``, ``success``, ``message``,
+        ``warnings`` (list of str), ``error_estimate`` (dict or None), ``units`` (unit of
+        every dimensional key), ``dimensionless`` (Moes/Hamrock groups), ``version`` and
+        ``scene``.
         A quantity that is undefined (e.g. a friction coefficient without a positive
         load) is ``None``, never NaN.
         """
@@ -173,6 +203,9 @@ class Result:
         out.update({k: number_or_none(v) for k, v in self.quantities.items()})
         if "friction_force" in self.quantities:
             out.setdefault("friction_coefficient", None)
+        length = getattr(self.scene.contact, "length", None)
+        if kind == "line" and length is not None:
+            out.update(line_totals(out, length))
         out["traction_model"] = self.traction_model
         out["h0"] = float(self.h0)
         out["newton_iterations"] = int(self.newton_iterations)
@@ -184,7 +217,9 @@ class Result:
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
         if out["error_estimate"] is not None:
             out["units"].update(error_estimate_units(out["error_estimate"]))
-        out["dimensionless"] = dimensionless_groups(self.scene)
+        out["dimensionless"] = dimensionless_groups(
+            self.scene, viscosity=self.quantities.get("contact_viscosity"),
+            piezo=self.quantities.get("contact_piezo"))
         out["version"] = VERSION
         out["scene"] = self.scene.to_dict()
         return out
@@ -201,12 +236,21 @@ def number_or_none(value: Any) -> Any:
     return v if np.isfinite(v) else None
 
 
-def dimensionless_groups(scene: Scene) -> dict[str, float]:
+def dimensionless_groups(scene: Scene, *, viscosity: float | None = None,
+                         piezo: float | None = None) -> dict[str, float]:
     """Moes/Hamrock groups of a loaded elastic scene (empty where not defined).
 
     Parameters
     ----------
     scene : Scene
+    viscosity : float, optional
+        eta0 [Pa s] of the groups; default ``lubricant.viscosity``. A thermal scene's
+        result passes its ``contact_viscosity`` (the eta0 it was solved with at the
+        contact temperature): its ``lubricant.viscosity`` is the value at the reference
+        temperature, or unused when ``thermal.reference_viscosity`` is given.
+    piezo : float, optional
+        alpha [1/Pa] of the groups; default the scene's effective alpha (a thermal
+        result passes its ``contact_piezo``); 0 for the ``constant`` law either way.
 
     Returns
     -------
@@ -221,10 +265,13 @@ def dimensionless_groups(scene: Scene) -> dict[str, float]:
     if scene.load.force is None or scene.e_prime is None:
         return {}
     lub, kin = scene.lubricant, scene.kinematics
+    eta0 = lub.viscosity if viscosity is None else float(viscosity)
+    alpha = (lub.effective_piezo if piezo is None or lub.viscosity_law == "constant"
+             else float(piezo))
     if scene.contact.kind == "line":
         g = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
-                            lub.viscosity, kin.mean_speed, lub.effective_piezo)
+                            eta0, kin.mean_speed, alpha)
     else:
         g = units.moes_point(scene.load.force, scene.contact.rx, scene.contact.ry,
-                             scene.e_prime, lub.viscosity, kin.mean_speed, lub.effective_piezo)
+                             scene.e_prime, eta0, kin.mean_speed, alpha)
     return {k: float(g[k]) for k in ("M", "L", "W", "U", "G") if k in g}

@@ -59,10 +59,38 @@ def field_name_prefix(obj: Any) -> str:
     return getattr(obj, "_section", type(obj).__name__.lower())
 
 
+def plain_number(value: Any) -> Any:
+    """A numpy integer or floating scalar as the Python int or float it holds (a value
+    from ``np.linspace`` or ``np.arange`` is a number like any other); anything else,
+    numpy booleans included, unchanged.
+
+    Parameters
+    ----------
+    value : Any
+
+    Returns
+    -------
+    Any
+    """
+    if isinstance(value, (np.integer, np.floating)):
+        return value.item()
+    return value
+
+
+def _plain_tree(data: Any) -> Any:
+    """``data`` with every numpy number in its mappings and lists made plain
+    (:func:`plain_number`)."""
+    if isinstance(data, Mapping):
+        return {k: _plain_tree(v) for k, v in data.items()}
+    if isinstance(data, (list, tuple)):
+        return type(data)(_plain_tree(v) for v in data)
+    return plain_number(data)
+
+
 def _scalar(obj: Any, name: str, unit: str) -> tuple[str, Any]:
     """The field's full name and value, or SceneError unless the value is one real number
-    (not a bool, a string, a list, ...)."""
-    value = getattr(obj, name)
+    (not a bool, a string, a list, ...; a numpy number counts as its Python value)."""
+    value = plain_number(getattr(obj, name))
     full = f"{field_name_prefix(obj)}.{name}"
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise SceneError(f"{full} must be a number in {unit}, got {show_value(value)} "
@@ -159,6 +187,8 @@ def field_range(obj: Any, name: str, *, hertz_zone: bool = False
     r = getattr(obj, name)
     if r is None:
         return None
+    if isinstance(r, (list, tuple)):
+        r = [plain_number(v) for v in r]
     where = f"{field_name_prefix(obj)}.{name}"
     if (not isinstance(r, (list, tuple)) or len(r) != 2
             or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in r)):
@@ -485,7 +515,8 @@ class Contact:
         :data:`LENGTH_RANGE`, with ry/rx within 1/:data:`MAX_RADIUS_RATIO` ..
         :data:`MAX_RADIUS_RATIO` (a more slender contact is a line contact).
     length : float or None
-        Effective contact length [m]; line contacts only, used for totals.
+        Effective contact length [m]; line contacts only, the summary gives the
+        load, friction force and heat power over it (``*_total``).
     """
 
     _section = "contact"
@@ -740,7 +771,8 @@ class MeshSpec:
             self._check_file()
         n = self.nodes
         if n is not None:
-            items = [n] if not isinstance(n, (list, tuple)) else list(n)
+            items = [plain_number(n)] if not isinstance(n, (list, tuple)) \
+                else [plain_number(v) for v in n]
             if len(items) not in (1, 2) or any(isinstance(v, bool) or not isinstance(v, int)
                                                 for v in items):
                 raise SceneError(f"mesh.nodes must be an integer (line) or two integers "
@@ -1217,6 +1249,8 @@ class Scene:
         hint = (" (this looks like a bearing file: run `bearing-fem bearing FILE`, or read "
                 "it with bearing_fem.bearing.Bearing.from_toml)"
                 if isinstance(data, Mapping) and "bearing" in data else "")
+        if isinstance(data, Mapping):
+            data = _plain_tree(data)   # numpy numbers (e.g. from np.linspace) as plain ones
         return cls(**sections_from_dict(data, _TABLES, _REQUIRED, "scene", hint))
 
     @classmethod
@@ -1227,7 +1261,7 @@ class Scene:
         ----------
         path : str or Path
             A UTF-8 TOML file (a byte-order mark is accepted); a relative ``mesh.file``
-            in it is relative to the file's folder.
+            in it is relative to the file's folder (and stored as an absolute path).
 
         Returns
         -------
@@ -1239,8 +1273,10 @@ class Scene:
             An unreadable or malformed file, or an invalid scene (see :meth:`from_dict`).
         """
         path = Path(path)
+        # absolute: the scene (stored in summary.json and result.h5) must name the grid
+        # file wherever it is read back, not relative to the folder the solve ran in
         return cls.from_toml_string(read_text_file(path, "scene file"), source=str(path),
-                                    base_dir=path.parent)
+                                    base_dir=path.absolute().parent)
 
     @classmethod
     def from_toml_string(cls, text: str, source: str = "<string>",

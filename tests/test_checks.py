@@ -84,6 +84,10 @@ def test_thermal_reference_viscosity_checked():
     data["thermal"] = {"oil_temperature": 60.0, "exponent": 2.9, "reference_viscosity": 30.0}
     text = _one(Scene.from_dict(data))
     assert text.startswith("thermal.reference_viscosity = 30 Pa s")
+    # beside thermal.reference_viscosity, lubricant.viscosity is not used: no warning on it
+    data["lubricant"]["viscosity"] = 1e-5
+    data["thermal"]["reference_viscosity"] = 0.05
+    assert input_warnings(Scene.from_dict(data)) == []
 
 
 def test_soft_bodies():
@@ -146,6 +150,51 @@ def test_large_contact():
 def test_thick_gap():
     text = _one(_scene(ROLLER, load__force=None, load__gap=5e-4, model__elasticity="rigid"))
     assert "load.gap = 0.0005 m" in text and "0.05 x contact.rx" in text
+
+
+def test_gap_on_an_elastic_line_contact():
+    """The plane-strain displacement is defined up to a constant (that of ln|x - s| in
+    metres): a prescribed gap on a half-space line contact gives a film that depends on
+    the length unit, which the result must say (gap 0.1 um gave h_central 0.92 um)."""
+    text = _one(_scene(ROLLER, load__force=None, load__gap=1e-7))
+    assert "load.gap = 1e-07 m" in text and "no absolute datum" in text, text
+    assert "load.force" in text, "the way out is named"
+    for quiet in (_scene(ROLLER, load__force=None, load__gap=1e-6, model__elasticity="rigid"),
+                  _scene(BALL, load__force=None, load__gap=1e-7)):
+        assert input_warnings(quiet) == [], "rigid lines and elastic points have a datum"
+
+
+def test_range_in_metres_on_a_rigid_scene():
+    """Rigid and prescribed-gap ranges are in hydrodynamic lengths sqrt(2 r h0): a range
+    given in metres spans a sliver of the film (5e-9 N/m carried), said in a warning."""
+    text = _one(_scene(ROLLER, load__force=None, load__gap=1e-6, model__elasticity="rigid",
+                       mesh__x_range=[-0.001, 0.0005]))
+    assert "mesh.x_range = [-0.001, 0.0005]" in text and "sqrt(2 rx h0)" in text, text
+    assert "metres" in text, text
+    ball = _scene(BALL, load__force=None, load__gap=5e-7, mesh__x_range=[-4.0, 2.0],
+                  mesh__y_range=[-0.002, 0.002])
+    assert "mesh.y_range" in _one(ball), "elastic point with a gap: same unit"
+    for quiet in (_scene(ROLLER, load__force=None, load__gap=1e-6, model__elasticity="rigid",
+                         mesh__x_range=[-0.5, 5.0]),   # a starved inlet is physics
+                  _scene(ROLLER, mesh__x_range=[-4.5, 1.5])):
+        assert input_warnings(quiet) == [], input_warnings(quiet)
+
+
+def test_traction_parameter_the_model_does_not_use():
+    """An Eyring stress given with the Newtonian or limiting model (or a limiting stress with
+    the Eyring model) was silently ignored; the generic defaults are not flagged."""
+    text = _one(_scene(ROLLER, traction__model="newtonian", traction__eyring_stress=3e6))
+    assert "traction.eyring_stress = 3e+06 Pa is not used by traction.model = 'newtonian'" \
+        in text, text
+    text = _one(_scene(ROLLER, traction__model="eyring", traction__limiting_slope=0.05,
+                       traction__limiting_shear_stress=1e6))
+    assert "limiting_shear_stress = 1e+06 Pa, traction.limiting_slope = 0.05 are not " \
+           "used by traction.model = 'eyring' (it uses eyring_stress)" in text, text
+    for quiet in (_scene(ROLLER, traction__model="eyring", traction__eyring_stress=3e6),
+                  _scene(ROLLER, traction__model="limiting"),
+                  _scene(ROLLER, traction__model="eyring-limiting",
+                         traction__eyring_stress=8e6, traction__limiting_slope=0.06)):
+        assert input_warnings(quiet) == [], input_warnings(quiet)
 
 
 def test_hot_oil():

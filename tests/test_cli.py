@@ -400,3 +400,55 @@ def test_plot_exit_2_on_missing_or_foreign_file(tmp_path, capsys):
     assert cli.main(["plot", str(foreign)]) == 2
     err = capsys.readouterr().err
     assert "missing.h5" in err and "foreign.h5" in err and "Traceback" not in err
+    # an HDF5 file of another output (a squeeze series' time series): the reason in words,
+    # not h5py's "Unable to synchronously open attribute"
+    import h5py
+    other = tmp_path / "squeeze.h5"
+    with h5py.File(other, "w") as f:
+        f.create_dataset("x", data=[0.0, 1.0])
+    assert cli.main(["plot", str(other)]) == 2
+    err = capsys.readouterr().err
+    assert "not a contact result" in err and "no attribute(s) kind" in err, err
+    assert "synchronously" not in err and "Traceback" not in err, err
+
+
+def test_solve_series_prints_its_warnings(tmp_path, capsys):
+    """A [transient] scene's summary lists its warnings as 'warning' lines, as a single
+    solve's does (docs/cli.md); an elastic series says it has no error estimate."""
+    data = {
+        "title": "elastic squeeze",
+        "contact": {"kind": "point", "rx": 6.35e-3, "ry": 6.35e-3},
+        "materials": {"reduced_modulus": 2.26e11},
+        "lubricant": {"viscosity": 0.0612, "viscosity_law": "constant"},
+        "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": 1e-7},
+        "mesh": {"nodes": [33, 33], "x_range": [-4.0, 4.0], "y_range": [-4.0, 4.0]},
+        "transient": {"amplitude": 0.3, "steps": 4},
+    }
+    out = tmp_path / "out"
+    assert cli.main(["solve", str(_write(tmp_path, data)), "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    lines = [ln for ln in printed.splitlines() if ln.strip().startswith("warning")]
+    saved = json.loads((out / "summary.json").read_text())["warnings"]
+    assert saved and len(lines) == len(saved), (printed, saved)
+    assert any("no error estimate" in ln and "one grid" in ln for ln in lines), printed
+
+
+def test_contact_length_gives_totals(tmp_path, capsys):
+    """contact.length is documented as 'used for totals': the summary of a line contact
+    with a length has the load, friction force and heat power over that length (N, W),
+    and the printed heat power gives the total beside the per-metre value."""
+    data = dict(RIGID_OK, contact={"kind": "line", "rx": 0.01, "length": 0.012})
+    out = tmp_path / "out"
+    assert cli.main(["solve", _write(tmp_path, data), "--out", str(out)]) == 0
+    s = _summary(out)
+    for key, total, unit in (("load", "load_total", "N"),
+                             ("friction_force", "friction_force_total", "N"),
+                             ("heat_power", "heat_power_total", "W")):
+        np.testing.assert_allclose(s[total], s[key] * 0.012, rtol=1e-12,
+                                   err_msg=f"{total} = {key} [per metre] x contact.length")
+        assert s["units"][total] == unit and s["units"][key] == unit + "/m"
+    printed = capsys.readouterr().out
+    assert f"{s['heat_power_total']:.4g} W over contact.length" in printed, printed
+    out2 = tmp_path / "no_length"
+    assert cli.main(["solve", _write(tmp_path, RIGID_OK, "b.toml"), "--out", str(out2)]) == 0
+    assert not [k for k in _summary(out2) if k.endswith("_total")], "no length, no totals"

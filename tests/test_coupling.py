@@ -97,6 +97,63 @@ def test_jaeger_agrees_with_fe_moving_source_at_high_peclet():
                                err_msg="FE moving source vs Jaeger high-Pe integral")
 
 
+def test_flash_temperature_of_a_surface_running_along_minus_x():
+    """A body moving along -x carries its heat towards -x: the Blok maximum of a
+    semi-elliptic band lies at x = -0.652 b, the mirror image of the +x body's (the
+    coupled loop used |u| for both surfaces, so a counter-running surface got the field of
+    one running along +x)."""
+    b = 1e-4
+    x = np.linspace(-1.5 * b, 1.5 * b, 1201)
+    xm = 0.5 * (x[1:] + x[:-1])
+    q = 1e8 * np.sqrt(np.clip(1.0 - (xm / b) ** 2, 0.0, None))
+    forward = coupling.flash_temperature(x, q, x, 46.0, 7850.0, 470.0, 5.0)
+    backward = coupling.flash_temperature(x, q, x, 46.0, 7850.0, 470.0, -5.0)
+    np.testing.assert_allclose(backward, forward[::-1], rtol=1e-12, atol=1e-12,
+                               err_msg="a symmetric band: T(-V)(x) = T(+V)(-x)")
+    np.testing.assert_allclose(x[np.argmax(backward)] / b, -0.652, atol=0.01,
+                               err_msg="Blok maximum 0.652 b downstream of the motion")
+
+
+def test_counter_running_surface_heats_upstream():
+    """End to end: with u2 < 0 the second surface's temperature field peaks at x < 0 and
+    the first surface's at x > 0."""
+    r = bf.solve(_scene(u1=3.0, u2=-0.5))
+    assert r.success, r.message
+    t1 = r.extra_fields["surface_temperature_rise_body1_K"]
+    t2 = r.extra_fields["surface_temperature_rise_body2_K"]
+    assert r.x[np.argmax(t1)] > 0.0 > r.x[np.argmax(t2)], \
+        (r.x[np.argmax(t1)], r.x[np.argmax(t2)])
+
+
+def test_oil_too_thin_for_its_law_is_named_in_thermal_terms():
+    """A Roelands oil of 0.001 Pa s at 40 deg C is 1.9e-5 Pa s at 150 deg C, below the
+    Roelands range: the refusal said 'lubricant.viscosity = 1.9e-05 Pa s is outside ...',
+    a value the file does not hold. It now names the oil temperature and the given value;
+    a temperature reached only during the loop ends it with status 'diverged'."""
+    base = _scene(oil_temperature=150.0, exponent=3.0)
+    thin = replace(base, lubricant=replace(base.lubricant, viscosity=0.001,
+                                           viscosity_law="roelands"))
+    with pytest.raises(SceneError) as err:
+        bf.solve(thin)
+    text = str(err.value)
+    assert text.startswith("thermal.oil_temperature = 150 deg C") and \
+        "lubricant.viscosity = 0.001 Pa s at 40 deg C" in text, text
+
+
+def test_leaving_the_law_during_the_loop_is_diverged(monkeypatch):
+    calls = []
+    real = coupling.contact_viscosity
+
+    def viscosity(scene, temperature):
+        calls.append(temperature)
+        return real(scene, temperature) if len(calls) == 1 else 1e-9   # below 1e-6 Pa s
+
+    monkeypatch.setattr(coupling, "contact_viscosity", viscosity)
+    r = bf.solve(_scene())
+    assert r.status == "diverged" and not r.success, r.message
+    assert "thermal iteration 2" in r.message and "eta0 = 1e-09 Pa s" in r.message, r.message
+
+
 # ------------------------------------------------------------------ coupled solve
 @pytest.fixture(scope="module")
 def eyring_result():
@@ -121,6 +178,27 @@ def test_coupled_solve_converges_to_a_fixed_point(eyring_result):
     n_it = r.summary()["thermal_iterations"]
     assert isinstance(n_it, int) and n_it >= 1, \
         f"the thermal loop count is a whole number in the summary, got {n_it!r}"
+
+
+def test_dimensionless_groups_use_the_solved_contact_viscosity(eyring_result):
+    """The Moes groups of a thermal result describe the contact that was solved: eta0 at
+    the contact temperature, not lubricant.viscosity (the value at the reference
+    temperature, 40 deg C here, or unused when thermal.reference_viscosity is given)."""
+    from bearing_fem import units
+    r = eyring_result
+    q, s = r.quantities, r.scene
+    groups = r.summary()["dimensionless"]
+    want = units.moes_line(s.load.force, s.contact.rx, s.e_prime, q["contact_viscosity"],
+                           s.kinematics.mean_speed, q["contact_piezo"])
+    for key in ("M", "L", "U"):
+        np.testing.assert_allclose(groups[key], want[key], rtol=1e-12,
+                                   err_msg=f"{key} at the contact viscosity, not eta(40 C)")
+    ref = replace(s, thermal=replace(s.thermal, reference_viscosity=0.05),
+                  lubricant=replace(s.lubricant, viscosity=1e-3))
+    r2 = replace(r, scene=ref)
+    np.testing.assert_allclose(r2.summary()["dimensionless"]["M"], groups["M"], rtol=1e-12,
+                               err_msg="lubricant.viscosity is unused beside "
+                               "thermal.reference_viscosity; the groups do not depend on it")
 
 
 def test_energy_heat_into_bodies_equals_heat_power(eyring_result):

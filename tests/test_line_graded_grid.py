@@ -1,6 +1,8 @@
 """Graded line grids (``mesh.file`` with non-uniform nodes) and their study."""
 from __future__ import annotations
 
+import numpy as np
+
 
 def rows_auto(folder):
     import json
@@ -53,8 +55,10 @@ def test_a_repeated_node_in_a_line_grid_file_is_refused(tmp_path):
             "kinematics": {"u1": 1.0, "u2": 1.0}, "load": load, "model": model,
             "mesh": {"file": str(path)}})
         with pytest.raises(SceneError, match=r"mesh.file .*dup.vtu': the nodes must be "
-                                             r"distinct; x = .* appears 2 times"):
+                                             r"distinct; x = .* appears 2 times") as err:
             bf.solve(scene)
+        assert "np.float64" not in str(err.value), \
+            f"the value as a number, not a numpy repr: {err.value}"
 
 
 def test_rigid_barus_line_beyond_its_load_limit_is_no_solution():
@@ -75,8 +79,40 @@ def test_rigid_barus_line_beyond_its_load_limit_is_no_solution():
     over = bf.solve(scene(1e5))
     assert over.status == "no_solution" and not over.success, over.message
     assert "exceeds what the rigid Barus contact can carry" in over.message
-    assert 2e-8 * over.pressure.max() > RIGID_BARUS_RESOLVABLE_ALPHA_P
-    assert over.summary()["error_estimate"] is None
+    assert "alpha p = " in over.message and RIGID_BARUS_RESOLVABLE_ALPHA_P > 0
+    # the documented no_solution field: the reduced pressure q (alpha q -> 1), not p
+    np.testing.assert_allclose(2e-8 * over.pressure.max(), 1.0, rtol=1e-12,
+                               err_msg="no_solution holds the reduced pressure q")
+    s = over.summary()
+    assert s["error_estimate"] is None and "p_max" not in s, "no film numbers"
+
+
+def test_failed_rigid_barus_line_above_the_load_limit_is_no_solution():
+    """A rigid Barus roller at a realistic load (1e5 N/m, 5 m/s) cannot exist: the
+    largest load of the contact is 21.5 kN/m. Newton ran out of its budget and said
+    'budget_exhausted' (a larger budget would not help); the result now says why."""
+    import bearing_fem as bf
+    from bearing_fem import analytic
+
+    limit, h_limit = analytic.martin_barus_load_limit(0.008, 0.04, 5.0, 2e-8)
+    np.testing.assert_allclose(
+        analytic.martin_existence_ratio(h_limit, 0.008, 0.04, 5.0, piezo=2e-8), 1.0,
+        rtol=1e-12, err_msg="the limit lies where alpha q_max = 1")
+    x = np.linspace(-3e-3, 3e-4, 600001)     # +-100 sqrt(2 R h0): the whole film
+    below = np.trapezoid(analytic.martin_pressure(x, 1.001 * h_limit, 0.008, 0.04, 5.0,
+                                                  2e-8), x)
+    assert 0.9 * limit < below < limit, f"the load rises to the limit: {below}, {limit}"
+    scene = bf.Scene.from_dict({
+        "contact": {"kind": "line", "rx": 0.008},
+        "lubricant": {"viscosity": 0.04, "piezo": 2e-8},
+        "kinematics": {"u1": 5.0, "u2": 5.0}, "load": {"force": 1e5},
+        "model": {"elasticity": "rigid"}, "solver": {"iteration_budget": 40}})
+    r = bf.solve(scene)
+    assert r.status == "no_solution" and not r.success, r.message
+    assert f"{limit:.4g} N/m" in r.message and "budget_exhausted" in r.message, r.message
+    assert 2e-8 * r.pressure.max() <= 1.0, "the reduced pressure q, bounded by 1/alpha"
+    ok = bf.solve(bf.Scene.from_dict(dict(scene.to_dict(), load={"force": 0.5 * limit})))
+    assert ok.status == "converged", ok.message
 
 
 def _moes_line(mesh=None, **over):

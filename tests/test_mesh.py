@@ -149,3 +149,29 @@ def test_outlet_graded_nodes():
                           ({"nodes": 11, "x_range": (1.0, -1.0)}, "x_range")):
         with pytest.raises(ValueError, match=match):
             outlet_graded_nodes(**kwargs)
+
+
+def test_relative_grid_file_is_stored_so_that_the_result_reads_back(tmp_path, monkeypatch):
+    """A scene read as 'scene.toml' from its own folder with mesh.file = 'grid.vtu' keeps
+    the grid's absolute path: the scene stored in result.h5 (and summary.json) solves again
+    from any other folder (it held 'grid.vtu', relative to the folder of the first run)."""
+    import bearing_fem as bf
+    from bearing_fem.io import read_result
+
+    work = tmp_path / "work"
+    work.mkdir()
+    from skfem import MeshLine
+
+    bm.write_mesh(MeshLine(np.linspace(-50.0, 5.0, 201)), work / "grid.vtu")
+    (work / "scene.toml").write_text(
+        '[contact]\nkind = "line"\nrx = 0.01\n[lubricant]\nviscosity = 0.05\n'
+        '[kinematics]\nu1 = 2.0\nu2 = 2.0\n[load]\ngap = 1e-6\n[model]\n'
+        'elasticity = "rigid"\n[mesh]\nfile = "grid.vtu"\n', encoding="utf-8")
+    monkeypatch.chdir(work)
+    first = bf.solve(bf.Scene.from_toml("scene.toml"))
+    bf.export(first, "out")
+    monkeypatch.chdir(tmp_path)
+    again = bf.solve(bf.Scene.from_toml_string(read_result(work / "out")["scene_toml"]))
+    assert first.success and again.success, (first.message, again.message)
+    np.testing.assert_allclose(again.pressure, first.pressure, rtol=1e-12,
+                               err_msg="the stored scene is the scene that was solved")

@@ -3,6 +3,7 @@ never dress up a failure."""
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -266,3 +267,18 @@ def test_readme_ball_line_plot_zoomed(readme_ball, tmp_path, figures):
     lo, hi = readme_ball.x[0] / a_x, readme_ball.x[-1] / a_x
     assert lo < plot.LINE_WINDOW[0], "the default domain reaches further into the inlet"
     assert ax.get_xlim() == pytest.approx((plot.LINE_WINDOW[0], min(hi, plot.LINE_WINDOW[1])))
+
+
+def test_line_plot_of_an_even_grid_names_the_row_it_draws(point_result, tmp_path, figures):
+    """On a grid without a node row at y = 0 (even ny) the line plot draws the nearest row
+    and says so, instead of calling it the centre line y = 0."""
+    plot_result(point_result, tmp_path / "odd.png", kind="line")
+    assert "centre line y = 0" in figures.texts()
+    scene = replace(point_result.scene, mesh=replace(point_result.scene.mesh, nodes=(41, 40)))
+    even = solve_point(scene)
+    assert even.success and not np.any(even.y == 0.0), even.message
+    plot_result(even, tmp_path / "even.png", kind="line")
+    text = figures.texts()
+    assert "centre line y = 0" not in text and "no node row at y = 0" in text, text
+    dy = float(np.min(np.abs(even.y))) * 1e3
+    assert f"y = {dy:.3g} mm" in text or f"y = {-dy:.3g} mm" in text, text

@@ -438,6 +438,31 @@ def test_bases_are_valid(base):
     Scene.from_dict(_base(base))
 
 
+def test_numpy_numbers_are_numbers():
+    """Values from np.linspace / np.arange (np.float32, np.int64, ...) are accepted as the
+    numbers they hold and stored as plain Python numbers (they were refused: 'must be a
+    number in Pa s, got np.float32(0.05)'); a numpy bool is still no number."""
+    import numpy as np
+
+    from bearing_fem.scene import Lubricant, MeshSpec
+
+    data = _base("point")
+    data["lubricant"]["viscosity"] = np.float32(0.04)
+    data["kinematics"]["u1"] = np.int64(1)
+    data["mesh"] = {"nodes": [np.int64(65), np.int32(65)],
+                    "x_range": [np.float64(-20.0), np.int64(5)]}
+    scene = Scene.from_dict(data)
+    assert type(scene.lubricant.viscosity) is float and type(scene.kinematics.u1) is float
+    assert scene.mesh.nodes == (65, 65) and all(type(n) is int for n in scene.mesh.nodes)
+    assert scene.mesh.x_range == (-20.0, 5.0)
+    assert Scene.from_toml_string(scene_to_toml(scene)) == scene, "round trip"
+    assert type(Lubricant(viscosity=np.float32(0.05)).viscosity) is float
+    assert MeshSpec(nodes=np.int64(401)).nodes == 401
+    data["mesh"] = {"nodes": [np.bool_(True), 65]}
+    with pytest.raises(SceneError, match="mesh.nodes"):
+        Scene.from_dict(data)
+
+
 def test_line_base_solves_with_exit_0(tmp_path):
     """Positive control through the command line (a cheap rigid linear solve)."""
     path = tmp_path / "ok.toml"

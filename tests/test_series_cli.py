@@ -83,3 +83,16 @@ def test_failed_series_writes_its_status_and_exits_3(tmp_path):
     s = json.loads((out / "summary.json").read_text())
     assert s["status"] == "no_solution" and s["success"] is False
     assert all(v is None for v in s["p_max"]), "no pressure where no solution exists"
+
+
+def test_solve_refuses_a_series_scene_instead_of_ignoring_its_transient_section():
+    """bf.solve on a [transient] scene returned the steady solution at the mean gap,
+    silently dropping the series; it now says to use solve_series (the command line
+    runs the series)."""
+    import pytest
+
+    scene = bf.Scene.from_dict(RIGID)
+    with pytest.raises(bf.SceneError, match=r"\[transient\].*solve_series"):
+        bf.solve(scene)
+    steady = bf.solve(scene.replace(transient=None))
+    assert steady.success, "without the section: the steady solve at the mean gap"

@@ -117,7 +117,8 @@ def test_barus_line_beyond_the_double_precision_viscosity(load_study):
     assert 0.002 < s["friction_coefficient"] < 0.15, "eyring-limiting: a physical friction"
     eta = r.extra_fields["viscosity_Pa_s"]
     assert np.all(np.isfinite(eta)) and eta.max() == np.finfo(float).max
-    assert any("viscosity overflows double precision" in w for w in r.warnings), r.warnings
+    assert any("viscosity overflows double precision" in w and "Barus" in w
+               and "reduced pressure, is not affected" in w for w in r.warnings), r.warnings
     d = scene.to_dict()
     d["traction"] = {"model": "newtonian"}
     newt = bf.solve(bf.Scene.from_dict(d))
@@ -333,3 +334,18 @@ def test_point_far_above_the_checked_map_fails_saying_what_was_tried():
     assert "the narrower domain x in [-2.5, 1.2] a_x" in res.message, res.message
     assert res.pressure.shape == (97, 97), "a failure stays on the requested grid"
     assert res.newton_iterations <= _slow_ball(0.001).solver.iteration_budget
+
+
+def test_status_message_counts_continuation_steps_in_words():
+    """'continuation in alpha (1 step)', not '(1 steps)' (outcome_text, every solve's
+    message)."""
+    from types import SimpleNamespace
+
+    from bearing_fem.contacts.driver import DriverOutcome, outcome_text
+
+    solver = SimpleNamespace(tolerance=1e-8, max_iterations=50)
+    for n, want in ((1, "(1 step)"), (3, "(3 steps)")):
+        out = DriverOutcome(z=np.zeros(1), problem=None, status="converged", iterations=9,
+                            labels=["65x65 nodes"], continuation_steps=n)
+        text = outcome_text(out, 1e-10, solver, budget=None, parameter="alpha")
+        assert f"continuation in alpha {want}" in text, text

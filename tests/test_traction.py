@@ -143,3 +143,29 @@ def test_film_of_a_few_molecular_layers_is_flagged():
         nums, notes = film_numbers(h, h.copy(), 4.0 * MOLECULAR_FILM, p, 1.0, x)
         assert nums["h_min"] == h_min
         assert any("molecular" in n for n in notes) == flagged, (h_min, notes)
+
+
+def test_viscosity_overflow_warning_names_the_law_and_its_effect():
+    """The clipped-viscosity warning says which law overflowed and whether the solve used
+    that viscosity: a rigid Roelands film (Newton on the pointwise viscosity) is not
+    'Barus ... in the reduced pressure, not affected'."""
+    import bearing_fem as bf
+
+    eta = np.array([1.0, np.inf])
+    clipped, barus = post.reported_viscosity(eta, law="barus", reduced=True)
+    assert clipped[1] == np.finfo(float).max and len(barus) == 1
+    assert "Barus at alpha p > 709.8" in barus[0] and "not affected" in barus[0], barus
+    _, roe = post.reported_viscosity(eta, law="roelands", reduced=False)
+    assert "Roelands law" in roe[0] and "Barus" not in roe[0], roe
+    assert "not affected" not in roe[0] and "solved with this viscosity" in roe[0], roe
+    assert post.reported_viscosity(np.ones(3), law="roelands", reduced=False)[1] == []
+    # end to end: a rigid Roelands gap too narrow for a solution (0.2 s)
+    scene = bf.Scene.from_dict({
+        "contact": {"kind": "line", "rx": 0.008},
+        "lubricant": {"viscosity": 0.04, "piezo": 2e-8, "viscosity_law": "roelands"},
+        "kinematics": {"u1": 5.0, "u2": 5.0}, "load": {"gap": 3e-7},
+        "model": {"elasticity": "rigid"}, "solver": {"iteration_budget": 100}})
+    r = bf.solve(scene)
+    over = [w for w in r.warnings if "overflows double precision" in w]
+    assert not r.success and over, (r.status, r.warnings)
+    assert "Roelands law" in over[0] and "not affected" not in over[0], over

@@ -140,6 +140,35 @@ def test_zero_amplitude_gives_steady_solution_every_step():
     np.testing.assert_allclose(series.h_central, steady.quantities["h_central"], rtol=1e-12)
 
 
+def test_series_warnings_are_said_once_and_truly():
+    """A series' summary names each finding once and gives the true reason for the
+    missing error estimate (its instants share one grid by design), not "no coarser grid
+    of this solve converged", repeated at every instant."""
+    from types import SimpleNamespace
+
+    from bearing_fem.contacts.series import series_warnings
+
+    rs = [SimpleNamespace(warnings=w) for w in (
+        ["h_min lies between the nodes (3.15e-07 m, 1.93% below ...)", "generic traction"],
+        ["generic traction"],
+        ["h_min lies between the nodes (2.85e-07 m, 2.4% below ...)", "generic traction"])]
+    got = series_warnings(np.array([0.0, 1e-5, 2e-5]), rs)
+    assert got == ["h_min lies between the nodes (3.15e-07 m, 1.93% below ...) (at t = 0 s; "
+                   "2 of 3 instants, with their own numbers)", "generic traction"], got
+
+    series = solve_elastic_squeeze_series(scene(cavitation="reynolds"), eps=0.3, n_steps=4)
+    assert series.status == "converged", series.message
+    assert all(r.error_estimate is None for r in series.results), \
+        "no estimate by design: the instants share one grid"
+    warns = series.summary()["warnings"]
+    assert not any("no coarser grid of this solve converged" in w for w in warns), warns
+    assert sum(w.startswith("no error estimate") for w in warns) == 1, warns
+    assert "solved on one grid" in warns[-1], warns
+    import re
+    masked = [re.sub(r"[-+]?[0-9.]+(e[-+]?[0-9]+)?", "#", w) for w in warns]
+    assert len(masked) == len(set(masked)), f"a finding repeated with other numbers: {warns}"
+
+
 # ---------------------------------------------------------------------------------------
 # (d) consistency: steady gap solve vs the load-controlled solver; exact time Jacobian
 # ---------------------------------------------------------------------------------------

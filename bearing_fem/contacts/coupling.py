@@ -104,7 +104,19 @@ def flash_temperature(x_nodes: np.ndarray, q_elements: np.ndarray, x_eval: np.nd
                       conductivity: float, density: float, heat_capacity: float,
                       speed: float, *, source_model: str = "jaeger") -> np.ndarray:
     """Surface temperature rise [K] at ``x_eval`` [m] of a body moving at ``speed`` [m/s]
-    under the element flux ``q_elements`` [W/m^2] (``"jaeger"`` closed form or ``"fe"``)."""
+    under the element flux ``q_elements`` [W/m^2] (``"jaeger"`` closed form or ``"fe"``).
+
+    ``speed`` is the body's surface velocity along x: a body moving along -x (negative
+    speed, e.g. a surface running against the entrainment) carries its heat towards -x,
+    so its field is that of the mirrored problem (x -> -x) at the speed's magnitude.
+    ``x_nodes`` [m] ascend; ``q_elements`` has one value per element between them.
+    """
+    if speed < 0.0:
+        xn = np.asarray(x_nodes, dtype=float)
+        mirrored = flash_temperature(-xn[::-1], np.asarray(q_elements, dtype=float)[::-1],
+                                     -np.asarray(x_eval, dtype=float), conductivity, density,
+                                     heat_capacity, -speed, source_model=source_model)
+        return mirrored
     if source_model == "jaeger":
         return jaeger_surface_temperature(x_nodes, q_elements, x_eval, conductivity, density,
                                           heat_capacity, speed)
@@ -150,6 +162,7 @@ def solve_thermal(scene: Scene) -> Result:
                          f"contact.kind = {scene.contact.kind!r}")
     th = scene.thermal
     kin = scene.kinematics
+    velocities = (kin.u1, kin.u2)     # signed: a surface may run along -x
     speeds = (abs(kin.u1), abs(kin.u2))
     if min(speeds) <= 0.0:
         raise SceneError(f"model.thermal = 'patch' (moving-source flash temperature) needs both "
@@ -187,10 +200,27 @@ def solve_thermal(scene: Scene) -> Result:
             break
         eta0 = contact_viscosity(scene, T)
         alpha = contact_piezo(scene, T)
-        lub = replace(scene.lubricant, viscosity=eta0, piezo=alpha)
         inner = replace(sol, iteration_budget=left_its, time_limit=None if sol.time_limit
                         is None else sol.time_limit - elapsed)
-        iso = replace(scene, model=iso_model, lubricant=lub, thermal=None, solver=inner)
+        try:
+            lub = replace(scene.lubricant, viscosity=eta0, piezo=alpha)
+            iso = replace(scene, model=iso_model, lubricant=lub, thermal=None, solver=inner)
+        except SceneError as exc:
+            # the oil's laws leave the range of the viscosity law at this temperature:
+            # say so in the user's terms (not as the value of lubricant.viscosity)
+            src = (f"thermal.reference_viscosity = {th.reference_viscosity:.4g} Pa s"
+                   if th.reference_viscosity is not None else
+                   f"lubricant.viscosity = {scene.lubricant.viscosity:.4g} Pa s")
+            where = (f"at {T:.4g} deg C the oil has eta0 = {eta0:.4g} Pa s and alpha = "
+                     f"{alpha:.4g} 1/Pa ({src} at {th.reference_temperature:.4g} deg C), "
+                     f"refused as the isothermal scene's: {exc}")
+            if it == 1:   # already at the oil temperature: the input is out of range
+                raise SceneError(f"thermal.oil_temperature = {t_oil:.4g} deg C: {where}") \
+                    from None
+            status = "diverged"
+            msg = (f"diverged: thermal iteration {it}: {where}; the last isothermal solve "
+                   "is kept")
+            break
         model = LineModel(iso)
         res = solve_newton_model(model, iso, time.perf_counter())
         newton_its += res.newton_iterations
@@ -203,7 +233,8 @@ def solve_thermal(scene: Scene) -> Result:
         q_e, _ = model.heat_flux(res.pressure, res.h0)
         xn = res.x
         temps = [flash_temperature(xn, fractions[i] * q_e, xn, lam[i], rho[i], cap[i],
-                                   speeds[i], source_model=th.source_model) for i in range(2)]
+                                   velocities[i], source_model=th.source_model)
+                 for i in range(2)]
         p_pos = np.maximum(res.pressure, 0.0)
         wts = np.gradient(xn) * p_pos
         mean_rise = float(np.mean([wts @ T_i for T_i in temps]) / wts.sum())

@@ -64,10 +64,15 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
     ------
     SceneError
         ``scene`` is not a Scene, or asks for something the package does not solve
-        (e.g. Dirichlet end pressures of a point contact).
+        (e.g. Dirichlet end pressures of a point contact), or has a ``[transient]``
+        section (a squeeze series: :func:`solve_series`).
     """
     if not isinstance(scene, Scene):
         raise SceneError(f"solve() needs a Scene, got {type(scene).__name__}")
+    if scene.transient is not None:
+        raise SceneError("the scene has a [transient] section (a squeeze series): solve it "
+                         "with bearing_fem.solve_series(scene), or remove the section "
+                         "(transient=None) for the steady solve at the mean gap load.gap")
     if boundary_pressure is not None and (scene.contact.kind != "line"
                                           or scene.model.thermal != "none"):
         raise SceneError("boundary_pressure (Pa) applies to isothermal line contacts only")

@@ -464,7 +464,7 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
            iterations: int = 0, linear_solves: int = 0, history: Sequence[float] = (),
            continuation_steps: Sequence[tuple[float, str, int]] = (),
            coarse: Sequence[Solution] = (), estimate_note: str = "",
-           warnings: Sequence[str] = ()) -> Result:
+           warnings: Sequence[str] = (), estimate: bool = True) -> Result:
     """Assemble the :class:`~bearing_fem.result.Result` of a solve.
 
     Parameters
@@ -487,14 +487,17 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
         Appended to the error estimate's ``method`` (e.g. which levels were used).
     warnings : sequence of str
         Warnings to report besides those of the solution and the estimate.
+    estimate : bool
+        False when the solve makes no error estimate by design (the instants of an
+        elastic series share one grid): no estimate, and no warning that one is missing.
     """
     success = status in SUCCESS_STATUSES
     notes = list(warnings) + list(solution.warnings)
-    estimate = None
-    if success and solution.quantities:
-        estimate = post.error_estimate([c.quantities for c in coarse] + [solution.quantities],
-                                       note=estimate_note)
-        notes += post.estimate_warnings(estimate)
+    error_estimate = None
+    if estimate and success and solution.quantities:
+        error_estimate = post.error_estimate(
+            [c.quantities for c in coarse] + [solution.quantities], note=estimate_note)
+        notes += post.estimate_warnings(error_estimate)
     return Result(success=success, status=status, message=message, scene=scene,
                   x=solution.x, y=solution.y, pressure=solution.pressure,
                   film=solution.film, h0=float(solution.h0),
@@ -503,7 +506,7 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
                   wall_time_s=time.perf_counter() - t0,
                   continuation=list(continuation_steps),
                   extra_fields=dict(solution.extra_fields),
-                  warnings=_unique(notes), error_estimate=estimate,
+                  warnings=_unique(notes), error_estimate=error_estimate,
                   traction_model=solution.traction_model)
 
 
@@ -522,7 +525,8 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
     ``parameter``), residual, and what was spent when the budget ran out."""
     note = ""
     if outcome.continuation_steps:
-        note = f", continuation in {parameter} ({outcome.continuation_steps} steps)"
+        n = outcome.continuation_steps
+        note = f", continuation in {parameter} ({n} step{'' if n == 1 else 's'})"
     grids = "[" + ", ".join(lb.removesuffix(" nodes") for lb in outcome.labels) + "]"
     for lb in outcome.restarts:
         note += f"; {lb} failed, the sequence started again one grid finer"

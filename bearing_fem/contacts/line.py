@@ -658,7 +658,7 @@ def line_setup(scene: Scene, nodes: int | None = None,
         repeated = np.flatnonzero(np.diff(x_file) <= 0.0)
         if repeated.size:
             raise SceneError(f"mesh.file {scene.mesh.file!r}: the nodes must be distinct; "
-                             f"x = {x_file[repeated[0]]!r} (in the units of mesh.x_range) "
+                             f"x = {float(x_file[repeated[0]])!r} (in the units of mesh.x_range) "
                              f"appears {int(np.sum(x_file == x_file[repeated[0]]))} times")
         xs = every_other(x_file, nodes or x_file.size) * x_unit
         disc = LineDiscretisation.from_nodes(xs)  # graded nodes allowed (any model)
@@ -924,7 +924,9 @@ class LineModel:
         if outlet is not None:
             q["outlet_position"] = outlet
             q["h_outlet"] = float(np.interp(outlet, disc.x, h_nodes))
-        out.extra_fields["viscosity_Pa_s"], more = reported_viscosity(problem.flux.viscosity(p))
+        out.extra_fields["viscosity_Pa_s"], more = reported_viscosity(
+            problem.flux.viscosity(p), law=scene.lubricant.viscosity_law,
+            reduced=problem.uses_reduced)
         out.warnings += more
         return out
 
@@ -1028,7 +1030,8 @@ def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = 
     model = LineModel(scene, bp)
     if is_linear(scene):
         return solve_linear_model(model, scene, t0)
-    return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress))
+    return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress),
+                                    end_pressures=any(v != 0.0 for v in bp))
 
 
 #: ``mesh.grading = "outlet"``: the uniform grid whose solution locates the outlet spike
@@ -1217,27 +1220,60 @@ def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
 #: to double precision (exp(-36) = 2e-16): a rigid Barus solution there sits at Kapitsa's
 #: existence limit alpha q_max = 1, its pressure set by rounding, not by the equations.
 RIGID_BARUS_RESOLVABLE_ALPHA_P = 36.0
+#: A failed rigid Barus solve of a load above this multiple of the largest load the
+#: contact can carry (:func:`bearing_fem.analytic.martin_barus_load_limit`, on an infinite
+#: inlet) is reported as no solution; the margin covers the discretisation of the limit.
+RIGID_BARUS_LOAD_MARGIN = 1.1
 
 
-def rigid_barus_beyond_limit(result: Result) -> Result:
-    """A converged rigid Barus solve of a load (not a gap) whose pressure peak lies beyond
-    :data:`RIGID_BARUS_RESOLVABLE_ALPHA_P` is no solution: the load exceeds what the
-    rigid piezo-viscous contact can carry (Kapitsa: alpha q_max < 1). Other results are
-    returned unchanged."""
+def rigid_barus_beyond_limit(result: Result, *, end_pressures: bool = False) -> Result:
+    """A rigid Barus solve of a load (not a gap) beyond what the contact can carry is no
+    solution (Kapitsa: alpha q_max < 1), with the reduced pressure q in its fields:
+
+    - a converged solve whose pressure peak lies beyond
+      :data:`RIGID_BARUS_RESOLVABLE_ALPHA_P` (a one-node spike set by rounding);
+    - a failed solve (incompressible, Reynolds outlet, zero end pressures) of a load
+      above :data:`RIGID_BARUS_LOAD_MARGIN` times the largest load of Martin's cylinder
+      (:func:`bearing_fem.analytic.martin_barus_load_limit`), which no iteration count
+      could have reached.
+
+    Other results are returned unchanged. ``end_pressures`` is True when the solve
+    imposed non-zero end pressures (the limit does not apply then).
+    """
+    from ..analytic import martin_barus_load_limit
+
     scene = result.scene
     lub = scene.lubricant
-    if not (result.success and scene.model.elasticity == "rigid"
-            and scene.load.force is not None and lub.viscosity_law == "barus"
-            and lub.effective_piezo > 0.0):
+    if not (scene.model.elasticity == "rigid" and scene.load.force is not None
+            and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
+            and result.status != "no_solution"):
         return result
-    alpha_p = lub.effective_piezo * float(np.max(result.pressure))
-    if alpha_p <= RIGID_BARUS_RESOLVABLE_ALPHA_P:
-        return result
-    message = (f"no_solution: load.force = {scene.load.force:.4g} N/m exceeds what the rigid "
-               f"Barus contact can carry: the converged discrete pressure peaks at alpha p = "
-               f"{alpha_p:.4g} (> {RIGID_BARUS_RESOLVABLE_ALPHA_P:g}), where the reduced "
-               "pressure q = (1 - exp(-alpha p))/alpha equals 1/alpha to double precision: "
-               "Kapitsa's existence limit alpha q_max < 1 (docs/theory.md). Lower the load, "
-               "give the gap (load.gap) instead, or model the elasticity")
+    alpha, force = lub.effective_piezo, scene.load.force
+    if result.success:
+        alpha_p = alpha * float(np.max(result.pressure))
+        if alpha_p <= RIGID_BARUS_RESOLVABLE_ALPHA_P:
+            return result
+        why = (f"the converged discrete pressure peaks at alpha p = {alpha_p:.4g} (> "
+               f"{RIGID_BARUS_RESOLVABLE_ALPHA_P:g}), where the reduced pressure "
+               "q = (1 - exp(-alpha p))/alpha equals 1/alpha to double precision")
+    else:
+        if (end_pressures or lub.density != "incompressible"
+                or scene.model.cavitation != "reynolds"):
+            return result
+        limit, h_limit = martin_barus_load_limit(scene.contact.rx, lub.viscosity,
+                                                 scene.kinematics.mean_speed, alpha)
+        if force <= RIGID_BARUS_LOAD_MARGIN * limit:
+            return result
+        why = (f"the largest load of the rigid Barus cylinder is {limit:.4g} N/m, at the "
+               f"gap h0 = {h_limit:.4g} m where alpha q_max = 1 (Martin's film with the "
+               f"Reynolds outlet; the solve stopped with status {result.status} after "
+               f"{result.newton_iterations} Newton iterations)")
+    message = (f"no_solution: load.force = {force:.4g} N/m exceeds what the rigid "
+               f"Barus contact can carry: {why}: Kapitsa's existence limit alpha q_max < 1 "
+               "(docs/theory.md). Lower the load, give the gap (load.gap) instead, or "
+               "model the elasticity. The pressure field holds the reduced pressure q of "
+               "the last iterate instead.")
+    reduced = -np.expm1(-alpha * np.maximum(result.pressure, 0.0)) / alpha
     return replace(result, success=False, status="no_solution", message=message,
-                   error_estimate=None)
+                   pressure=reduced, quantities={}, error_estimate=None,
+                   traction_model=None)

@@ -1333,7 +1333,9 @@ class PointModel:
         q.update(numbers)
         out.traction_model = d.shear["model"]
         out.warnings += notes + more
-        eta, more = reported_viscosity(problem.flux.viscosity(p).reshape(grid.shape))
+        eta, more = reported_viscosity(problem.flux.viscosity(p).reshape(grid.shape),
+                                       law=scene.lubricant.viscosity_law,
+                                       reduced=problem.uses_reduced)
         out.extra_fields["viscosity_Pa_s"] = eta
         out.warnings += more
         if self.elastic:

@@ -9,6 +9,7 @@ written to files by :func:`bearing_fem.io.export_series` (VTU + PVD, XDMF/HDF5).
 from __future__ import annotations
 
 import math
+import re
 import time
 from dataclasses import dataclass
 from dataclasses import replace as dc_replace
@@ -52,6 +53,10 @@ class SqueezeSeries:
     results: list
     scene: Any = None
 
+    #: A warning of the whole series when its instants carry no error estimate (each
+    #: rigid instant has its own; the elastic series overrides this).
+    ESTIMATE_NOTE = ""
+
     @property
     def statuses(self) -> list[str]:
         return [r.status for r in self.results]
@@ -83,9 +88,9 @@ class SqueezeSeries:
             return [number_or_none(r.quantities.get(key)) if r.success else None
                     for r in self.results]
 
-        warnings: list[str] = []
-        for r in self.results:
-            warnings += [w for w in r.warnings if w not in warnings]
+        warnings = series_warnings(self.times, self.results)
+        if self.ESTIMATE_NOTE and self.results:
+            warnings.append(self.ESTIMATE_NOTE)
         return {
             "status": self.status, "success": bool(self.success), "message": self.message,
             "kind": "squeeze series", "scheme": getattr(self, "scheme", "quasi-steady"),
@@ -103,6 +108,43 @@ class SqueezeSeries:
             "version": VERSION,
             "scene": None if self.scene is None else self.scene.to_dict(),
         }
+
+
+#: A number in a warning's text (1, 0.5, 3.15e-07, 1.93%).
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def series_warnings(times: np.ndarray, results: list) -> list[str]:
+    """The warnings of a series' instants, each kind once.
+
+    Warnings that differ only in their numbers (the same finding at several instants,
+    e.g. an unresolved outlet constriction) are one entry: the first instant's text, its
+    time and the number of instants that have it.
+
+    Parameters
+    ----------
+    times : ndarray
+        t [s] of each instant.
+    results : list of Result
+        One per instant, in the order of ``times``.
+
+    Returns
+    -------
+    list of str
+    """
+    groups: dict[str, list] = {}
+    for t, r in zip(times, results):
+        for w in r.warnings:
+            key = _NUMBER.sub("#", w)
+            if key in groups:
+                groups[key][2] += 1
+                groups[key][3] = groups[key][3] or w != groups[key][0]
+            else:
+                groups[key] = [w, float(t), 1, False]
+    n = len(results)
+    return [first if not differ else
+            f"{first} (at t = {t:.6g} s; {count} of {n} instants, with their own numbers)"
+            for first, t, count, differ in groups.values()]
 
 
 def solve_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = None,

@@ -286,6 +286,10 @@ class ElasticSqueezeSeries(SqueezeSeries):
     n_planned: int = 0
     failure: Result | None = None
 
+    ESTIMATE_NOTE = ("no error estimate: the instants of an elastic series are solved on one "
+                     "grid, so their discretisation error is unknown; compare with a series "
+                     "on a finer mesh (mesh.nodes)")
+
     @property
     def success(self) -> bool:
         return self.status == "converged"
@@ -455,7 +459,7 @@ def _step_result(scene, model: ElasticGapModel, problem: TransientPointProblem,
     msg = outcome_message(status, iterations, resid, scene.solver.tolerance,
                           prefix=f"{what}: ")
     res = finish(scene, model.solution(problem, z), status=status, message=msg, t0=t0,
-                 iterations=iterations, history=history)
+                 iterations=iterations, history=history, estimate=False)
     res.quantities["gmres_iterations"] = float(problem.linear_iterations)
     return res
 
