@@ -377,3 +377,67 @@ def test_solve_quiet_prints_nothing(tmp_path, capsys):
     assert main(["solve", str(scene), "--out", str(tmp_path / "out"), "--quiet"]) == 0
     assert capsys.readouterr() == ("", "")
     assert (tmp_path / "out" / "summary.json").is_file()
+
+
+CLIENT_SCRIPT = '''
+import os, sys, time
+from pathlib import Path
+from bearing_fem.scene import Scene
+from bearing_fem.sweep import Case, execute
+from bearing_fem.sweep.execute import PoolExecutor, Task
+
+def slow(task):
+    Path(sys.argv[1], f"{os.getpid()}.pid").write_text("")
+    time.sleep(2.0)
+    return {"status": "linear"}
+
+if __name__ == "__main__":
+    execute.run_task = slow
+    scene = Scene.from_dict({"contact": {"kind": "line", "rx": 0.01},
+                             "lubricant": {"viscosity": 0.01}, "load": {"gap": 1e-6},
+                             "kinematics": {"u1": 1.0, "u2": 1.0},
+                             "model": {"elasticity": "rigid"}})
+    tasks = [Task(Case({"i": i}, scene), sys.argv[1]) for i in range(4)]
+    PoolExecutor(2).run(tasks, lambda t, out: None)
+'''
+
+
+def _running(pid: int) -> bool:
+    """True while process ``pid`` runs (not gone, not a zombie)."""
+    try:
+        os.kill(pid, 0)
+        state = Path(f"/proc/{pid}/stat").read_bytes().rsplit(b")", 1)[1].split()[0]
+    except (ProcessLookupError, FileNotFoundError):
+        return False
+    return state != b"Z"
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads /proc")
+def test_pool_workers_exit_when_the_client_is_killed(tmp_path):
+    """A client killed with SIGKILL (or by a batch system) cannot shut its pool down; its
+    worker processes must not wait for work forever (keeping their memory and the
+    client's stdout open, so that a caller reading that pipe never returns). They finish
+    the case they run and exit."""
+    import signal
+    import time
+
+    script = tmp_path / "client.py"
+    script.write_text(CLIENT_SCRIPT, encoding="utf-8")
+    proc = subprocess.Popen([sys.executable, str(script), str(tmp_path)], cwd=tmp_path,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    t0 = time.monotonic()
+    while len(list(tmp_path.glob("*.pid"))) < 2 and time.monotonic() - t0 < 120:
+        time.sleep(0.05)
+    pids = [int(p.stem) for p in tmp_path.glob("*.pid")]
+    assert len(pids) == 2, "both pool workers started a case"
+    proc.kill()
+    proc.wait(timeout=60)
+    t1 = time.monotonic()
+    alive = pids
+    while alive and time.monotonic() - t1 < 20:
+        time.sleep(0.2)
+        alive = [p for p in pids if _running(p)]
+    for p in alive:  # clean up before failing
+        os.kill(p, signal.SIGKILL)
+    assert not alive, ("pool workers still running 20 s after their client was killed "
+                       "(each case takes 2 s, the check runs every second)")

@@ -25,6 +25,7 @@ import os
 import secrets
 import shutil
 import socket
+import threading
 import time
 import traceback
 import warnings
@@ -346,12 +347,69 @@ def in_worker_bootstrap() -> bool:
     return bool(getattr(mp.current_process(), "_inheriting", False))
 
 
+#: Seconds between a pool worker's checks that the process which started the pool (the
+#: client) still runs; a worker whose client has gone (killed with SIGKILL, or by a batch
+#: system's time limit) exits once its current case is done instead of waiting forever.
+CLIENT_CHECK_S = 1.0
+_running = [0]  # cases running in this pool worker process (0 or 1)
+
+
+def _process_alive(pid: int) -> bool:
+    """True while process ``pid`` exists (a zombie counts as gone on Linux)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # pragma: no cover - a process of another user
+        return True
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as fh:
+            return fh.read().rsplit(b")", 1)[1].split()[0] != b"Z"
+    except (OSError, IndexError):
+        return True
+
+
+def watch_client(pid: int, interval: float = CLIENT_CHECK_S) -> None:
+    """Initializer of the local pool's worker processes: a daemon thread that ends the
+    process once the client ``pid`` has gone and no case is running.
+
+    Without it the workers of a client killed by SIGKILL (or SIGTERM) would wait for
+    work forever (each holds its own end of the pool's queues), keeping their memory
+    and the client's standard output open. A case running when the client goes is
+    finished and its result folder written, so that the next run adopts it.
+
+    Parameters
+    ----------
+    pid : int
+        Process id of the client (the process that started the pool).
+    interval : float
+        Seconds between checks.
+    """
+    def watch() -> None:
+        while True:
+            time.sleep(interval)
+            if not _running[0] and not _process_alive(pid):
+                os._exit(0)
+
+    threading.Thread(target=watch, name="bearing_fem-client-watch", daemon=True).start()
+
+
+def pool_task(fn: Callable[[Task], Outcome], task: Task) -> Outcome:
+    """Run ``fn(task)`` in a pool worker, marked as running for :func:`watch_client`."""
+    _running[0] += 1
+    try:
+        return fn(task)
+    finally:
+        _running[0] -= 1
+
+
 class PoolExecutor:
     """A local process pool (``concurrent.futures``; forkserver start where available).
 
     At most ``workers`` tasks are in flight; a worker process that dies breaks the pool,
     which is started again, and the tasks that were in flight are resubmitted until they
-    have been started :data:`MAX_ATTEMPTS` times (then recorded ``lost``).
+    have been started :data:`MAX_ATTEMPTS` times (then recorded ``lost``). Its workers
+    exit on their own once the client process has gone (:func:`watch_client`).
     """
 
     def __init__(self, workers: int) -> None:
@@ -382,7 +440,8 @@ class PoolExecutor:
                                             "bearing_fem.contacts.dispatch"])
             except ValueError:  # pragma: no cover - platforms without forkserver
                 ctx = mp.get_context("spawn")
-        return ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx)
+        return ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx,
+                                   initializer=watch_client, initargs=(os.getpid(),))
 
     def run(self, tasks: Sequence[Task], done: Done) -> None:
         from concurrent.futures import FIRST_COMPLETED, wait
@@ -396,7 +455,7 @@ class PoolExecutor:
             while queue or inflight:
                 while queue and len(inflight) < self.workers:
                     t = queue.popleft()
-                    inflight[pool.submit(run_task, t)] = t
+                    inflight[pool.submit(pool_task, run_task, t)] = t
                 finished, _ = wait(list(inflight), return_when=FIRST_COMPLETED)
                 broken = False
                 for f in finished:
