@@ -21,6 +21,7 @@ accuracy these settings buy.
 """
 from __future__ import annotations
 
+import errno
 import json
 import os
 import platform
@@ -34,6 +35,7 @@ import numpy as np
 from . import units
 from .bearing import load_example, solve_bearing
 from .contacts.dispatch import solve
+from .result import json_safe
 from .scene import (Contact, Kinematics, Load, Lubricant, Materials, Model, Scene, Thermal,
                     Traction)
 from .version import VERSION
@@ -151,14 +153,36 @@ def cases(quick: bool) -> dict[str, Callable[[], dict[str, Any]]]:
             "bearing_6209": lambda: _bearing_row(bearing_nodes)}
 
 
+def cpu_model() -> str | None:
+    """The CPU's model name (``/proc/cpuinfo`` on Linux, where ``platform.processor()``
+    is empty; ``platform.processor()`` elsewhere), or None when unknown."""
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8", errors="replace") as fh:
+            for line in fh:
+                key, _, value = line.partition(":")
+                if key.strip() in ("model name", "Model", "cpu model", "Hardware") \
+                        and value.strip():
+                    return value.strip()
+    except OSError:
+        pass
+    return platform.processor() or None
+
+
 def machine_info() -> dict[str, Any]:
-    """The machine and software a bench ran on: platform, CPU count, Python, numpy, scipy."""
+    """The machine and software a bench ran on.
+
+    Returns
+    -------
+    dict
+        ``platform``, ``machine`` (architecture), ``processor``, ``cpu_model`` (the CPU's
+        model name, None when unknown), ``cpu_count``, ``python``, ``numpy``, ``scipy``.
+    """
     import scipy
 
     return {"platform": platform.platform(), "machine": platform.machine(),
-            "processor": platform.processor(), "cpu_count": os.cpu_count(),
-            "python": platform.python_version(), "numpy": np.__version__,
-            "scipy": scipy.__version__}
+            "processor": platform.processor(), "cpu_model": cpu_model(),
+            "cpu_count": os.cpu_count(), "python": platform.python_version(),
+            "numpy": np.__version__, "scipy": scipy.__version__}
 
 
 def run_bench(quick: bool = False, repeats: int | None = None,
@@ -221,7 +245,8 @@ def format_table(report: dict[str, Any]) -> str:
     lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths)) for b in body]
     m = report["machine"]
     la = report["load_average"]
-    lines.append(f"bearing_fem {report['version']}, {m['platform']}, {m['cpu_count']} CPUs, "
+    cpu = f"{m['cpu_model']}, " if m.get("cpu_model") else ""
+    lines.append(f"bearing_fem {report['version']}, {m['platform']}, {cpu}{m['cpu_count']} CPUs, "
                  f"Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}; "
                  f"min of {report['repeats']} interleaved runs; load average "
                  f"{la[0]:.2f} -> {la[1]:.2f}")
@@ -229,9 +254,35 @@ def format_table(report: dict[str, Any]) -> str:
 
 
 def write_json(report: dict[str, Any], path: str | Path) -> Path:
-    """Write the report as JSON (via a temporary name and ``os.replace``)."""
+    """Write the report as strict JSON (via a temporary name and ``os.replace``).
+
+    Parameters
+    ----------
+    report : dict
+        A report of :func:`run_bench`; non-finite numbers are written as ``null``.
+    path : str or Path
+        The JSON file (not a directory).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    OSError
+        The file cannot be written (``path`` is a directory, its folder does not exist,
+        ...); no temporary file is left behind.
+    """
     path = Path(path)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(report, indent=1))
-    os.replace(tmp, path)
+    if path.is_dir():
+        raise IsADirectoryError(errno.EISDIR, "is a directory, not a file", str(path))
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        tmp.write_text(json.dumps(json_safe(report), indent=1, allow_nan=False) + "\n",
+                       encoding="utf-8")
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
     return path

@@ -330,6 +330,9 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         raise _InputError(f"--repeat must be at least 1, got {args.repeat}")
     if args.json and not Path(args.json).resolve().parent.is_dir():
         raise _InputError(f"cannot write {args.json!r}: its directory does not exist")
+    if args.json and Path(args.json).is_dir():
+        raise _InputError(f"cannot write {args.json!r}: it is a directory; give a file "
+                          "name such as bench.json")
     report = run_bench(quick=args.quick, repeats=args.repeat)
     if not args.quiet:
         print(format_table(report))
