@@ -300,3 +300,30 @@ def test_error_estimate_columns_are_dimensionless(tmp_path):
                          "worker": "w", "attempts": 1})
             info = store.column_info()
         assert all(info[c]["unit"] == "1" for c in rel), {c: info[c] for c in rel}
+
+
+def test_column_units_of_line_and_point_rows_in_one_store(tmp_path):
+    """A line contact's load is in N/m, a point contact's in N. A store holding both (two
+    sweeps into one store) labelled the column with the first unit written, so
+    ``bearing-fem runs`` printed the point loads under "load [N/m]"; the column's unit
+    names both."""
+    import bearing_fem as bf
+
+    point = Scene.from_dict({"contact": {"kind": "point", "rx": 0.01, "ry": 0.01},
+                             "lubricant": {"viscosity": 0.01},
+                             "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": 1e-6},
+                             "model": {"elasticity": "rigid"}, "mesh": {"nodes": [21, 21]}})
+    path = tmp_path / "runs.sqlite"
+    with RunStore(path) as store:
+        for i, scene in enumerate((rigid(1e-6), point, rigid(2e-6))):
+            r = bf.solve(scene)
+            store.write(Case({"i": i}, scene),
+                        {"status": r.status, "success": r.success, "message": r.message,
+                         "summary": r.summary(), "result_path": None, "run_time_s": 0.1,
+                         "worker": "w", "attempts": 1})
+        info = store.column_info()
+    assert info["load"]["unit"] == "N/m or N", info["load"]
+    assert info["heat_power"]["unit"] == "W/m or W", info["heat_power"]
+    assert info["h_central"]["unit"] == "m", "one unit where the rows agree"
+    from bearing_fem.sweep import store_units
+    assert store_units(path)["friction_force"] == "N/m or N"

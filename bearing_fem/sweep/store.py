@@ -128,6 +128,36 @@ def flatten_summary(summary: Mapping[str, Any]) -> tuple[dict[str, Any], dict[st
     return cols, known
 
 
+#: Joins the units of a column whose rows carry different units (``N/m or N``).
+UNIT_SEPARATOR = " or "
+
+
+def merged_unit(stored: str | None, unit: str | None) -> str | None:
+    """The unit of a store column after a row with ``unit`` is written into it.
+
+    A store may hold line contacts (per metre: ``N/m``, ``W/m``), point contacts (``N``,
+    ``W``) and bearings in one column such as ``load`` or ``heat_power``; its unit then
+    names each unit its rows carry, in the order they appeared (``"N/m or N"``), never
+    the first one alone.
+
+    Parameters
+    ----------
+    stored : str or None
+        The column's unit so far (None: unknown).
+    unit : str or None
+        The unit the new row's summary names (None: none).
+
+    Returns
+    -------
+    str or None
+    """
+    if not unit:
+        return stored
+    if not stored:
+        return unit
+    return stored if unit in stored.split(UNIT_SEPARATOR) else stored + UNIT_SEPARATOR + unit
+
+
 class RunStore:
     """An open run store (see the module docstring).
 
@@ -277,8 +307,11 @@ class RunStore:
             conn.execute("INSERT OR IGNORE INTO columns VALUES (?, ?, ?)",
                          (name, role, units.get(name)))
             if units.get(name):
-                conn.execute("UPDATE columns SET unit = ? WHERE name = ? AND unit IS NULL",
-                             (units[name], name))
+                old = conn.execute("SELECT unit FROM columns WHERE name = ?",
+                                   (name,)).fetchone()[0]
+                unit = merged_unit(old, units[name])
+                if unit != old:
+                    conn.execute("UPDATE columns SET unit = ? WHERE name = ?", (unit, name))
 
     def _upsert(self, conn: sqlite3.Connection, row: Mapping[str, Any]) -> None:
         names = list(row)
