@@ -374,7 +374,8 @@ def _cmd_runs(args: argparse.Namespace) -> int:
         columns = "all"
     rows, cols = query_runs(args.store, status=args.status, where=args.where,
                             columns=[columns] if isinstance(columns, str) and columns not in
-                            ("all", "default") else columns, limit=args.limit)
+                            ("all", "default") else columns, limit=args.limit,
+                            sweep=args.sweep)
     if args.csv or args.parquet:
         text = export_runs(rows, cols, csv=args.csv, parquet=args.parquet)
         if text is not None:
@@ -433,6 +434,9 @@ def _add_sweep_parsers(sub: Any) -> None:
                    help="comma-separated columns, or 'all' (default: hash, status, the "
                         "parameters and the main results; exports: all)")
     p.add_argument("--limit", type=int, default=None, metavar="N", help="at most N rows")
+    p.add_argument("--sweep", metavar="SWEEP.toml", default=None,
+                   help="keep the rows of this sweep file's cases (as the file and its base "
+                        "file read now)")
     p.add_argument("--csv", metavar="FILE", default=None,
                    help="write CSV to FILE ('-' for standard output)")
     p.add_argument("--parquet", metavar="FILE", default=None, help="write Parquet to FILE")

@@ -441,3 +441,27 @@ def test_pool_workers_exit_when_the_client_is_killed(tmp_path):
         os.kill(p, signal.SIGKILL)
     assert not alive, ("pool workers still running 20 s after their client was killed "
                        "(each case takes 2 s, the check runs every second)")
+
+
+def test_changed_base_file_rows_are_told_apart(tmp_path, capsys):
+    """Editing the base file and running the sweep again adds new rows with the same
+    parameter values as the old ones (other scenes, other hashes). A query by parameters
+    then silently mixed both; the report now says so and ``runs --sweep`` (``query_runs(
+    sweep=...)``) selects the rows of the sweep as its files read now."""
+    sweep = {"sweep": {"scene": "base.toml"}, "axes": {"load.gap": [1e-6, 2e-6]}}
+    path = write_sweep(tmp_path, sweep)
+    store = tmp_path / "sweep.sqlite"
+    first = bf.sweep(path, workers=1)
+    assert first.others_same_params == 0 and "note:" not in first.text()
+    write_sweep(tmp_path, sweep, {**BASE, "lubricant": {"viscosity": 0.1, "piezo": 5e-8}})
+    second = bf.sweep(path, workers=1)
+    assert second.ran == 2 and second.others_same_params == 2, second
+    assert "2 row(s) with the parameters of cases of this sweep" in second.text()
+    rows, _ = query_runs(store, where=["load.gap=1e-6"])
+    assert len(rows) == 2, "both versions of the base file are in the store"
+    rows, _ = query_runs(store, where=["load.gap=1e-6"], sweep=path, columns="all")
+    assert len(rows) == 1 and rows[0]["hash"] in second.statuses, rows
+    assert json.loads(rows[0]["scene"])["lubricant"]["viscosity"] == 0.1, "the new base"
+    assert main(["runs", str(store), "--sweep", str(path), "--columns", "hash"]) == 0
+    out = capsys.readouterr().out
+    assert "(2 rows)" in out and all(h[:12] in out for h in second.statuses), out

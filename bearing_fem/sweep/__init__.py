@@ -133,8 +133,8 @@ def _open_existing(path: str | Path) -> RunStore:
 
 def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
                where: Sequence[str | tuple[str, str, Any]] | None = None,
-               columns: Sequence[str] | str | None = None, limit: int | None = None
-               ) -> tuple[list[dict[str, Any]], list[str]]:
+               columns: Sequence[str] | str | None = None, limit: int | None = None,
+               sweep: Any = None) -> tuple[list[dict[str, Any]], list[str]]:
     """Rows of a run store with filters.
 
     Parameters
@@ -150,12 +150,23 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
         Columns to return; ``default`` (or None): hash, status, the parameters and the
         main summary columns present; ``all``: every column.
     limit : int, optional
+    sweep : str or Path or SweepSpec or mapping or sequence of Case, optional
+        Keep the rows of this sweep's cases only (as :func:`sweep` takes it; a sweep file
+        as it reads now): a store may also hold other sweeps' rows, and rows of an earlier
+        version of the base file with the same parameter values.
 
     Returns
     -------
     (list of dict, list of str)
         The rows (sorted by the parameter columns) and the column names.
     """
+    hashes = None
+    if sweep is not None:
+        if isinstance(sweep, (str, Path)):
+            sweep = SweepSpec.from_toml(sweep)
+        elif isinstance(sweep, Mapping):
+            sweep = SweepSpec.from_dict(sweep, base_dir=Path.cwd())
+        hashes = [c.hash for c in cases_of(sweep)]
     with _open_existing(path) as store:
         info = store.column_info()
         have = store.columns()
@@ -169,7 +180,7 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
         filters = [parse_filter(w) if isinstance(w, str) else tuple(w) for w in where or ()]
         order = [c for c in have if info.get(c, {}).get("role") == "param"]
         rows = store.rows(status=status, where=filters, columns=cols, limit=limit,
-                          order=order)
+                          order=order, hashes=hashes)
     return rows, cols
 
 

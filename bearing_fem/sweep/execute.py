@@ -667,6 +667,12 @@ class SweepReport:
     dry_run : bool
     to_run : list of str
         Hashes that were (or, for a dry run, would be) run.
+    others_same_params : int
+        Rows of the store that are not cases of this sweep but have the parameter values
+        of one of its cases: cases of an earlier version of the base file (or of another
+        sweep with other fixed keys). A query by parameters returns them too; select this
+        sweep's rows with ``query_runs(store, sweep=...)`` (``bearing-fem runs STORE
+        --sweep FILE``).
     """
 
     store: Path
@@ -683,6 +689,7 @@ class SweepReport:
     wall_time_s: float = 0.0
     dry_run: bool = False
     to_run: list[str] = field(default_factory=list)
+    others_same_params: int = 0
 
     @property
     def all_successful(self) -> bool:
@@ -700,6 +707,11 @@ class SweepReport:
                  f"{self.unfinished} unfinished (pending or lost: run the sweep again)",
                  f"  store {self.store}; result folders in {self.results}",
                  f"  {self.executor}, {self.wall_time_s:.1f} s"]
+        if self.others_same_params:
+            lines.append(f"  note: the store also holds {self.others_same_params} row(s) with "
+                         "the parameters of cases of this sweep but another scene (an "
+                         "earlier base file, or another sweep); 'bearing-fem runs "
+                         f"{self.store} --sweep SWEEP.toml' lists this sweep's rows alone")
         return "\n".join(lines)
 
 
@@ -744,6 +756,31 @@ def _remove_store_files(path: Path) -> None:
             p.unlink()
         except FileNotFoundError:
             pass
+
+
+def others_with_same_params(store: RunStore, cases: Sequence[Case]) -> int:
+    """Rows of ``store`` that are not among ``cases`` but have the parameter values of one
+    of them (same parameter names and values, another resolved scene).
+
+    Parameters
+    ----------
+    store : RunStore
+    cases : sequence of Case
+
+    Returns
+    -------
+    int
+        The number of such rows (0 when the cases have no parameters).
+    """
+    from .store import sql_value
+
+    names = sorted({k for c in cases for k in c.params})
+    if not names or not set(names) <= set(store.columns()):
+        return 0
+    mine = {c.hash for c in cases}
+    keys = {tuple(sql_value(c.params.get(n)) for n in names) for c in cases}
+    return sum(1 for r in store.rows(columns=["hash", *names])
+               if r["hash"] not in mine and tuple(r[n] for n in names) in keys)
 
 
 def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | Path | None = None,
@@ -852,5 +889,6 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
             report.successes = sum(1 for s in final.values() if s["success"])
             report.unfinished = sum(1 for s in final.values() if s["status"] in NON_FINAL)
             report.failures = len(final) - report.successes - report.unfinished
+            report.others_same_params = others_with_same_params(store, cases)
             report.wall_time_s = time.perf_counter() - t0
     return report

@@ -436,7 +436,8 @@ class RunStore:
     def rows(self, *, status: Sequence[str] | None = None,
              where: Sequence[tuple[str, str, Any]] | None = None,
              columns: Sequence[str] | None = None, limit: int | None = None,
-             order: Sequence[str] | None = None) -> list[dict[str, Any]]:
+             order: Sequence[str] | None = None,
+             hashes: Iterable[str] | None = None) -> list[dict[str, Any]]:
         """Rows of ``runs`` as dicts, in the order they were last written.
 
         Parameters
@@ -454,6 +455,8 @@ class RunStore:
             At most this many rows (>= 1).
         order : sequence of str, optional
             Sort by these columns (ascending); default: the order the rows were written.
+        hashes : iterable of str, optional
+            Keep the rows of these cases only (e.g. the cases of one sweep).
         """
         if isinstance(status, str):  # one status, not its characters
             status = (status,)
@@ -491,6 +494,9 @@ class RunStore:
                 raise SceneError(f"filter operator must be one of = != < <= > >=, got {op!r}")
             clauses.append(f"{quote(col)} {op} ?")
             args.append(sql_value(value))
+        if hashes is not None:
+            clauses.append("hash IN (SELECT value FROM json_each(?))")
+            args.append(json.dumps(sorted(set(hashes))))
         if clauses:
             sql += " WHERE " + " AND ".join(clauses)
         for col in order or ():
