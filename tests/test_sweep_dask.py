@@ -14,6 +14,7 @@ import dask  # noqa: E402
 from distributed.diagnostics.plugin import WorkerPlugin  # noqa: E402
 
 import bearing_fem as bf  # noqa: E402
+from bearing_fem.errors import SceneError  # noqa: E402
 from bearing_fem.sweep import RunStore, SweepSpec, local_cluster, query_runs  # noqa: E402
 from bearing_fem.sweep.execute import (WORKER_MALLOC_ENV, malloc_environment,  # noqa: E402
                                        slow_malloc_workers)
@@ -197,3 +198,13 @@ def test_unreachable_scheduler_leaves_no_store(tmp_path, monkeypatch):
     with pytest.raises(SceneError, match="cannot reach the Dask scheduler"):
         bf.sweep([({"load.gap": 1e-6}, scene)], store=store, scheduler="tcp://127.0.0.1:1")
     assert not store.exists() and not list(tmp_path.iterdir()), list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("bad", [2.5, 0, "2", True])
+def test_local_cluster_refuses_a_bad_worker_count(bad):
+    """local_cluster(2.5) started 2 workers without a word and local_cluster("a") raised a
+    bare ValueError; every count that is not a whole number >= 1 is a SceneError naming
+    the argument and the value, before any process starts."""
+    with pytest.raises(SceneError, match=r"n_workers must be an integer in \[1, 4096\] "
+                                         r"\(worker processes\), got "):
+        local_cluster(bad)

@@ -64,7 +64,7 @@ Outcome = dict[str, Any]
 Done = Callable[["Task", Outcome], None]
 
 
-def local_cluster(n_workers: int = 2, **kwargs: Any):
+def local_cluster(n_workers: int = 2, **kwargs: Any) -> Any:
     """A Dask ``LocalCluster`` of ``n_workers`` processes of one thread each, whose workers
     run with :data:`WORKER_MALLOC_ENV` (as fast per solve as a plain process).
 
@@ -92,9 +92,9 @@ def local_cluster(n_workers: int = 2, **kwargs: Any):
     except ImportError:
         raise SceneError("a local Dask cluster needs dask.distributed: "
                          "pip install 'bearing_fem[sweep]'") from None
-    n = int(n_workers)
-    if n < 1:
-        raise SceneError(f"local_cluster: n_workers must be >= 1, got {n_workers!r}")
+    from .spec import check_workers
+
+    n = check_workers(n_workers, "local_cluster: n_workers")
     kwargs.setdefault("threads_per_worker", 1)
     kwargs.setdefault("dashboard_address", None)
     os.environ.update(WORKER_MALLOC_ENV)
@@ -103,13 +103,30 @@ def local_cluster(n_workers: int = 2, **kwargs: Any):
 
 def malloc_environment() -> dict[str, str | None]:
     """The malloc variables of :data:`WORKER_MALLOC_ENV` in the environment of the process
-    this runs in (None where unset; :class:`DaskExecutor` runs it on each worker)."""
+    this runs in (:class:`DaskExecutor` runs it on each worker).
+
+    Returns
+    -------
+    dict
+        Variable name -> its value, None where unset.
+    """
     return {k: os.environ.get(k) for k in WORKER_MALLOC_ENV}
 
 
 def slow_malloc_workers(environments: Mapping[str, Mapping[str, str | None]]) -> list[str]:
     """Workers whose environment sets a malloc trim threshold without an mmap threshold
-    (Dask's default: ~3x slower point solves, :data:`WORKER_MALLOC_ENV`)."""
+    (Dask's default: ~3x slower point solves, :data:`WORKER_MALLOC_ENV`).
+
+    Parameters
+    ----------
+    environments : mapping
+        Worker address -> :func:`malloc_environment` of that worker.
+
+    Returns
+    -------
+    list of str
+        The addresses of the slow workers, sorted.
+    """
     return sorted(w for w, env in environments.items()
                   if env.get("MALLOC_TRIM_THRESHOLD_") is not None
                   and env.get("MALLOC_MMAP_THRESHOLD_") is None)
@@ -183,6 +200,11 @@ def run_task(task: Task) -> Outcome:
     Never raises for a failed solve: a solve that raises gives status ``error``
     (final), a failure to write the files status ``lost`` (not final), each with the
     exception in the message.
+
+    Parameters
+    ----------
+    task : Task
+        The case, its result folder, the files to write and the BLAS thread limit.
 
     Returns
     -------
