@@ -145,6 +145,11 @@ def cases(quick: bool) -> dict[str, Callable[[], dict[str, Any]]]:
     ----------
     quick : bool
         Coarse contact grids for the bearing case.
+
+    Returns
+    -------
+    dict
+        Case name -> a function without arguments that solves it and returns its row.
     """
     line, point, thermal = moes_line_scene(), moes_point_scene(), thermal_line_scene()
     bearing_nodes = QUICK_BEARING_NODES if quick else None
@@ -232,7 +237,19 @@ def run_bench(quick: bool = False, repeats: int | None = None,
 
 
 def format_table(report: dict[str, Any]) -> str:
-    """The report as a fixed-width text table (one line per case)."""
+    """The report as a fixed-width text table.
+
+    Parameters
+    ----------
+    report : dict
+        A report of :func:`run_bench`.
+
+    Returns
+    -------
+    str
+        One line per case (time [s], Newton iterations, status, h_central [m], relative
+        error estimate), then a line naming the version, the machine and the load average.
+    """
     def cell(v: Any, fmt: str) -> str:
         if v is None:
             return "-"

@@ -186,7 +186,23 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
 
 def format_runs(rows: Sequence[Mapping[str, Any]], columns: Sequence[str],
                 units: Mapping[str, str] | None = None) -> str:
-    """A plain-text table of rows (hashes cut to 12 digits, numbers to 4 significant)."""
+    """A plain-text table of rows (``bearing-fem runs``).
+
+    Parameters
+    ----------
+    rows : sequence of mapping
+        Rows as :func:`query_runs` returns them.
+    columns : sequence of str
+        The columns to show, in order.
+    units : mapping, optional
+        Column -> unit (:func:`store_units`), shown in the header as ``name [unit]``.
+
+    Returns
+    -------
+    str
+        One line per row under a header, then ``(N rows)``; hashes cut to 12 digits,
+        numbers to 4 significant digits, NULL as ``-``.
+    """
     def cell(col: str, v: Any) -> str:
         if v is None:
             return "-"
@@ -208,7 +224,19 @@ def format_runs(rows: Sequence[Mapping[str, Any]], columns: Sequence[str],
 
 
 def store_units(path: str | Path) -> dict[str, str]:
-    """Column -> unit of an existing run store (columns whose unit is known)."""
+    """The units of an existing run store's columns.
+
+    Parameters
+    ----------
+    path : str or Path
+        The run store.
+
+    Returns
+    -------
+    dict
+        Column -> unit for the columns whose unit is known (``"N/m or N"`` for a column
+        whose rows carry different units).
+    """
     with _open_existing(path) as store:
         return {k: v["unit"] for k, v in store.column_info().items() if v.get("unit")}
 
@@ -216,7 +244,24 @@ def store_units(path: str | Path) -> dict[str, str]:
 def export_runs(rows: Sequence[Mapping[str, Any]], columns: Sequence[str], *,
                 csv: str | Path | None = None, parquet: str | Path | None = None
                 ) -> str | None:
-    """Write rows as CSV (``csv="-"`` returns the text instead) and/or Parquet."""
+    """Write rows as CSV and/or Parquet (each atomically).
+
+    Parameters
+    ----------
+    rows : sequence of mapping
+        Rows as :func:`query_runs` returns them.
+    columns : sequence of str
+        The columns to write, in order.
+    csv : str or Path, optional
+        The CSV file; ``"-"`` returns the CSV text instead of writing it.
+    parquet : str or Path, optional
+        The Parquet file (needs pyarrow).
+
+    Returns
+    -------
+    str or None
+        The CSV text when ``csv="-"``, else None.
+    """
     text = None
     if parquet is not None:
         export_parquet(rows, parquet, columns)

@@ -320,7 +320,19 @@ class RunStore:
 
     # -----------------------------------------------------------------------------------
     def states(self, hashes: Sequence[str]) -> dict[str, dict[str, Any]]:
-        """``hash -> {"status", "success", "result_path", "attempts"}`` of stored cases."""
+        """The stored state of cases.
+
+        Parameters
+        ----------
+        hashes : sequence of str
+            Case hashes (:func:`~bearing_fem.sweep.spec.scene_hash`).
+
+        Returns
+        -------
+        dict
+            ``hash -> {"status", "success", "result_path", "attempts"}`` for the hashes
+            that have a row (others are absent).
+        """
         out: dict[str, dict[str, Any]] = {}
         hashes = list(hashes)
         for i in range(0, len(hashes), 500):
@@ -333,7 +345,18 @@ class RunStore:
         return out
 
     def resolve(self, result_path: str | None) -> Path | None:
-        """A stored result path as a path (relative ones are under the store's folder)."""
+        """A stored result path as a path.
+
+        Parameters
+        ----------
+        result_path : str or None
+            A ``result_path`` column value (relative ones are under the store's folder).
+
+        Returns
+        -------
+        Path or None
+            The result folder, or None for a row without one.
+        """
         if not result_path:
             return None
         p = Path(result_path)
@@ -354,9 +377,20 @@ class RunStore:
         """Record cases about to run as ``pending`` (one transaction): their parameters,
         kind and scene; any earlier result of theirs is replaced.
 
-        ``planned``: the rows (:meth:`states`) the caller planned from. A case whose row
-        has become final since then (another process sharing the store finished it) is
-        left as it is and not returned. Returns the cases marked ``pending``.
+        Parameters
+        ----------
+        cases : sequence of Case
+        attempts : mapping, optional
+            ``hash -> attempts`` so far (the row keeps this count; default 0).
+        planned : mapping, optional
+            The rows (:meth:`states`) the caller planned from. A case whose row has become
+            final since then (another process sharing the store finished it) is left as it
+            is and not returned.
+
+        Returns
+        -------
+        list of Case
+            The cases marked ``pending``.
         """
         if not cases:
             return []
