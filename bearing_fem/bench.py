@@ -197,7 +197,7 @@ def run_bench(quick: bool = False, repeats: int | None = None,
     Parameters
     ----------
     quick : bool
-        Coarse bearing contact grids and two repetitions (about 20 s on 2 cores).
+        Coarse bearing contact grids and two repetitions (about 6 s on 2 idle cores).
     repeats : int, optional
         Repetitions per case (default 2 quick, 3 full); the minimum time is reported.
     progress : callable, optional
