@@ -327,3 +327,31 @@ def test_column_units_of_line_and_point_rows_in_one_store(tmp_path):
     assert info["h_central"]["unit"] == "m", "one unit where the rows agree"
     from bearing_fem.sweep import store_units
     assert store_units(path)["friction_force"] == "N/m or N"
+
+
+def test_every_number_of_a_bearing_row_has_a_unit(tmp_path):
+    """The run store takes its column units from the summary's ``units``. A bearing's
+    summary named none for its tables' numbers, so the store listed
+    load_balance.radial_sum (N), energy_balance.torque_times_speed (W),
+    load_distribution.load_zone_half_angle_deg (deg), kinematics.element_rpm (1/min), ...
+    without a unit. Every float column of a bearing row has one now (integers are counts
+    and indices)."""
+    from bearing_fem.bearing import Bearing, solve_bearing
+
+    bearing = Bearing.from_dict({
+        "bearing": {"type": "cylindrical-roller", "bore": 0.03, "outside_diameter": 0.062,
+                    "element_diameter": 0.009, "elements": 13, "effective_length": 0.009,
+                    "pitch_diameter": 0.046, "radial_clearance": 5e-6},
+        "lubricant": {"viscosity": 0.05, "piezo": 2e-8},
+        "operation": {"inner_rpm": 1500.0, "radial_load": 2000.0},
+        "mesh": {"line_nodes": 201}})
+    r = solve_bearing(bearing)
+    assert r.success, r.message
+    cols, units = flatten_summary(r.summary())
+    floats = sorted(c for c, v in cols.items() if isinstance(v, float))
+    assert {"load_balance.radial_sum", "energy_balance.torque_times_speed",
+            "load_distribution.max_element_load", "kinematics.element_rpm"} <= set(floats)
+    assert [c for c in floats if not units.get(c)] == [], units
+    assert units["load_balance.radial_sum"] == "N"
+    assert units["energy_balance.torque_times_speed"] == "W"
+    assert units["load_distribution.load_zone_half_angle_deg"] == "deg"
