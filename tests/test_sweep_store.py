@@ -355,3 +355,40 @@ def test_every_number_of_a_bearing_row_has_a_unit(tmp_path):
     assert units["load_balance.radial_sum"] == "N"
     assert units["energy_balance.torque_times_speed"] == "W"
     assert units["load_distribution.load_zone_half_angle_deg"] == "deg"
+
+
+def test_filter_value_that_is_not_a_number_on_a_number_column(tmp_path):
+    """``--where "load.force>=2O"`` (a letter O) compared the numbers with the text '2O'
+    and listed no row (or, with <, every row) without a word; it is refused naming the
+    column and the value. Numbers JSON does not read (".5", "+2") are numbers."""
+    path = tmp_path / "s.sqlite"
+    cases = [Case({"load.gap": g}, rigid(g)) for g in (1e-6, 2e-6)]
+    with RunStore(path) as store:
+        store.write(cases[0], outcome(h_central=0.25))
+        store.write(cases[1], outcome(h_central=0.75))
+    for bad in ("h_central>abc", "load.gap<=1e-6x", "h_central=O.5"):
+        with pytest.raises(SceneError, match=r"holds numbers and '.*' is not a number"):
+            query_runs(path, where=[bad])
+    assert parse_filter("h_central<=.5") == ("h_central", "<=", 0.5)
+    assert parse_filter("h_central>+0.5") == ("h_central", ">", 0.5)
+    assert [r["h_central"] for r in query_runs(path, where=["h_central<=.5"])[0]] == [0.25]
+    assert len(query_runs(path, where=["status=linear"])[0]) == 2, "text columns as before"
+
+
+def test_export_to_a_directory_is_an_input_error(tmp_path, capsys):
+    """``bearing-fem runs STORE --csv DIR`` ended in a traceback (IsADirectoryError, exit
+    1); it is an input error (exit 2, one line), and no temporary file is left."""
+    from bearing_fem.cli import main
+
+    path = tmp_path / "s.sqlite"
+    with RunStore(path) as store:
+        store.write(Case({"load.gap": 1e-6}, rigid(1e-6)), outcome(h_central=1.0))
+    (tmp_path / "out").mkdir()
+    assert main(["runs", str(path), "--csv", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "cannot write the CSV export to" in err and "it is a directory" in err, err
+    assert "Traceback" not in err
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.startswith("s.sqlite")) \
+        == ["out"], "no temporary file left"
+    with pytest.raises(SceneError, match="it is a directory"):
+        export_csv([], tmp_path / "out", ["hash"])

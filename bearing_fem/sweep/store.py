@@ -526,6 +526,10 @@ class RunStore:
                                  f"{', '.join(have)}")
             if op not in ("=", "!=", "<", "<=", ">", ">="):
                 raise SceneError(f"filter operator must be one of = != < <= > >=, got {op!r}")
+            if isinstance(value, str) and self._numeric_column(col):
+                raise SceneError(f"filter {col} {op} {value!r}: the column {col!r} holds "
+                                 f"numbers and {value!r} is not a number (it would compare "
+                                 "as text and keep no row, or every row)")
             clauses.append(f"{quote(col)} {op} ?")
             args.append(sql_value(value))
         if hashes is not None:
@@ -541,6 +545,12 @@ class RunStore:
             sql += f" LIMIT {int(limit)}"
         cur = self.conn.execute(sql, args)
         return [dict(zip(cols, r)) for r in cur.fetchall()]
+
+    def _numeric_column(self, col: str) -> bool:
+        """True when every non-NULL value of ``col`` is a number (and there is one)."""
+        types = {t for (t,) in self.conn.execute(
+            f"SELECT DISTINCT typeof({quote(col)}) FROM runs WHERE {quote(col)} IS NOT NULL")}
+        return bool(types) and types <= {"integer", "real"}
 
     def count(self) -> dict[str, int]:
         """Number of rows per status."""
@@ -568,6 +578,12 @@ def parse_filter(text: str) -> tuple[str, str, Any]:
                 value = json.loads(raw)
             except ValueError:
                 value = raw
+                try:  # numbers JSON does not read: ".5", "5.", "+2", "1E-6"
+                    number = float(raw)
+                    if math.isfinite(number):
+                        value = number
+                except ValueError:
+                    pass
             if isinstance(value, (list, dict)):
                 value = json.dumps(value, sort_keys=True)
             return col, op, value
@@ -615,6 +631,7 @@ def export_parquet(rows: Sequence[Mapping[str, Any]], path: str | Path,
         else:
             data[c] = pa.array([None if v is None else str(v) for v in vals], type=pa.string())
     path = Path(path)
+    _export_target(path, "Parquet")
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         pq.write_table(pa.table(data), str(tmp))
@@ -624,12 +641,28 @@ def export_parquet(rows: Sequence[Mapping[str, Any]], path: str | Path,
             tmp.unlink()
 
 
+def _export_target(path: Path, what: str) -> None:
+    """Refuse an export file that cannot be written (SceneError naming it), before any
+    temporary file is made."""
+    if path.is_dir():
+        raise SceneError(f"cannot write the {what} export to {str(path)!r}: it is a "
+                         f"directory; give a file name such as runs.{what.lower()}")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise SceneError(f"cannot write the {what} export to {str(path)!r}: "
+                         f"{exc.strerror or exc}") from None
+
+
 def _atomic_write(path: Path, data: bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
+    _export_target(path, "CSV")
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         tmp.write_bytes(data)
         os.replace(tmp, path)
+    except OSError as exc:
+        raise SceneError(f"cannot write the CSV export to {str(path)!r}: "
+                         f"{exc.strerror or exc}") from None
     finally:
         if tmp.exists():
             tmp.unlink()
