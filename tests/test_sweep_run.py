@@ -465,3 +465,23 @@ def test_changed_base_file_rows_are_told_apart(tmp_path, capsys):
     assert main(["runs", str(store), "--sweep", str(path), "--columns", "hash"]) == 0
     out = capsys.readouterr().out
     assert "(2 rows)" in out and all(h[:12] in out for h in second.statuses), out
+
+
+def test_all_files_after_a_summary_only_run(tmp_path):
+    """A sweep run with files = "summary" and then with files = "all" (the default)
+    skipped every case as already stored, so the result.h5 and fields.vtu asked for were
+    never written. Folders with the summary alone are solved again when all files are
+    asked for, and skipped when the summary is all that is asked for."""
+    sweep = {"sweep": {"scene": "base.toml", "files": "summary"},
+             "axes": {"load.gap": [1e-6, 2e-6]}}
+    path = write_sweep(tmp_path, sweep)
+    assert bf.sweep(path, workers=1).ran == 2
+    runs = tmp_path / "sweep_runs"
+    assert not list(runs.glob("*/result.h5")), "summary alone"
+    again = bf.sweep(path, workers=1)
+    assert again.ran == 0 and again.skipped == 2, "files = summary: nothing missing"
+    full = bf.sweep(path, workers=1, files="all")
+    assert full.ran == 2 and full.all_successful, full.text()
+    assert len(list(runs.glob("*/result.h5"))) == 2 and len(list(runs.glob("*/fields.vtu"))) == 2
+    assert bf.sweep(path, workers=1, files="all").ran == 0, "now complete"
+    successes_have_files(tmp_path / "sweep.sqlite")

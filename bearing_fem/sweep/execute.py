@@ -257,7 +257,8 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
         else:
             exporter(result, tmp)
         marker = {"hash": case.hash, "kind": case.kind, "params": case.params,
-                  "status": str(result.status), "success": bool(result.success),
+                  "files": files, "status": str(result.status),
+                  "success": bool(result.success),
                   "run_time_s": run_time_s, "worker": worker_name()}
         (tmp / RUN_FILE).write_text(json.dumps(marker, indent=1, default=str) + "\n",
                                     encoding="utf-8")
@@ -291,6 +292,8 @@ def _same_outcome(run_dir: Path, marker: Mapping[str, Any]) -> bool:
     is always replaced, as a retry should)."""
     if not marker["success"] or not result_complete(run_dir, str(marker["kind"])):
         return False
+    if marker.get("files") == "all" and not has_all_files(run_dir, str(marker["kind"])):
+        return False  # a summary-only folder is replaced by the whole export
     try:
         theirs = json.loads((run_dir / RUN_FILE).read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -302,6 +305,26 @@ def result_complete(path: Path | None, kind: str) -> bool:
     """True when ``path`` is a complete result folder (its marker and summary exist)."""
     return (path is not None and (path / RUN_FILE).is_file()
             and (path / SUMMARY_FILE.get(kind, "summary.json")).is_file())
+
+
+def has_all_files(path: Path | None, kind: str) -> bool:
+    """True when a complete result folder holds the export of the result, not its summary
+    file alone (as ``files = "summary"`` writes it).
+
+    Parameters
+    ----------
+    path : Path or None
+        A result folder.
+    kind : {"scene", "bearing"}
+
+    Returns
+    -------
+    bool
+    """
+    if not result_complete(path, kind):
+        return False
+    alone = {RUN_FILE, SUMMARY_FILE.get(kind, "summary.json")}
+    return any(p.name not in alone for p in path.iterdir())  # type: ignore[union-attr]
 
 
 def adopt(case: Case, run_dir: Path) -> Outcome | None:
@@ -737,33 +760,38 @@ class SweepReport:
         return "\n".join(lines)
 
 
-def plan(cases: Sequence[Case], store: RunStore, results: Path, retry_failed: bool
-         ) -> tuple[list[Case], list[Case], list[tuple[Case, Outcome]]]:
+def plan(cases: Sequence[Case], store: RunStore, results: Path, retry_failed: bool,
+         files: str = "all") -> tuple[list[Case], list[Case], list[tuple[Case, Outcome]]]:
     """Split cases into (to run, skipped, adoptable with their outcome).
 
     A case is skipped when its row has a final status and, if successful, its result
-    folder exists; unsuccessful final rows are run again only with ``retry_failed``.
-    Rows ``pending`` or ``lost``, and successful rows whose result folder is gone, run
-    again (or are adopted from a complete result folder of the same hash).
+    folder exists (with ``files = "all"``: with the whole export, not the summary alone
+    that a ``files = "summary"`` run wrote); unsuccessful final rows are run again only
+    with ``retry_failed``. Rows ``pending`` or ``lost``, and successful rows whose result
+    folder is gone or too short, run again (or are adopted from a result folder of the
+    same hash that has the files asked for).
     """
+    def enough(path: Path | None, kind: str) -> bool:
+        return has_all_files(path, kind) if files == "all" else result_complete(path, kind)
+
     states = store.states([c.hash for c in cases])
     run, skip, adopted = [], [], []
     for c in cases:
         s = states.get(c.hash)
         if s is not None and s["status"] not in NON_FINAL:
             if s["success"]:
-                if result_complete(store.resolve(s["result_path"]), c.kind):
+                if enough(store.resolve(s["result_path"]), c.kind):
                     skip.append(c)
                     continue
-                log.info("case %s: stored as %s but its result folder is missing; running "
-                         "it again", c.hash[:12], s["status"])
+                log.info("case %s: stored as %s but its result folder is missing or holds "
+                         "the summary alone; running it again", c.hash[:12], s["status"])
             elif not retry_failed:
                 skip.append(c)
                 continue
             else:
                 run.append(c)
                 continue
-        found = adopt(c, results / c.hash)
+        found = adopt(c, results / c.hash) if enough(results / c.hash, c.kind) else None
         if found is not None:
             adopted.append((c, found))
         else:
@@ -852,7 +880,7 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
     created = not store_path.exists()
     with RunStore(store_path) as store:
         planned = store.states([c.hash for c in cases])
-        to_run, skipped, adoptable = plan(cases, store, results, retry_failed)
+        to_run, skipped, adoptable = plan(cases, store, results, retry_failed, files)
         executor = make_executor(scheduler, workers, max(1, len(to_run)))
         report = SweepReport(store=store_path, results=results,
                              executor=executor.name if to_run else "nothing to run",
