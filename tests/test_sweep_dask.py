@@ -208,3 +208,24 @@ def test_local_cluster_refuses_a_bad_worker_count(bad):
     with pytest.raises(SceneError, match=r"n_workers must be an integer in \[1, 4096\] "
                                          r"\(worker processes\), got "):
         local_cluster(bad)
+
+
+@pytest.mark.parametrize("address", ["foo bar", "localhost", "foo://x", "tcp://h:abc"])
+def test_malformed_scheduler_address_is_an_input_error(tmp_path, capsys, address):
+    """``--scheduler "foo bar"`` made distributed.Client raise a bare ValueError, whose
+    cleanup then waited 60 s and ended in a TimeoutError traceback (exit 1), leaving an
+    empty store behind. A malformed address is refused at once (exit 2, one line naming
+    the value), and nothing is written."""
+    import time
+
+    from bearing_fem.cli import main
+
+    path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml"},
+                                  "axes": {"load.gap": [1e-6]}})
+    t0 = time.monotonic()
+    assert main(["sweep", str(path), "--scheduler", address]) == 2
+    assert time.monotonic() - t0 < 20, "refused before any connection attempt"
+    err = capsys.readouterr().err
+    assert f"scheduler must be a Dask scheduler address such as tcp://10.0.0.5:8786, " \
+           f"got {address!r}" in err, err
+    assert not (tmp_path / "sweep.sqlite").exists(), "an input error writes nothing"

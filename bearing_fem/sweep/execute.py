@@ -543,6 +543,40 @@ def _again(t: Task) -> Task:
     return Task(t.case, t.run_dir, t.files, t.blas_threads, t.attempts + 1)
 
 
+def check_address(address: str) -> str:
+    """A Dask scheduler address as given, or SceneError when it cannot be one.
+
+    A malformed address (``"foo bar"``, ``"localhost"`` without a port, an unknown
+    scheme) made ``distributed.Client`` raise a bare ValueError and then wait 60 s in its
+    cleanup; it is refused at once, naming the value.
+
+    Parameters
+    ----------
+    address : str
+        ``tcp://host:port`` (``host:port`` means tcp), ``tls://host:port``, or another
+        scheme Dask knows (``inproc://``, ``ucx://``, ...).
+
+    Returns
+    -------
+    str
+        ``address``.
+    """
+    from distributed.comm import registry
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    try:
+        scheme, location = parse_address(address)
+        if scheme not in registry.backends:
+            raise ValueError(f"unknown scheme {scheme!r} (known: "
+                             f"{', '.join(sorted(registry.backends))})")
+        if scheme in ("tcp", "tls"):
+            parse_host_port(location)
+    except (ValueError, TypeError) as exc:
+        raise SceneError(f"scheduler must be a Dask scheduler address such as "
+                         f"tcp://10.0.0.5:8786, got {address!r} ({exc})") from None
+    return address
+
+
 class DaskExecutor:
     """Cases on a Dask distributed cluster.
 
@@ -587,6 +621,8 @@ class DaskExecutor:
 
         if isinstance(self.scheduler, Client):
             return self.scheduler, False
+        if isinstance(self.scheduler, str):
+            check_address(self.scheduler)
         try:
             if isinstance(self.scheduler, str):
                 client = Client(self.scheduler, timeout=self.timeout,
