@@ -485,3 +485,25 @@ def test_all_files_after_a_summary_only_run(tmp_path):
     assert len(list(runs.glob("*/result.h5"))) == 2 and len(list(runs.glob("*/fields.vtu"))) == 2
     assert bf.sweep(path, workers=1, files="all").ran == 0, "now complete"
     successes_have_files(tmp_path / "sweep.sqlite")
+
+
+def test_dry_run_counts_the_folders_it_would_record(tmp_path):
+    """After a client died with finished result folders not yet recorded, a dry run said
+    "2 cases: 1 to run, 0 already in ..." (the numbers did not add up to the cases); it
+    names the folders the run would record."""
+    path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml"},
+                                  "axes": {"load.gap": [1e-6, 2e-6]}})
+    bf.sweep(path, workers=1)
+    store = tmp_path / "sweep.sqlite"
+    for suffix in ("", "-wal", "-shm"):  # the client's store is gone; the folders stay
+        Path(f"{store}{suffix}").unlink(missing_ok=True)
+    shutil.rmtree(next((tmp_path / "sweep_runs").iterdir()))
+    for make_store in (False, True):  # without a store, and with an empty one
+        if make_store:
+            with RunStore(store):
+                pass
+        report = bf.sweep(path, workers=1, dry_run=True)
+        assert (len(report.to_run), report.adopted, report.skipped) == (1, 1, 0), report
+        assert report.text().startswith("2 cases: 1 to run, 1 to record from earlier "
+                                        "result folders, 0 already in"), report.text()
+    assert bf.sweep(path, workers=1).adopted == 1, "as the dry run said"

@@ -780,8 +780,10 @@ class SweepReport:
     def text(self) -> str:
         """A few lines for a terminal."""
         if self.dry_run:
-            return (f"{self.cases} cases: {len(self.to_run)} to run, {self.skipped} already "
-                    f"in {self.store} (dry run: nothing solved)")
+            adopt = (f"{self.adopted} to record from earlier result folders, "
+                     if self.adopted else "")
+            return (f"{self.cases} cases: {len(self.to_run)} to run, {adopt}{self.skipped} "
+                    f"already in {self.store} (dry run: nothing solved)")
         lines = [f"{self.cases} cases: {self.ran} solved now, {self.adopted} recorded from "
                  f"earlier result folders, {self.skipped} already in the store",
                  f"  {self.successes} successful, {self.failures} unsuccessful, "
@@ -908,10 +910,14 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
     results = Path(results) if results is not None else \
         store_path.parent / f"{store_path.stem}_runs"
     results = results.resolve()
-    if dry_run and not store_path.exists():  # nothing stored yet: every case would run
+    if dry_run and not store_path.exists():  # nothing stored: every case runs or is adopted
+        ready = {c.hash for c in cases
+                 if (has_all_files if files == "all" else result_complete)(
+                     results / c.hash, c.kind) and adopt(c, results / c.hash) is not None}
         executor = make_executor(scheduler, workers, max(1, len(cases)))
         return SweepReport(store=store_path, results=results, executor=executor.name,
-                           cases=len(cases), dry_run=True, to_run=[c.hash for c in cases],
+                           cases=len(cases), dry_run=True, adopted=len(ready),
+                           to_run=[c.hash for c in cases if c.hash not in ready],
                            wall_time_s=time.perf_counter() - t0)
     created = not store_path.exists()
     with RunStore(store_path) as store:
