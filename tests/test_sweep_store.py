@@ -392,3 +392,18 @@ def test_export_to_a_directory_is_an_input_error(tmp_path, capsys):
         == ["out"], "no temporary file left"
     with pytest.raises(SceneError, match="it is a directory"):
         export_csv([], tmp_path / "out", ["hash"])
+
+
+def test_query_one_column_or_filter_as_a_string(tmp_path):
+    """query_runs(store, columns="h_central") looked for the columns 'h', '_', 'c', ...
+    and where="load.gap>1e-6" for the filter 'l'; a string is one name (or comma-separated
+    names, as on the command line) and one filter."""
+    path = tmp_path / "s.sqlite"
+    with RunStore(path) as store:
+        for g in (1e-6, 2e-6):
+            store.write(Case({"load.gap": g}, rigid(g)), outcome(h_central=g))
+        assert [r["h_central"] for r in store.rows(columns="h_central")] == [1e-6, 2e-6]
+    rows, cols = query_runs(path, columns="h_central", where="load.gap>1e-6")
+    assert cols == ["h_central"] and rows == [{"h_central": 2e-6}]
+    rows, cols = query_runs(path, columns="load.gap, h_central")
+    assert cols == ["load.gap", "h_central"] and len(rows) == 2

@@ -144,11 +144,13 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
     status : str or sequence of str, optional
         Statuses to keep (also the groups ``success``, ``failed``, ``final``,
         ``unfinished``; see :meth:`RunStore.rows`).
-    where : sequence, optional
-        Filters ``"COLUMN OP VALUE"`` (``"load.force>=20"``) or (column, op, value).
-    columns : sequence of str or "all" or "default", optional
-        Columns to return; ``default`` (or None): hash, status, the parameters and the
-        main summary columns present; ``all``: every column.
+    where : str or sequence, optional
+        Filters ``"COLUMN OP VALUE"`` (``"load.force>=20"``) or (column, op, value); one
+        filter may be given as a string.
+    columns : str or sequence of str, optional
+        Columns to return (a string: one name, or comma-separated names as on the
+        command line); ``default`` (or None): hash, status, the parameters and the main
+        summary columns present; ``all``: every column.
     limit : int, optional
     sweep : str or Path or SweepSpec or mapping or sequence of Case, optional
         Keep the rows of this sweep's cases only (as :func:`sweep` takes it; a sweep file
@@ -160,6 +162,10 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
     (list of dict, list of str)
         The rows (sorted by the parameter columns) and the column names.
     """
+    if isinstance(where, str):  # one filter, not its characters
+        where = [where]
+    if isinstance(columns, str) and columns not in ("all", "default"):
+        columns = [c.strip() for c in columns.split(",")]
     hashes = None
     if sweep is not None:
         if isinstance(sweep, (str, Path)):

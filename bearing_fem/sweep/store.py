@@ -498,6 +498,8 @@ class RunStore:
                                   or limit < 1):
             raise SceneError(f"limit must be a positive whole number of rows, got {limit!r}")
         have = self.columns()
+        if isinstance(columns, str):  # one column, not its characters
+            columns = [columns]
         cols = list(columns) if columns else have
         missing = [c for c in cols if c not in have]
         if missing:
