@@ -200,6 +200,7 @@ def run_bench(quick: bool = False, repeats: int | None = None,
         Coarse bearing contact grids and two repetitions (about 6 s on 2 idle cores).
     repeats : int, optional
         Repetitions per case (default 2 quick, 3 full); the minimum time is reported.
+        ValueError unless a whole number >= 1.
     progress : callable, optional
         ``progress(case, repetition, row)`` after each solve.
 
@@ -214,8 +215,9 @@ def run_bench(quick: bool = False, repeats: int | None = None,
         bearing's contacts) and ``dofs``.
     """
     n = repeats if repeats is not None else REPEATS[bool(quick)]
-    if n < 1:
-        raise ValueError(f"repeats must be at least 1, got {n}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"repeats must be a whole number of runs >= 1, got {n!r}")
+    n = int(n)
     jobs = cases(quick)
     load0 = os.getloadavg()[0]
     rows: dict[str, dict[str, Any]] = {}

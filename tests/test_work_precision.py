@@ -251,3 +251,13 @@ def test_bench_quick_default_repeats(tmp_path, capsys):
     d = json.loads(path.read_text())
     assert d["repeats"] == 2
     assert all(len(r["times_s"]) == 2 and r["time_s"] == min(r["times_s"]) for r in d["cases"])
+
+
+@pytest.mark.parametrize("bad", [0, 2.5, "2", True])
+def test_run_bench_refuses_a_bad_repeat_count(bad):
+    """run_bench(repeats=2.5) ended in a TypeError from range() and repeats="2" in one
+    from '<'; both are a ValueError naming the argument and the value, before any
+    solve."""
+    with pytest.raises(ValueError, match=r"repeats must be a whole number of runs >= 1, "
+                                         r"got "):
+        bench.run_bench(quick=True, repeats=bad)
