@@ -507,3 +507,36 @@ def test_dry_run_counts_the_folders_it_would_record(tmp_path):
         assert report.text().startswith("2 cases: 1 to run, 1 to record from earlier "
                                         "result folders, 0 already in"), report.text()
     assert bf.sweep(path, workers=1).adopted == 1, "as the dry run said"
+
+
+def test_temporary_folders_of_killed_workers_are_removed(tmp_path):
+    """A worker killed while writing a case's files left its hidden temporary folder
+    (with every file written so far) in the results folder for good. The next run
+    removes those whose process on this host is gone, or that are older than a day;
+    those of running writers and of other hosts stay."""
+    import socket
+    import time
+
+    path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml"},
+                                  "axes": {"load.gap": [1e-6]}})
+    runs = tmp_path / "sweep_runs"
+    runs.mkdir()
+    gone = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True).stdout.strip()
+    host, h = socket.gethostname(), "ab" * 32
+    names = {"dead": f".{h}.tmp-{gone}-0123abcd-{host}",
+             "running": f".{h}.tmp-{os.getpid()}-0123abcd-{host}",
+             "other_host": f".{h}.tmp-{gone}-0123abcd-elsewhere.example",
+             "old_other_host": f".{h}.old-{gone}-89abcdef-elsewhere.example",
+             "unnamed_host": f".{h}.tmp-{gone}-01234567",
+             "not_ours": ".keep-me"}
+    for name in names.values():
+        (runs / name).mkdir()
+        (runs / name / "fields.vtu").write_text("partial")
+    day_ago = time.time() - 2 * 24 * 3600
+    os.utime(runs / names["old_other_host"], (day_ago, day_ago))
+    report = bf.sweep(path, workers=1)
+    assert report.ran == 1 and report.all_successful
+    left = {p.name for p in runs.iterdir() if p.name.startswith(".")}
+    assert left == {names[k] for k in ("running", "other_host", "unnamed_host", "not_ours")}
+    assert not list(runs.glob(".*.tmp-*-*-*/run.json")), "the case's own folder is in place"

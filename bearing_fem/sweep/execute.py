@@ -22,6 +22,7 @@ from __future__ import annotations
 import json
 import logging
 import os
+import re
 import secrets
 import shutil
 import socket
@@ -247,7 +248,7 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
     removed after). ``files = "summary"`` writes the summary file alone.
     """
     run_dir.parent.mkdir(parents=True, exist_ok=True)
-    token = f"{os.getpid()}-{secrets.token_hex(4)}"
+    token = f"{os.getpid()}-{secrets.token_hex(4)}-{socket.gethostname()}"
     tmp = run_dir.with_name(f".{run_dir.name}.tmp-{token}")
     try:
         tmp.mkdir()
@@ -284,6 +285,60 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     return run_dir
+
+
+#: Hidden folder of an unfinished :func:`publish`: ``.<hash>.tmp-<pid>-<8 hex>[-<host>]``
+#: (``old`` for a folder moved aside).
+_TEMP_RUN_DIR = re.compile(r"^\.[0-9a-f]{64}\.(?:tmp|old)-(?P<pid>\d+)-[0-9a-f]{8}"
+                           r"(?:-(?P<host>.+))?$")
+#: Age [s] after which such a folder counts as stale whatever wrote it.
+STALE_RUN_DIR_AGE = 24 * 3600.0
+
+
+def clean_stale_run_dirs(results: Path, max_age: float = STALE_RUN_DIR_AGE) -> list[Path]:
+    """Remove the hidden temporary folders that killed workers left in ``results``.
+
+    A worker (or a serial client) killed while it wrote a case's files leaves its
+    temporary folder ``.<hash>.tmp-<pid>-<random>-<host>`` behind, with every file
+    written so far (a point result's ``fields.vtu`` is tens of MB). Such a folder is
+    removed when its process, on this host, no longer runs, or when it is older than
+    ``max_age`` (a folder of another host, or one named without its host). Folders of
+    running writers, result folders and every other file are left alone.
+
+    Parameters
+    ----------
+    results : Path
+        The sweep's results folder (nothing happens if it does not exist).
+    max_age : float
+        Age [s] beyond which a temporary folder counts as stale whatever wrote it.
+
+    Returns
+    -------
+    list of Path
+        The removed folders.
+    """
+    removed: list[Path] = []
+    try:
+        entries = [p for p in Path(results).iterdir() if p.name.startswith(".")]
+    except OSError:
+        return removed
+    host, now = socket.gethostname(), time.time()
+    for path in entries:
+        m = _TEMP_RUN_DIR.match(path.name)
+        if m is None or path.is_symlink() or not path.is_dir():
+            continue
+        try:
+            age = now - path.stat().st_mtime
+        except OSError:
+            continue
+        dead = m.group("host") == host and not _process_alive(int(m.group("pid")))
+        if dead or age > max_age:
+            shutil.rmtree(path, ignore_errors=True)
+            removed.append(path)
+    if removed:
+        log.info("removed %d temporary folder(s) of killed workers in %s", len(removed),
+                 results)
+    return removed
 
 
 def _same_outcome(run_dir: Path, marker: Mapping[str, Any]) -> bool:
@@ -942,6 +997,8 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
                 raise
         bar = SweepProgress(len(to_run), enabled=None if progress else False)
         try:
+            if to_run:
+                clean_stale_run_dirs(results)
             store.fill_params(skipped)
             for c, out in adoptable:
                 store.write(c, out)
