@@ -21,6 +21,7 @@ accuracy these settings buy.
 """
 from __future__ import annotations
 
+import errno
 import json
 import os
 import platform
@@ -34,6 +35,7 @@ import numpy as np
 from . import units
 from .bearing import load_example, solve_bearing
 from .contacts.dispatch import solve
+from .result import json_safe
 from .scene import (Contact, Kinematics, Load, Lubricant, Materials, Model, Scene, Thermal,
                     Traction)
 from .version import VERSION
@@ -143,6 +145,11 @@ def cases(quick: bool) -> dict[str, Callable[[], dict[str, Any]]]:
     ----------
     quick : bool
         Coarse contact grids for the bearing case.
+
+    Returns
+    -------
+    dict
+        Case name -> a function without arguments that solves it and returns its row.
     """
     line, point, thermal = moes_line_scene(), moes_point_scene(), thermal_line_scene()
     bearing_nodes = QUICK_BEARING_NODES if quick else None
@@ -151,14 +158,36 @@ def cases(quick: bool) -> dict[str, Callable[[], dict[str, Any]]]:
             "bearing_6209": lambda: _bearing_row(bearing_nodes)}
 
 
+def cpu_model() -> str | None:
+    """The CPU's model name (``/proc/cpuinfo`` on Linux, where ``platform.processor()``
+    is empty; ``platform.processor()`` elsewhere), or None when unknown."""
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8", errors="replace") as fh:
+            for line in fh:
+                key, _, value = line.partition(":")
+                if key.strip() in ("model name", "Model", "cpu model", "Hardware") \
+                        and value.strip():
+                    return value.strip()
+    except OSError:
+        pass
+    return platform.processor() or None
+
+
 def machine_info() -> dict[str, Any]:
-    """The machine and software a bench ran on: platform, CPU count, Python, numpy, scipy."""
+    """The machine and software a bench ran on.
+
+    Returns
+    -------
+    dict
+        ``platform``, ``machine`` (architecture), ``processor``, ``cpu_model`` (the CPU's
+        model name, None when unknown), ``cpu_count``, ``python``, ``numpy``, ``scipy``.
+    """
     import scipy
 
     return {"platform": platform.platform(), "machine": platform.machine(),
-            "processor": platform.processor(), "cpu_count": os.cpu_count(),
-            "python": platform.python_version(), "numpy": np.__version__,
-            "scipy": scipy.__version__}
+            "processor": platform.processor(), "cpu_model": cpu_model(),
+            "cpu_count": os.cpu_count(), "python": platform.python_version(),
+            "numpy": np.__version__, "scipy": scipy.__version__}
 
 
 def run_bench(quick: bool = False, repeats: int | None = None,
@@ -168,9 +197,10 @@ def run_bench(quick: bool = False, repeats: int | None = None,
     Parameters
     ----------
     quick : bool
-        Coarse bearing contact grids and two repetitions (about 20 s on 2 cores).
+        Coarse bearing contact grids and two repetitions (about 6 s on 2 idle cores).
     repeats : int, optional
         Repetitions per case (default 2 quick, 3 full); the minimum time is reported.
+        ValueError unless a whole number >= 1.
     progress : callable, optional
         ``progress(case, repetition, row)`` after each solve.
 
@@ -185,8 +215,9 @@ def run_bench(quick: bool = False, repeats: int | None = None,
         bearing's contacts) and ``dofs``.
     """
     n = repeats if repeats is not None else REPEATS[bool(quick)]
-    if n < 1:
-        raise ValueError(f"repeats must be at least 1, got {n}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"repeats must be a whole number of runs >= 1, got {n!r}")
+    n = int(n)
     jobs = cases(quick)
     load0 = os.getloadavg()[0]
     rows: dict[str, dict[str, Any]] = {}
@@ -208,7 +239,19 @@ def run_bench(quick: bool = False, repeats: int | None = None,
 
 
 def format_table(report: dict[str, Any]) -> str:
-    """The report as a fixed-width text table (one line per case)."""
+    """The report as a fixed-width text table.
+
+    Parameters
+    ----------
+    report : dict
+        A report of :func:`run_bench`.
+
+    Returns
+    -------
+    str
+        One line per case (time [s], Newton iterations, status, h_central [m], relative
+        error estimate), then a line naming the version, the machine and the load average.
+    """
     def cell(v: Any, fmt: str) -> str:
         if v is None:
             return "-"
@@ -221,7 +264,8 @@ def format_table(report: dict[str, Any]) -> str:
     lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths)) for b in body]
     m = report["machine"]
     la = report["load_average"]
-    lines.append(f"bearing_fem {report['version']}, {m['platform']}, {m['cpu_count']} CPUs, "
+    cpu = f"{m['cpu_model']}, " if m.get("cpu_model") else ""
+    lines.append(f"bearing_fem {report['version']}, {m['platform']}, {cpu}{m['cpu_count']} CPUs, "
                  f"Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}; "
                  f"min of {report['repeats']} interleaved runs; load average "
                  f"{la[0]:.2f} -> {la[1]:.2f}")
@@ -229,9 +273,35 @@ def format_table(report: dict[str, Any]) -> str:
 
 
 def write_json(report: dict[str, Any], path: str | Path) -> Path:
-    """Write the report as JSON (via a temporary name and ``os.replace``)."""
+    """Write the report as strict JSON (via a temporary name and ``os.replace``).
+
+    Parameters
+    ----------
+    report : dict
+        A report of :func:`run_bench`; non-finite numbers are written as ``null``.
+    path : str or Path
+        The JSON file (not a directory).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    OSError
+        The file cannot be written (``path`` is a directory, its folder does not exist,
+        ...); no temporary file is left behind.
+    """
     path = Path(path)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(report, indent=1))
-    os.replace(tmp, path)
+    if path.is_dir():
+        raise IsADirectoryError(errno.EISDIR, "is a directory, not a file", str(path))
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        tmp.write_text(json.dumps(json_safe(report), indent=1, allow_nan=False) + "\n",
+                       encoding="utf-8")
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
     return path

@@ -329,6 +329,9 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         raise _InputError(f"--repeat must be at least 1, got {args.repeat}")
     if args.json and not Path(args.json).resolve().parent.is_dir():
         raise _InputError(f"cannot write {args.json!r}: its directory does not exist")
+    if args.json and Path(args.json).is_dir():
+        raise _InputError(f"cannot write {args.json!r}: it is a directory; give a file "
+                          "name such as bench.json")
     report = run_bench(quick=args.quick, repeats=args.repeat)
     if not args.quiet:
         print(format_table(report))
@@ -370,7 +373,8 @@ def _cmd_runs(args: argparse.Namespace) -> int:
         columns = "all"
     rows, cols = query_runs(args.store, status=args.status, where=args.where,
                             columns=[columns] if isinstance(columns, str) and columns not in
-                            ("all", "default") else columns, limit=args.limit)
+                            ("all", "default") else columns, limit=args.limit,
+                            sweep=args.sweep)
     if args.csv or args.parquet:
         text = export_runs(rows, cols, csv=args.csv, parquet=args.parquet)
         if text is not None:
@@ -429,6 +433,9 @@ def _add_sweep_parsers(sub: Any) -> None:
                    help="comma-separated columns, or 'all' (default: hash, status, the "
                         "parameters and the main results; exports: all)")
     p.add_argument("--limit", type=int, default=None, metavar="N", help="at most N rows")
+    p.add_argument("--sweep", metavar="SWEEP.toml", default=None,
+                   help="keep the rows of this sweep file's cases (as the file and its base "
+                        "file read now)")
     p.add_argument("--csv", metavar="FILE", default=None,
                    help="write CSV to FILE ('-' for standard output)")
     p.add_argument("--parquet", metavar="FILE", default=None, help="write Parquet to FILE")

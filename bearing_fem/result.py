@@ -60,7 +60,26 @@ LINE_TOTALS = (("load", "load_total", "N"), ("friction_force", "friction_force_t
 
 
 def summary_units(kind: str) -> dict[str, str]:
-    """Units of the summary keys for a ``"line"`` (per metre) or ``"point"`` contact."""
+    """Units of the summary keys of a contact.
+
+    Parameters
+    ----------
+    kind : {"line", "point"}
+        The contact kind (``scene.contact.kind``); line-contact forces and powers are per
+        metre of length (N/m, W/m).
+
+    Returns
+    -------
+    dict
+        Summary key -> unit.
+
+    Raises
+    ------
+    ValueError
+        ``kind`` is neither ``"line"`` nor ``"point"`` (it used to give the line units).
+    """
+    if kind not in ("line", "point"):
+        raise ValueError(f"summary_units: kind must be 'line' or 'point', got {kind!r}")
     if kind == "point":
         return dict(_UNITS_POINT)
     per_m = {"N": "N/m", "W": "W/m"}

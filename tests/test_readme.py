@@ -31,6 +31,14 @@ def test_readme_has_blocks():
 @pytest.mark.parametrize("index", range(len(PYTHON_BLOCKS)))
 def test_python_block_runs(index, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # blocks write output folders relative to the cwd
+    if "ball_sweep.toml" in PYTHON_BLOCKS[index]:  # the sweep block: a small stand-in
+        (tmp_path / "ball.toml").write_text(
+            '[contact]\nkind = "line"\nrx = 0.01\n[lubricant]\nviscosity = 0.01\n'
+            '[model]\nelasticity = "rigid"\n[load]\ngap = 1e-6\n[kinematics]\nu1 = 1.0\n'
+            'u2 = 1.0\n[mesh]\nnodes = 101\n', encoding="utf-8")
+        (tmp_path / "ball_sweep.toml").write_text(
+            '[sweep]\nscene = "ball.toml"\n[axes]\n"load.gap" = [1e-6, 2e-6]\n',
+            encoding="utf-8")
     script = tmp_path / f"readme_block_{index}.py"
     script.write_text(PYTHON_BLOCKS[index], encoding="utf-8")
     runpy.run_path(str(script), run_name="__main__")

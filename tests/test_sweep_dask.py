@@ -14,6 +14,7 @@ import dask  # noqa: E402
 from distributed.diagnostics.plugin import WorkerPlugin  # noqa: E402
 
 import bearing_fem as bf  # noqa: E402
+from bearing_fem.errors import SceneError  # noqa: E402
 from bearing_fem.sweep import RunStore, SweepSpec, local_cluster, query_runs  # noqa: E402
 from bearing_fem.sweep.execute import (WORKER_MALLOC_ENV, malloc_environment,  # noqa: E402
                                        slow_malloc_workers)
@@ -197,3 +198,34 @@ def test_unreachable_scheduler_leaves_no_store(tmp_path, monkeypatch):
     with pytest.raises(SceneError, match="cannot reach the Dask scheduler"):
         bf.sweep([({"load.gap": 1e-6}, scene)], store=store, scheduler="tcp://127.0.0.1:1")
     assert not store.exists() and not list(tmp_path.iterdir()), list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("bad", [2.5, 0, "2", True])
+def test_local_cluster_refuses_a_bad_worker_count(bad):
+    """local_cluster(2.5) started 2 workers without a word and local_cluster("a") raised a
+    bare ValueError; every count that is not a whole number >= 1 is a SceneError naming
+    the argument and the value, before any process starts."""
+    with pytest.raises(SceneError, match=r"n_workers must be an integer in \[1, 4096\] "
+                                         r"\(worker processes\), got "):
+        local_cluster(bad)
+
+
+@pytest.mark.parametrize("address", ["foo bar", "localhost", "foo://x", "tcp://h:abc"])
+def test_malformed_scheduler_address_is_an_input_error(tmp_path, capsys, address):
+    """``--scheduler "foo bar"`` made distributed.Client raise a bare ValueError, whose
+    cleanup then waited 60 s and ended in a TimeoutError traceback (exit 1), leaving an
+    empty store behind. A malformed address is refused at once (exit 2, one line naming
+    the value), and nothing is written."""
+    import time
+
+    from bearing_fem.cli import main
+
+    path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml"},
+                                  "axes": {"load.gap": [1e-6]}})
+    t0 = time.monotonic()
+    assert main(["sweep", str(path), "--scheduler", address]) == 2
+    assert time.monotonic() - t0 < 20, "refused before any connection attempt"
+    err = capsys.readouterr().err
+    assert f"scheduler must be a Dask scheduler address such as tcp://10.0.0.5:8786, " \
+           f"got {address!r}" in err, err
+    assert not (tmp_path / "sweep.sqlite").exists(), "an input error writes nothing"

@@ -377,3 +377,166 @@ def test_solve_quiet_prints_nothing(tmp_path, capsys):
     assert main(["solve", str(scene), "--out", str(tmp_path / "out"), "--quiet"]) == 0
     assert capsys.readouterr() == ("", "")
     assert (tmp_path / "out" / "summary.json").is_file()
+
+
+CLIENT_SCRIPT = '''
+import os, sys, time
+from pathlib import Path
+from bearing_fem.scene import Scene
+from bearing_fem.sweep import Case, execute
+from bearing_fem.sweep.execute import PoolExecutor, Task
+
+def slow(task):
+    Path(sys.argv[1], f"{os.getpid()}.pid").write_text("")
+    time.sleep(2.0)
+    return {"status": "linear"}
+
+if __name__ == "__main__":
+    execute.run_task = slow
+    scene = Scene.from_dict({"contact": {"kind": "line", "rx": 0.01},
+                             "lubricant": {"viscosity": 0.01}, "load": {"gap": 1e-6},
+                             "kinematics": {"u1": 1.0, "u2": 1.0},
+                             "model": {"elasticity": "rigid"}})
+    tasks = [Task(Case({"i": i}, scene), sys.argv[1]) for i in range(4)]
+    PoolExecutor(2).run(tasks, lambda t, out: None)
+'''
+
+
+def _running(pid: int) -> bool:
+    """True while process ``pid`` runs (not gone, not a zombie)."""
+    try:
+        os.kill(pid, 0)
+        state = Path(f"/proc/{pid}/stat").read_bytes().rsplit(b")", 1)[1].split()[0]
+    except (ProcessLookupError, FileNotFoundError):
+        return False
+    return state != b"Z"
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads /proc")
+def test_pool_workers_exit_when_the_client_is_killed(tmp_path):
+    """A client killed with SIGKILL (or by a batch system) cannot shut its pool down; its
+    worker processes must not wait for work forever (keeping their memory and the
+    client's stdout open, so that a caller reading that pipe never returns). They finish
+    the case they run and exit."""
+    import signal
+    import time
+
+    script = tmp_path / "client.py"
+    script.write_text(CLIENT_SCRIPT, encoding="utf-8")
+    proc = subprocess.Popen([sys.executable, str(script), str(tmp_path)], cwd=tmp_path,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    t0 = time.monotonic()
+    while len(list(tmp_path.glob("*.pid"))) < 2 and time.monotonic() - t0 < 120:
+        time.sleep(0.05)
+    pids = [int(p.stem) for p in tmp_path.glob("*.pid")]
+    assert len(pids) == 2, "both pool workers started a case"
+    proc.kill()
+    proc.wait(timeout=60)
+    t1 = time.monotonic()
+    alive = pids
+    while alive and time.monotonic() - t1 < 20:
+        time.sleep(0.2)
+        alive = [p for p in pids if _running(p)]
+    for p in alive:  # clean up before failing
+        os.kill(p, signal.SIGKILL)
+    assert not alive, ("pool workers still running 20 s after their client was killed "
+                       "(each case takes 2 s, the check runs every second)")
+
+
+def test_changed_base_file_rows_are_told_apart(tmp_path, capsys):
+    """Editing the base file and running the sweep again adds new rows with the same
+    parameter values as the old ones (other scenes, other hashes). A query by parameters
+    then silently mixed both; the report now says so and ``runs --sweep`` (``query_runs(
+    sweep=...)``) selects the rows of the sweep as its files read now."""
+    sweep = {"sweep": {"scene": "base.toml"}, "axes": {"load.gap": [1e-6, 2e-6]}}
+    path = write_sweep(tmp_path, sweep)
+    store = tmp_path / "sweep.sqlite"
+    first = bf.sweep(path, workers=1)
+    assert first.others_same_params == 0 and "note:" not in first.text()
+    write_sweep(tmp_path, sweep, {**BASE, "lubricant": {"viscosity": 0.1, "piezo": 5e-8}})
+    second = bf.sweep(path, workers=1)
+    assert second.ran == 2 and second.others_same_params == 2, second
+    assert "2 row(s) with the parameters of cases of this sweep" in second.text()
+    rows, _ = query_runs(store, where=["load.gap=1e-6"])
+    assert len(rows) == 2, "both versions of the base file are in the store"
+    rows, _ = query_runs(store, where=["load.gap=1e-6"], sweep=path, columns="all")
+    assert len(rows) == 1 and rows[0]["hash"] in second.statuses, rows
+    assert json.loads(rows[0]["scene"])["lubricant"]["viscosity"] == 0.1, "the new base"
+    assert main(["runs", str(store), "--sweep", str(path), "--columns", "hash"]) == 0
+    out = capsys.readouterr().out
+    assert "(2 rows)" in out and all(h[:12] in out for h in second.statuses), out
+
+
+def test_all_files_after_a_summary_only_run(tmp_path):
+    """A sweep run with files = "summary" and then with files = "all" (the default)
+    skipped every case as already stored, so the result.h5 and fields.vtu asked for were
+    never written. Folders with the summary alone are solved again when all files are
+    asked for, and skipped when the summary is all that is asked for."""
+    sweep = {"sweep": {"scene": "base.toml", "files": "summary"},
+             "axes": {"load.gap": [1e-6, 2e-6]}}
+    path = write_sweep(tmp_path, sweep)
+    assert bf.sweep(path, workers=1).ran == 2
+    runs = tmp_path / "sweep_runs"
+    assert not list(runs.glob("*/result.h5")), "summary alone"
+    again = bf.sweep(path, workers=1)
+    assert again.ran == 0 and again.skipped == 2, "files = summary: nothing missing"
+    full = bf.sweep(path, workers=1, files="all")
+    assert full.ran == 2 and full.all_successful, full.text()
+    assert len(list(runs.glob("*/result.h5"))) == 2 and len(list(runs.glob("*/fields.vtu"))) == 2
+    assert bf.sweep(path, workers=1, files="all").ran == 0, "now complete"
+    successes_have_files(tmp_path / "sweep.sqlite")
+
+
+def test_dry_run_counts_the_folders_it_would_record(tmp_path):
+    """After a client died with finished result folders not yet recorded, a dry run said
+    "2 cases: 1 to run, 0 already in ..." (the numbers did not add up to the cases); it
+    names the folders the run would record."""
+    path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml"},
+                                  "axes": {"load.gap": [1e-6, 2e-6]}})
+    bf.sweep(path, workers=1)
+    store = tmp_path / "sweep.sqlite"
+    for suffix in ("", "-wal", "-shm"):  # the client's store is gone; the folders stay
+        Path(f"{store}{suffix}").unlink(missing_ok=True)
+    shutil.rmtree(next((tmp_path / "sweep_runs").iterdir()))
+    for make_store in (False, True):  # without a store, and with an empty one
+        if make_store:
+            with RunStore(store):
+                pass
+        report = bf.sweep(path, workers=1, dry_run=True)
+        assert (len(report.to_run), report.adopted, report.skipped) == (1, 1, 0), report
+        assert report.text().startswith("2 cases: 1 to run, 1 to record from earlier "
+                                        "result folders, 0 already in"), report.text()
+    assert bf.sweep(path, workers=1).adopted == 1, "as the dry run said"
+
+
+def test_temporary_folders_of_killed_workers_are_removed(tmp_path):
+    """A worker killed while writing a case's files left its hidden temporary folder
+    (with every file written so far) in the results folder for good. The next run
+    removes those whose process on this host is gone, or that are older than a day;
+    those of running writers and of other hosts stay."""
+    import socket
+    import time
+
+    path = write_sweep(tmp_path, {"sweep": {"scene": "base.toml"},
+                                  "axes": {"load.gap": [1e-6]}})
+    runs = tmp_path / "sweep_runs"
+    runs.mkdir()
+    gone = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True).stdout.strip()
+    host, h = socket.gethostname(), "ab" * 32
+    names = {"dead": f".{h}.tmp-{gone}-0123abcd-{host}",
+             "running": f".{h}.tmp-{os.getpid()}-0123abcd-{host}",
+             "other_host": f".{h}.tmp-{gone}-0123abcd-elsewhere.example",
+             "old_other_host": f".{h}.old-{gone}-89abcdef-elsewhere.example",
+             "unnamed_host": f".{h}.tmp-{gone}-01234567",
+             "not_ours": ".keep-me"}
+    for name in names.values():
+        (runs / name).mkdir()
+        (runs / name / "fields.vtu").write_text("partial")
+    day_ago = time.time() - 2 * 24 * 3600
+    os.utime(runs / names["old_other_host"], (day_ago, day_ago))
+    report = bf.sweep(path, workers=1)
+    assert report.ran == 1 and report.all_successful
+    left = {p.name for p in runs.iterdir() if p.name.startswith(".")}
+    assert left == {names[k] for k in ("running", "other_host", "unnamed_host", "not_ours")}
+    assert not list(runs.glob(".*.tmp-*-*-*/run.json")), "the case's own folder is in place"

@@ -300,3 +300,110 @@ def test_error_estimate_columns_are_dimensionless(tmp_path):
                          "worker": "w", "attempts": 1})
             info = store.column_info()
         assert all(info[c]["unit"] == "1" for c in rel), {c: info[c] for c in rel}
+
+
+def test_column_units_of_line_and_point_rows_in_one_store(tmp_path):
+    """A line contact's load is in N/m, a point contact's in N. A store holding both (two
+    sweeps into one store) labelled the column with the first unit written, so
+    ``bearing-fem runs`` printed the point loads under "load [N/m]"; the column's unit
+    names both."""
+    import bearing_fem as bf
+
+    point = Scene.from_dict({"contact": {"kind": "point", "rx": 0.01, "ry": 0.01},
+                             "lubricant": {"viscosity": 0.01},
+                             "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": 1e-6},
+                             "model": {"elasticity": "rigid"}, "mesh": {"nodes": [21, 21]}})
+    path = tmp_path / "runs.sqlite"
+    with RunStore(path) as store:
+        for i, scene in enumerate((rigid(1e-6), point, rigid(2e-6))):
+            r = bf.solve(scene)
+            store.write(Case({"i": i}, scene),
+                        {"status": r.status, "success": r.success, "message": r.message,
+                         "summary": r.summary(), "result_path": None, "run_time_s": 0.1,
+                         "worker": "w", "attempts": 1})
+        info = store.column_info()
+    assert info["load"]["unit"] == "N/m or N", info["load"]
+    assert info["heat_power"]["unit"] == "W/m or W", info["heat_power"]
+    assert info["h_central"]["unit"] == "m", "one unit where the rows agree"
+    from bearing_fem.sweep import store_units
+    assert store_units(path)["friction_force"] == "N/m or N"
+
+
+def test_every_number_of_a_bearing_row_has_a_unit(tmp_path):
+    """The run store takes its column units from the summary's ``units``. A bearing's
+    summary named none for its tables' numbers, so the store listed
+    load_balance.radial_sum (N), energy_balance.torque_times_speed (W),
+    load_distribution.load_zone_half_angle_deg (deg), kinematics.element_rpm (1/min), ...
+    without a unit. Every float column of a bearing row has one now (integers are counts
+    and indices)."""
+    from bearing_fem.bearing import Bearing, solve_bearing
+
+    bearing = Bearing.from_dict({
+        "bearing": {"type": "cylindrical-roller", "bore": 0.03, "outside_diameter": 0.062,
+                    "element_diameter": 0.009, "elements": 13, "effective_length": 0.009,
+                    "pitch_diameter": 0.046, "radial_clearance": 5e-6},
+        "lubricant": {"viscosity": 0.05, "piezo": 2e-8},
+        "operation": {"inner_rpm": 1500.0, "radial_load": 2000.0},
+        "mesh": {"line_nodes": 201}})
+    r = solve_bearing(bearing)
+    assert r.success, r.message
+    cols, units = flatten_summary(r.summary())
+    floats = sorted(c for c, v in cols.items() if isinstance(v, float))
+    assert {"load_balance.radial_sum", "energy_balance.torque_times_speed",
+            "load_distribution.max_element_load", "kinematics.element_rpm"} <= set(floats)
+    assert [c for c in floats if not units.get(c)] == [], units
+    assert units["load_balance.radial_sum"] == "N"
+    assert units["energy_balance.torque_times_speed"] == "W"
+    assert units["load_distribution.load_zone_half_angle_deg"] == "deg"
+
+
+def test_filter_value_that_is_not_a_number_on_a_number_column(tmp_path):
+    """``--where "load.force>=2O"`` (a letter O) compared the numbers with the text '2O'
+    and listed no row (or, with <, every row) without a word; it is refused naming the
+    column and the value. Numbers JSON does not read (".5", "+2") are numbers."""
+    path = tmp_path / "s.sqlite"
+    cases = [Case({"load.gap": g}, rigid(g)) for g in (1e-6, 2e-6)]
+    with RunStore(path) as store:
+        store.write(cases[0], outcome(h_central=0.25))
+        store.write(cases[1], outcome(h_central=0.75))
+    for bad in ("h_central>abc", "load.gap<=1e-6x", "h_central=O.5"):
+        with pytest.raises(SceneError, match=r"holds numbers and '.*' is not a number"):
+            query_runs(path, where=[bad])
+    assert parse_filter("h_central<=.5") == ("h_central", "<=", 0.5)
+    assert parse_filter("h_central>+0.5") == ("h_central", ">", 0.5)
+    assert [r["h_central"] for r in query_runs(path, where=["h_central<=.5"])[0]] == [0.25]
+    assert len(query_runs(path, where=["status=linear"])[0]) == 2, "text columns as before"
+
+
+def test_export_to_a_directory_is_an_input_error(tmp_path, capsys):
+    """``bearing-fem runs STORE --csv DIR`` ended in a traceback (IsADirectoryError, exit
+    1); it is an input error (exit 2, one line), and no temporary file is left."""
+    from bearing_fem.cli import main
+
+    path = tmp_path / "s.sqlite"
+    with RunStore(path) as store:
+        store.write(Case({"load.gap": 1e-6}, rigid(1e-6)), outcome(h_central=1.0))
+    (tmp_path / "out").mkdir()
+    assert main(["runs", str(path), "--csv", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "cannot write the CSV export to" in err and "it is a directory" in err, err
+    assert "Traceback" not in err
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.startswith("s.sqlite")) \
+        == ["out"], "no temporary file left"
+    with pytest.raises(SceneError, match="it is a directory"):
+        export_csv([], tmp_path / "out", ["hash"])
+
+
+def test_query_one_column_or_filter_as_a_string(tmp_path):
+    """query_runs(store, columns="h_central") looked for the columns 'h', '_', 'c', ...
+    and where="load.gap>1e-6" for the filter 'l'; a string is one name (or comma-separated
+    names, as on the command line) and one filter."""
+    path = tmp_path / "s.sqlite"
+    with RunStore(path) as store:
+        for g in (1e-6, 2e-6):
+            store.write(Case({"load.gap": g}, rigid(g)), outcome(h_central=g))
+        assert [r["h_central"] for r in store.rows(columns="h_central")] == [1e-6, 2e-6]
+    rows, cols = query_runs(path, columns="h_central", where="load.gap>1e-6")
+    assert cols == ["h_central"] and rows == [{"h_central": 2e-6}]
+    rows, cols = query_runs(path, columns="load.gap, h_central")
+    assert cols == ["load.gap", "h_central"] and len(rows) == 2

@@ -272,3 +272,14 @@ def test_formulas_reject_nonpositive_groups():
         formulas.moes_line_central(-1.0, 5.0)
     with pytest.raises(ValueError, match="viscosity must be > 0 Pa s"):
         formulas.line_central_film_moes(1e5, 0.01, 2.2e11, 0.0, 1.0, 2e-8)
+
+
+def test_summary_units_refuses_an_unknown_kind():
+    """summary_units("Point") (or any typo) returned the line-contact units, per metre,
+    without a word; only "line" and "point" are contact kinds."""
+    from bearing_fem.result import summary_units
+
+    assert summary_units("line")["load"] == "N/m" and summary_units("point")["load"] == "N"
+    for bad in ("Point", "ball", ""):
+        with pytest.raises(ValueError, match=r"kind must be 'line' or 'point', got "):
+            summary_units(bad)

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
+import numpy as np
 import pytest
 
 from bearing_fem import bench
@@ -178,7 +180,8 @@ def test_bench_cli_one_repeat_writes_json(tmp_path, capsys):
         assert name in out
     d = json.loads(path.read_text())
     assert d["version"] == __import__("bearing_fem").__version__
-    assert set(d["machine"]) >= {"platform", "cpu_count", "python", "numpy", "scipy"}
+    assert set(d["machine"]) >= {"platform", "cpu_model", "cpu_count", "python", "numpy",
+                                 "scipy"}
     assert d["quick"] is True and d["repeats"] == 1 and "timestamp" in d
     rows = {r["case"]: r for r in d["cases"]}
     assert set(rows) == {"line", "point", "thermal", "bearing_6209"}
@@ -197,6 +200,44 @@ def test_bench_cli_bad_json_directory(tmp_path, capsys):
     assert "directory does not exist" in capsys.readouterr().err
 
 
+def test_bench_cli_json_is_a_directory(tmp_path, capsys, monkeypatch):
+    """``--json DIR`` is refused before anything is solved (it used to run the whole bench,
+    then fail and leave ``DIR.tmp`` behind)."""
+    def no_run(**kwargs):
+        raise AssertionError("the bench ran although its output cannot be written")
+
+    monkeypatch.setattr(bench, "run_bench", no_run)
+    (tmp_path / "out").mkdir()
+    assert cli_main(["bench", "--quick", "--json", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "it is a directory" in err and "bench.json" in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"], "no file left behind"
+
+
+def test_bench_write_json_strict_and_clean(tmp_path):
+    """The report is strict JSON (a non-finite number is null, never NaN), and a failed
+    write leaves no temporary file."""
+    report = {"version": "x", "cases": [{"h_central": float("nan"), "time_s": np.float64(1)}]}
+    path = bench.write_json(report, tmp_path / "b.json")
+    assert json.loads(path.read_text(), parse_constant=lambda c: pytest.fail(c)) == \
+        {"version": "x", "cases": [{"h_central": None, "time_s": 1.0}]}
+    (tmp_path / "d").mkdir()
+    with pytest.raises(IsADirectoryError):
+        bench.write_json(report, tmp_path / "d")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["b.json", "d"]
+
+
+@pytest.mark.skipif(not Path("/proc/cpuinfo").is_file(), reason="Linux /proc/cpuinfo")
+def test_bench_machine_names_the_cpu():
+    """Two machines are told apart by their CPU: on Linux platform.processor() is empty,
+    so the model name comes from /proc/cpuinfo."""
+    m = bench.machine_info()
+    assert m["cpu_model"], m
+    assert m["cpu_model"] in bench.format_table(
+        {"version": "v", "machine": m, "load_average": [0.0, 0.0], "repeats": 1,
+         "cases": [{"case": "line"}]})
+
+
 def test_bench_cli_bad_repeat(capsys):
     assert cli_main(["bench", "--quick", "--repeat", "0"]) == 2
     assert "--repeat" in capsys.readouterr().err
@@ -210,3 +251,13 @@ def test_bench_quick_default_repeats(tmp_path, capsys):
     d = json.loads(path.read_text())
     assert d["repeats"] == 2
     assert all(len(r["times_s"]) == 2 and r["time_s"] == min(r["times_s"]) for r in d["cases"])
+
+
+@pytest.mark.parametrize("bad", [0, 2.5, "2", True])
+def test_run_bench_refuses_a_bad_repeat_count(bad):
+    """run_bench(repeats=2.5) ended in a TypeError from range() and repeats="2" in one
+    from '<'; both are a ValueError naming the argument and the value, before any
+    solve."""
+    with pytest.raises(ValueError, match=r"repeats must be a whole number of runs >= 1, "
+                                         r"got "):
+        bench.run_bench(quick=True, repeats=bad)

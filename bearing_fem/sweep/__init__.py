@@ -133,8 +133,8 @@ def _open_existing(path: str | Path) -> RunStore:
 
 def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
                where: Sequence[str | tuple[str, str, Any]] | None = None,
-               columns: Sequence[str] | str | None = None, limit: int | None = None
-               ) -> tuple[list[dict[str, Any]], list[str]]:
+               columns: Sequence[str] | str | None = None, limit: int | None = None,
+               sweep: Any = None) -> tuple[list[dict[str, Any]], list[str]]:
     """Rows of a run store with filters.
 
     Parameters
@@ -144,18 +144,35 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
     status : str or sequence of str, optional
         Statuses to keep (also the groups ``success``, ``failed``, ``final``,
         ``unfinished``; see :meth:`RunStore.rows`).
-    where : sequence, optional
-        Filters ``"COLUMN OP VALUE"`` (``"load.force>=20"``) or (column, op, value).
-    columns : sequence of str or "all" or "default", optional
-        Columns to return; ``default`` (or None): hash, status, the parameters and the
-        main summary columns present; ``all``: every column.
+    where : str or sequence, optional
+        Filters ``"COLUMN OP VALUE"`` (``"load.force>=20"``) or (column, op, value); one
+        filter may be given as a string.
+    columns : str or sequence of str, optional
+        Columns to return (a string: one name, or comma-separated names as on the
+        command line); ``default`` (or None): hash, status, the parameters and the main
+        summary columns present; ``all``: every column.
     limit : int, optional
+    sweep : str or Path or SweepSpec or mapping or sequence of Case, optional
+        Keep the rows of this sweep's cases only (as :func:`sweep` takes it; a sweep file
+        as it reads now): a store may also hold other sweeps' rows, and rows of an earlier
+        version of the base file with the same parameter values.
 
     Returns
     -------
     (list of dict, list of str)
         The rows (sorted by the parameter columns) and the column names.
     """
+    if isinstance(where, str):  # one filter, not its characters
+        where = [where]
+    if isinstance(columns, str) and columns not in ("all", "default"):
+        columns = [c.strip() for c in columns.split(",")]
+    hashes = None
+    if sweep is not None:
+        if isinstance(sweep, (str, Path)):
+            sweep = SweepSpec.from_toml(sweep)
+        elif isinstance(sweep, Mapping):
+            sweep = SweepSpec.from_dict(sweep, base_dir=Path.cwd())
+        hashes = [c.hash for c in cases_of(sweep)]
     with _open_existing(path) as store:
         info = store.column_info()
         have = store.columns()
@@ -169,13 +186,29 @@ def query_runs(path: str | Path, *, status: str | Sequence[str] | None = None,
         filters = [parse_filter(w) if isinstance(w, str) else tuple(w) for w in where or ()]
         order = [c for c in have if info.get(c, {}).get("role") == "param"]
         rows = store.rows(status=status, where=filters, columns=cols, limit=limit,
-                          order=order)
+                          order=order, hashes=hashes)
     return rows, cols
 
 
 def format_runs(rows: Sequence[Mapping[str, Any]], columns: Sequence[str],
                 units: Mapping[str, str] | None = None) -> str:
-    """A plain-text table of rows (hashes cut to 12 digits, numbers to 4 significant)."""
+    """A plain-text table of rows (``bearing-fem runs``).
+
+    Parameters
+    ----------
+    rows : sequence of mapping
+        Rows as :func:`query_runs` returns them.
+    columns : sequence of str
+        The columns to show, in order.
+    units : mapping, optional
+        Column -> unit (:func:`store_units`), shown in the header as ``name [unit]``.
+
+    Returns
+    -------
+    str
+        One line per row under a header, then ``(N rows)``; hashes cut to 12 digits,
+        numbers to 4 significant digits, NULL as ``-``.
+    """
     def cell(col: str, v: Any) -> str:
         if v is None:
             return "-"
@@ -197,7 +230,19 @@ def format_runs(rows: Sequence[Mapping[str, Any]], columns: Sequence[str],
 
 
 def store_units(path: str | Path) -> dict[str, str]:
-    """Column -> unit of an existing run store (columns whose unit is known)."""
+    """The units of an existing run store's columns.
+
+    Parameters
+    ----------
+    path : str or Path
+        The run store.
+
+    Returns
+    -------
+    dict
+        Column -> unit for the columns whose unit is known (``"N/m or N"`` for a column
+        whose rows carry different units).
+    """
     with _open_existing(path) as store:
         return {k: v["unit"] for k, v in store.column_info().items() if v.get("unit")}
 
@@ -205,7 +250,24 @@ def store_units(path: str | Path) -> dict[str, str]:
 def export_runs(rows: Sequence[Mapping[str, Any]], columns: Sequence[str], *,
                 csv: str | Path | None = None, parquet: str | Path | None = None
                 ) -> str | None:
-    """Write rows as CSV (``csv="-"`` returns the text instead) and/or Parquet."""
+    """Write rows as CSV and/or Parquet (each atomically).
+
+    Parameters
+    ----------
+    rows : sequence of mapping
+        Rows as :func:`query_runs` returns them.
+    columns : sequence of str
+        The columns to write, in order.
+    csv : str or Path, optional
+        The CSV file; ``"-"`` returns the CSV text instead of writing it.
+    parquet : str or Path, optional
+        The Parquet file (needs pyarrow).
+
+    Returns
+    -------
+    str or None
+        The CSV text when ``csv="-"``, else None.
+    """
     text = None
     if parquet is not None:
         export_parquet(rows, parquet, columns)

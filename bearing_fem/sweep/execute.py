@@ -22,9 +22,11 @@ from __future__ import annotations
 import json
 import logging
 import os
+import re
 import secrets
 import shutil
 import socket
+import threading
 import time
 import traceback
 import warnings
@@ -63,7 +65,7 @@ Outcome = dict[str, Any]
 Done = Callable[["Task", Outcome], None]
 
 
-def local_cluster(n_workers: int = 2, **kwargs: Any):
+def local_cluster(n_workers: int = 2, **kwargs: Any) -> Any:
     """A Dask ``LocalCluster`` of ``n_workers`` processes of one thread each, whose workers
     run with :data:`WORKER_MALLOC_ENV` (as fast per solve as a plain process).
 
@@ -91,9 +93,9 @@ def local_cluster(n_workers: int = 2, **kwargs: Any):
     except ImportError:
         raise SceneError("a local Dask cluster needs dask.distributed: "
                          "pip install 'bearing_fem[sweep]'") from None
-    n = int(n_workers)
-    if n < 1:
-        raise SceneError(f"local_cluster: n_workers must be >= 1, got {n_workers!r}")
+    from .spec import check_workers
+
+    n = check_workers(n_workers, "local_cluster: n_workers")
     kwargs.setdefault("threads_per_worker", 1)
     kwargs.setdefault("dashboard_address", None)
     os.environ.update(WORKER_MALLOC_ENV)
@@ -102,13 +104,30 @@ def local_cluster(n_workers: int = 2, **kwargs: Any):
 
 def malloc_environment() -> dict[str, str | None]:
     """The malloc variables of :data:`WORKER_MALLOC_ENV` in the environment of the process
-    this runs in (None where unset; :class:`DaskExecutor` runs it on each worker)."""
+    this runs in (:class:`DaskExecutor` runs it on each worker).
+
+    Returns
+    -------
+    dict
+        Variable name -> its value, None where unset.
+    """
     return {k: os.environ.get(k) for k in WORKER_MALLOC_ENV}
 
 
 def slow_malloc_workers(environments: Mapping[str, Mapping[str, str | None]]) -> list[str]:
     """Workers whose environment sets a malloc trim threshold without an mmap threshold
-    (Dask's default: ~3x slower point solves, :data:`WORKER_MALLOC_ENV`)."""
+    (Dask's default: ~3x slower point solves, :data:`WORKER_MALLOC_ENV`).
+
+    Parameters
+    ----------
+    environments : mapping
+        Worker address -> :func:`malloc_environment` of that worker.
+
+    Returns
+    -------
+    list of str
+        The addresses of the slow workers, sorted.
+    """
     return sorted(w for w, env in environments.items()
                   if env.get("MALLOC_TRIM_THRESHOLD_") is not None
                   and env.get("MALLOC_MMAP_THRESHOLD_") is None)
@@ -183,6 +202,11 @@ def run_task(task: Task) -> Outcome:
     (final), a failure to write the files status ``lost`` (not final), each with the
     exception in the message.
 
+    Parameters
+    ----------
+    task : Task
+        The case, its result folder, the files to write and the BLAS thread limit.
+
     Returns
     -------
     dict
@@ -224,7 +248,7 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
     removed after). ``files = "summary"`` writes the summary file alone.
     """
     run_dir.parent.mkdir(parents=True, exist_ok=True)
-    token = f"{os.getpid()}-{secrets.token_hex(4)}"
+    token = f"{os.getpid()}-{secrets.token_hex(4)}-{socket.gethostname()}"
     tmp = run_dir.with_name(f".{run_dir.name}.tmp-{token}")
     try:
         tmp.mkdir()
@@ -234,7 +258,8 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
         else:
             exporter(result, tmp)
         marker = {"hash": case.hash, "kind": case.kind, "params": case.params,
-                  "status": str(result.status), "success": bool(result.success),
+                  "files": files, "status": str(result.status),
+                  "success": bool(result.success),
                   "run_time_s": run_time_s, "worker": worker_name()}
         (tmp / RUN_FILE).write_text(json.dumps(marker, indent=1, default=str) + "\n",
                                     encoding="utf-8")
@@ -262,12 +287,68 @@ def publish(result: Any, exporter: Callable[[Any, Path], Any], case: Case, run_d
     return run_dir
 
 
+#: Hidden folder of an unfinished :func:`publish`: ``.<hash>.tmp-<pid>-<8 hex>[-<host>]``
+#: (``old`` for a folder moved aside).
+_TEMP_RUN_DIR = re.compile(r"^\.[0-9a-f]{64}\.(?:tmp|old)-(?P<pid>\d+)-[0-9a-f]{8}"
+                           r"(?:-(?P<host>.+))?$")
+#: Age [s] after which such a folder counts as stale whatever wrote it.
+STALE_RUN_DIR_AGE = 24 * 3600.0
+
+
+def clean_stale_run_dirs(results: Path, max_age: float = STALE_RUN_DIR_AGE) -> list[Path]:
+    """Remove the hidden temporary folders that killed workers left in ``results``.
+
+    A worker (or a serial client) killed while it wrote a case's files leaves its
+    temporary folder ``.<hash>.tmp-<pid>-<random>-<host>`` behind, with every file
+    written so far (a point result's ``fields.vtu`` is tens of MB). Such a folder is
+    removed when its process, on this host, no longer runs, or when it is older than
+    ``max_age`` (a folder of another host, or one named without its host). Folders of
+    running writers, result folders and every other file are left alone.
+
+    Parameters
+    ----------
+    results : Path
+        The sweep's results folder (nothing happens if it does not exist).
+    max_age : float
+        Age [s] beyond which a temporary folder counts as stale whatever wrote it.
+
+    Returns
+    -------
+    list of Path
+        The removed folders.
+    """
+    removed: list[Path] = []
+    try:
+        entries = [p for p in Path(results).iterdir() if p.name.startswith(".")]
+    except OSError:
+        return removed
+    host, now = socket.gethostname(), time.time()
+    for path in entries:
+        m = _TEMP_RUN_DIR.match(path.name)
+        if m is None or path.is_symlink() or not path.is_dir():
+            continue
+        try:
+            age = now - path.stat().st_mtime
+        except OSError:
+            continue
+        dead = m.group("host") == host and not _process_alive(int(m.group("pid")))
+        if dead or age > max_age:
+            shutil.rmtree(path, ignore_errors=True)
+            removed.append(path)
+    if removed:
+        log.info("removed %d temporary folder(s) of killed workers in %s", len(removed),
+                 results)
+    return removed
+
+
 def _same_outcome(run_dir: Path, marker: Mapping[str, Any]) -> bool:
     """True when ``run_dir`` is a complete result folder of the same case with the same
     successful status (as a concurrent run of that case writes it; an unsuccessful folder
     is always replaced, as a retry should)."""
     if not marker["success"] or not result_complete(run_dir, str(marker["kind"])):
         return False
+    if marker.get("files") == "all" and not has_all_files(run_dir, str(marker["kind"])):
+        return False  # a summary-only folder is replaced by the whole export
     try:
         theirs = json.loads((run_dir / RUN_FILE).read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -279,6 +360,26 @@ def result_complete(path: Path | None, kind: str) -> bool:
     """True when ``path`` is a complete result folder (its marker and summary exist)."""
     return (path is not None and (path / RUN_FILE).is_file()
             and (path / SUMMARY_FILE.get(kind, "summary.json")).is_file())
+
+
+def has_all_files(path: Path | None, kind: str) -> bool:
+    """True when a complete result folder holds the export of the result, not its summary
+    file alone (as ``files = "summary"`` writes it).
+
+    Parameters
+    ----------
+    path : Path or None
+        A result folder.
+    kind : {"scene", "bearing"}
+
+    Returns
+    -------
+    bool
+    """
+    if not result_complete(path, kind):
+        return False
+    alone = {RUN_FILE, SUMMARY_FILE.get(kind, "summary.json")}
+    return any(p.name not in alone for p in path.iterdir())  # type: ignore[union-attr]
 
 
 def adopt(case: Case, run_dir: Path) -> Outcome | None:
@@ -346,12 +447,69 @@ def in_worker_bootstrap() -> bool:
     return bool(getattr(mp.current_process(), "_inheriting", False))
 
 
+#: Seconds between a pool worker's checks that the process which started the pool (the
+#: client) still runs; a worker whose client has gone (killed with SIGKILL, or by a batch
+#: system's time limit) exits once its current case is done instead of waiting forever.
+CLIENT_CHECK_S = 1.0
+_running = [0]  # cases running in this pool worker process (0 or 1)
+
+
+def _process_alive(pid: int) -> bool:
+    """True while process ``pid`` exists (a zombie counts as gone on Linux)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # pragma: no cover - a process of another user
+        return True
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as fh:
+            return fh.read().rsplit(b")", 1)[1].split()[0] != b"Z"
+    except (OSError, IndexError):
+        return True
+
+
+def watch_client(pid: int, interval: float = CLIENT_CHECK_S) -> None:
+    """Initializer of the local pool's worker processes: a daemon thread that ends the
+    process once the client ``pid`` has gone and no case is running.
+
+    Without it the workers of a client killed by SIGKILL (or SIGTERM) would wait for
+    work forever (each holds its own end of the pool's queues), keeping their memory
+    and the client's standard output open. A case running when the client goes is
+    finished and its result folder written, so that the next run adopts it.
+
+    Parameters
+    ----------
+    pid : int
+        Process id of the client (the process that started the pool).
+    interval : float
+        Seconds between checks.
+    """
+    def watch() -> None:
+        while True:
+            time.sleep(interval)
+            if not _running[0] and not _process_alive(pid):
+                os._exit(0)
+
+    threading.Thread(target=watch, name="bearing_fem-client-watch", daemon=True).start()
+
+
+def pool_task(fn: Callable[[Task], Outcome], task: Task) -> Outcome:
+    """Run ``fn(task)`` in a pool worker, marked as running for :func:`watch_client`."""
+    _running[0] += 1
+    try:
+        return fn(task)
+    finally:
+        _running[0] -= 1
+
+
 class PoolExecutor:
     """A local process pool (``concurrent.futures``; forkserver start where available).
 
     At most ``workers`` tasks are in flight; a worker process that dies breaks the pool,
     which is started again, and the tasks that were in flight are resubmitted until they
-    have been started :data:`MAX_ATTEMPTS` times (then recorded ``lost``).
+    have been started :data:`MAX_ATTEMPTS` times (then recorded ``lost``). Its workers
+    exit on their own once the client process has gone (:func:`watch_client`).
     """
 
     def __init__(self, workers: int) -> None:
@@ -382,7 +540,8 @@ class PoolExecutor:
                                             "bearing_fem.contacts.dispatch"])
             except ValueError:  # pragma: no cover - platforms without forkserver
                 ctx = mp.get_context("spawn")
-        return ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx)
+        return ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx,
+                                   initializer=watch_client, initargs=(os.getpid(),))
 
     def run(self, tasks: Sequence[Task], done: Done) -> None:
         from concurrent.futures import FIRST_COMPLETED, wait
@@ -396,7 +555,7 @@ class PoolExecutor:
             while queue or inflight:
                 while queue and len(inflight) < self.workers:
                     t = queue.popleft()
-                    inflight[pool.submit(run_task, t)] = t
+                    inflight[pool.submit(pool_task, run_task, t)] = t
                 finished, _ = wait(list(inflight), return_when=FIRST_COMPLETED)
                 broken = False
                 for f in finished:
@@ -437,6 +596,40 @@ class PoolExecutor:
 
 def _again(t: Task) -> Task:
     return Task(t.case, t.run_dir, t.files, t.blas_threads, t.attempts + 1)
+
+
+def check_address(address: str) -> str:
+    """A Dask scheduler address as given, or SceneError when it cannot be one.
+
+    A malformed address (``"foo bar"``, ``"localhost"`` without a port, an unknown
+    scheme) made ``distributed.Client`` raise a bare ValueError and then wait 60 s in its
+    cleanup; it is refused at once, naming the value.
+
+    Parameters
+    ----------
+    address : str
+        ``tcp://host:port`` (``host:port`` means tcp), ``tls://host:port``, or another
+        scheme Dask knows (``inproc://``, ``ucx://``, ...).
+
+    Returns
+    -------
+    str
+        ``address``.
+    """
+    from distributed.comm import registry
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    try:
+        scheme, location = parse_address(address)
+        if scheme not in registry.backends:
+            raise ValueError(f"unknown scheme {scheme!r} (known: "
+                             f"{', '.join(sorted(registry.backends))})")
+        if scheme in ("tcp", "tls"):
+            parse_host_port(location)
+    except (ValueError, TypeError) as exc:
+        raise SceneError(f"scheduler must be a Dask scheduler address such as "
+                         f"tcp://10.0.0.5:8786, got {address!r} ({exc})") from None
+    return address
 
 
 class DaskExecutor:
@@ -483,6 +676,8 @@ class DaskExecutor:
 
         if isinstance(self.scheduler, Client):
             return self.scheduler, False
+        if isinstance(self.scheduler, str):
+            check_address(self.scheduler)
         try:
             if isinstance(self.scheduler, str):
                 client = Client(self.scheduler, timeout=self.timeout,
@@ -608,6 +803,12 @@ class SweepReport:
     dry_run : bool
     to_run : list of str
         Hashes that were (or, for a dry run, would be) run.
+    others_same_params : int
+        Rows of the store that are not cases of this sweep but have the parameter values
+        of one of its cases: cases of an earlier version of the base file (or of another
+        sweep with other fixed keys). A query by parameters returns them too; select this
+        sweep's rows with ``query_runs(store, sweep=...)`` (``bearing-fem runs STORE
+        --sweep FILE``).
     """
 
     store: Path
@@ -624,6 +825,7 @@ class SweepReport:
     wall_time_s: float = 0.0
     dry_run: bool = False
     to_run: list[str] = field(default_factory=list)
+    others_same_params: int = 0
 
     @property
     def all_successful(self) -> bool:
@@ -633,44 +835,56 @@ class SweepReport:
     def text(self) -> str:
         """A few lines for a terminal."""
         if self.dry_run:
-            return (f"{self.cases} cases: {len(self.to_run)} to run, {self.skipped} already "
-                    f"in {self.store} (dry run: nothing solved)")
+            adopt = (f"{self.adopted} to record from earlier result folders, "
+                     if self.adopted else "")
+            return (f"{self.cases} cases: {len(self.to_run)} to run, {adopt}{self.skipped} "
+                    f"already in {self.store} (dry run: nothing solved)")
         lines = [f"{self.cases} cases: {self.ran} solved now, {self.adopted} recorded from "
                  f"earlier result folders, {self.skipped} already in the store",
                  f"  {self.successes} successful, {self.failures} unsuccessful, "
                  f"{self.unfinished} unfinished (pending or lost: run the sweep again)",
                  f"  store {self.store}; result folders in {self.results}",
                  f"  {self.executor}, {self.wall_time_s:.1f} s"]
+        if self.others_same_params:
+            lines.append(f"  note: the store also holds {self.others_same_params} row(s) with "
+                         "the parameters of cases of this sweep but another scene (an "
+                         "earlier base file, or another sweep); 'bearing-fem runs "
+                         f"{self.store} --sweep SWEEP.toml' lists this sweep's rows alone")
         return "\n".join(lines)
 
 
-def plan(cases: Sequence[Case], store: RunStore, results: Path, retry_failed: bool
-         ) -> tuple[list[Case], list[Case], list[tuple[Case, Outcome]]]:
+def plan(cases: Sequence[Case], store: RunStore, results: Path, retry_failed: bool,
+         files: str = "all") -> tuple[list[Case], list[Case], list[tuple[Case, Outcome]]]:
     """Split cases into (to run, skipped, adoptable with their outcome).
 
     A case is skipped when its row has a final status and, if successful, its result
-    folder exists; unsuccessful final rows are run again only with ``retry_failed``.
-    Rows ``pending`` or ``lost``, and successful rows whose result folder is gone, run
-    again (or are adopted from a complete result folder of the same hash).
+    folder exists (with ``files = "all"``: with the whole export, not the summary alone
+    that a ``files = "summary"`` run wrote); unsuccessful final rows are run again only
+    with ``retry_failed``. Rows ``pending`` or ``lost``, and successful rows whose result
+    folder is gone or too short, run again (or are adopted from a result folder of the
+    same hash that has the files asked for).
     """
+    def enough(path: Path | None, kind: str) -> bool:
+        return has_all_files(path, kind) if files == "all" else result_complete(path, kind)
+
     states = store.states([c.hash for c in cases])
     run, skip, adopted = [], [], []
     for c in cases:
         s = states.get(c.hash)
         if s is not None and s["status"] not in NON_FINAL:
             if s["success"]:
-                if result_complete(store.resolve(s["result_path"]), c.kind):
+                if enough(store.resolve(s["result_path"]), c.kind):
                     skip.append(c)
                     continue
-                log.info("case %s: stored as %s but its result folder is missing; running "
-                         "it again", c.hash[:12], s["status"])
+                log.info("case %s: stored as %s but its result folder is missing or holds "
+                         "the summary alone; running it again", c.hash[:12], s["status"])
             elif not retry_failed:
                 skip.append(c)
                 continue
             else:
                 run.append(c)
                 continue
-        found = adopt(c, results / c.hash)
+        found = adopt(c, results / c.hash) if enough(results / c.hash, c.kind) else None
         if found is not None:
             adopted.append((c, found))
         else:
@@ -685,6 +899,31 @@ def _remove_store_files(path: Path) -> None:
             p.unlink()
         except FileNotFoundError:
             pass
+
+
+def others_with_same_params(store: RunStore, cases: Sequence[Case]) -> int:
+    """Rows of ``store`` that are not among ``cases`` but have the parameter values of one
+    of them (same parameter names and values, another resolved scene).
+
+    Parameters
+    ----------
+    store : RunStore
+    cases : sequence of Case
+
+    Returns
+    -------
+    int
+        The number of such rows (0 when the cases have no parameters).
+    """
+    from .store import sql_value
+
+    names = sorted({k for c in cases for k in c.params})
+    if not names or not set(names) <= set(store.columns()):
+        return 0
+    mine = {c.hash for c in cases}
+    keys = {tuple(sql_value(c.params.get(n)) for n in names) for c in cases}
+    return sum(1 for r in store.rows(columns=["hash", *names])
+               if r["hash"] not in mine and tuple(r[n] for n in names) in keys)
 
 
 def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | Path | None = None,
@@ -726,15 +965,19 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
     results = Path(results) if results is not None else \
         store_path.parent / f"{store_path.stem}_runs"
     results = results.resolve()
-    if dry_run and not store_path.exists():  # nothing stored yet: every case would run
+    if dry_run and not store_path.exists():  # nothing stored: every case runs or is adopted
+        ready = {c.hash for c in cases
+                 if (has_all_files if files == "all" else result_complete)(
+                     results / c.hash, c.kind) and adopt(c, results / c.hash) is not None}
         executor = make_executor(scheduler, workers, max(1, len(cases)))
         return SweepReport(store=store_path, results=results, executor=executor.name,
-                           cases=len(cases), dry_run=True, to_run=[c.hash for c in cases],
+                           cases=len(cases), dry_run=True, adopted=len(ready),
+                           to_run=[c.hash for c in cases if c.hash not in ready],
                            wall_time_s=time.perf_counter() - t0)
     created = not store_path.exists()
     with RunStore(store_path) as store:
         planned = store.states([c.hash for c in cases])
-        to_run, skipped, adoptable = plan(cases, store, results, retry_failed)
+        to_run, skipped, adoptable = plan(cases, store, results, retry_failed, files)
         executor = make_executor(scheduler, workers, max(1, len(to_run)))
         report = SweepReport(store=store_path, results=results,
                              executor=executor.name if to_run else "nothing to run",
@@ -754,6 +997,8 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
                 raise
         bar = SweepProgress(len(to_run), enabled=None if progress else False)
         try:
+            if to_run:
+                clean_stale_run_dirs(results)
             store.fill_params(skipped)
             for c, out in adoptable:
                 store.write(c, out)
@@ -793,5 +1038,6 @@ def run_cases(cases: Sequence[Case], store_path: str | Path, *, results: str | P
             report.successes = sum(1 for s in final.values() if s["success"])
             report.unfinished = sum(1 for s in final.values() if s["status"] in NON_FINAL)
             report.failures = len(final) - report.successes - report.unfinished
+            report.others_same_params = others_with_same_params(store, cases)
             report.wall_time_s = time.perf_counter() - t0
     return report

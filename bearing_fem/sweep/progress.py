@@ -157,8 +157,22 @@ class SolveProgress:
 
 def solve_progress(quiet: bool = False, *, file: TextIO | None = None,
                    desc: str = "solve") -> SolveProgress | None:
-    """The progress callback the command line passes to a solve: None when ``quiet`` or
-    when stderr (``file``) is not a terminal, else a :class:`SolveProgress`."""
+    """The progress callback the command line passes to a solve.
+
+    Parameters
+    ----------
+    quiet : bool
+        No progress at all (``-q``).
+    file : text stream, optional
+        Where to draw (default ``sys.stderr``).
+    desc : str
+        The bar's label.
+
+    Returns
+    -------
+    SolveProgress or None
+        None when ``quiet`` or when ``file`` is not a terminal.
+    """
     stream = sys.stderr if file is None else file
     if quiet or not is_terminal(stream):
         return None

@@ -389,7 +389,23 @@ class SweepSpec:
     # -----------------------------------------------------------------------------------
     @classmethod
     def from_toml(cls, path: str | Path) -> "SweepSpec":
-        """Read a sweep file; the base file is resolved relative to it."""
+        """Read a sweep file; the base file is resolved relative to it.
+
+        Parameters
+        ----------
+        path : str or Path
+            The sweep file (TOML, ``docs/sweeps.md``).
+
+        Returns
+        -------
+        SweepSpec
+
+        Raises
+        ------
+        SceneError
+            The file cannot be read, is not valid TOML, or is not a valid sweep (the
+            message names the key, the value and, for scene keys, the unit).
+        """
         from ..scene import read_toml
 
         path = Path(path)

@@ -128,6 +128,36 @@ def flatten_summary(summary: Mapping[str, Any]) -> tuple[dict[str, Any], dict[st
     return cols, known
 
 
+#: Joins the units of a column whose rows carry different units (``N/m or N``).
+UNIT_SEPARATOR = " or "
+
+
+def merged_unit(stored: str | None, unit: str | None) -> str | None:
+    """The unit of a store column after a row with ``unit`` is written into it.
+
+    A store may hold line contacts (per metre: ``N/m``, ``W/m``), point contacts (``N``,
+    ``W``) and bearings in one column such as ``load`` or ``heat_power``; its unit then
+    names each unit its rows carry, in the order they appeared (``"N/m or N"``), never
+    the first one alone.
+
+    Parameters
+    ----------
+    stored : str or None
+        The column's unit so far (None: unknown).
+    unit : str or None
+        The unit the new row's summary names (None: none).
+
+    Returns
+    -------
+    str or None
+    """
+    if not unit:
+        return stored
+    if not stored:
+        return unit
+    return stored if unit in stored.split(UNIT_SEPARATOR) else stored + UNIT_SEPARATOR + unit
+
+
 class RunStore:
     """An open run store (see the module docstring).
 
@@ -277,8 +307,11 @@ class RunStore:
             conn.execute("INSERT OR IGNORE INTO columns VALUES (?, ?, ?)",
                          (name, role, units.get(name)))
             if units.get(name):
-                conn.execute("UPDATE columns SET unit = ? WHERE name = ? AND unit IS NULL",
-                             (units[name], name))
+                old = conn.execute("SELECT unit FROM columns WHERE name = ?",
+                                   (name,)).fetchone()[0]
+                unit = merged_unit(old, units[name])
+                if unit != old:
+                    conn.execute("UPDATE columns SET unit = ? WHERE name = ?", (unit, name))
 
     def _upsert(self, conn: sqlite3.Connection, row: Mapping[str, Any]) -> None:
         names = list(row)
@@ -287,7 +320,19 @@ class RunStore:
 
     # -----------------------------------------------------------------------------------
     def states(self, hashes: Sequence[str]) -> dict[str, dict[str, Any]]:
-        """``hash -> {"status", "success", "result_path", "attempts"}`` of stored cases."""
+        """The stored state of cases.
+
+        Parameters
+        ----------
+        hashes : sequence of str
+            Case hashes (:func:`~bearing_fem.sweep.spec.scene_hash`).
+
+        Returns
+        -------
+        dict
+            ``hash -> {"status", "success", "result_path", "attempts"}`` for the hashes
+            that have a row (others are absent).
+        """
         out: dict[str, dict[str, Any]] = {}
         hashes = list(hashes)
         for i in range(0, len(hashes), 500):
@@ -300,7 +345,18 @@ class RunStore:
         return out
 
     def resolve(self, result_path: str | None) -> Path | None:
-        """A stored result path as a path (relative ones are under the store's folder)."""
+        """A stored result path as a path.
+
+        Parameters
+        ----------
+        result_path : str or None
+            A ``result_path`` column value (relative ones are under the store's folder).
+
+        Returns
+        -------
+        Path or None
+            The result folder, or None for a row without one.
+        """
         if not result_path:
             return None
         p = Path(result_path)
@@ -321,9 +377,20 @@ class RunStore:
         """Record cases about to run as ``pending`` (one transaction): their parameters,
         kind and scene; any earlier result of theirs is replaced.
 
-        ``planned``: the rows (:meth:`states`) the caller planned from. A case whose row
-        has become final since then (another process sharing the store finished it) is
-        left as it is and not returned. Returns the cases marked ``pending``.
+        Parameters
+        ----------
+        cases : sequence of Case
+        attempts : mapping, optional
+            ``hash -> attempts`` so far (the row keeps this count; default 0).
+        planned : mapping, optional
+            The rows (:meth:`states`) the caller planned from. A case whose row has become
+            final since then (another process sharing the store finished it) is left as it
+            is and not returned.
+
+        Returns
+        -------
+        list of Case
+            The cases marked ``pending``.
         """
         if not cases:
             return []
@@ -403,7 +470,8 @@ class RunStore:
     def rows(self, *, status: Sequence[str] | None = None,
              where: Sequence[tuple[str, str, Any]] | None = None,
              columns: Sequence[str] | None = None, limit: int | None = None,
-             order: Sequence[str] | None = None) -> list[dict[str, Any]]:
+             order: Sequence[str] | None = None,
+             hashes: Iterable[str] | None = None) -> list[dict[str, Any]]:
         """Rows of ``runs`` as dicts, in the order they were last written.
 
         Parameters
@@ -421,6 +489,8 @@ class RunStore:
             At most this many rows (>= 1).
         order : sequence of str, optional
             Sort by these columns (ascending); default: the order the rows were written.
+        hashes : iterable of str, optional
+            Keep the rows of these cases only (e.g. the cases of one sweep).
         """
         if isinstance(status, str):  # one status, not its characters
             status = (status,)
@@ -428,6 +498,8 @@ class RunStore:
                                   or limit < 1):
             raise SceneError(f"limit must be a positive whole number of rows, got {limit!r}")
         have = self.columns()
+        if isinstance(columns, str):  # one column, not its characters
+            columns = [columns]
         cols = list(columns) if columns else have
         missing = [c for c in cols if c not in have]
         if missing:
@@ -456,8 +528,15 @@ class RunStore:
                                  f"{', '.join(have)}")
             if op not in ("=", "!=", "<", "<=", ">", ">="):
                 raise SceneError(f"filter operator must be one of = != < <= > >=, got {op!r}")
+            if isinstance(value, str) and self._numeric_column(col):
+                raise SceneError(f"filter {col} {op} {value!r}: the column {col!r} holds "
+                                 f"numbers and {value!r} is not a number (it would compare "
+                                 "as text and keep no row, or every row)")
             clauses.append(f"{quote(col)} {op} ?")
             args.append(sql_value(value))
+        if hashes is not None:
+            clauses.append("hash IN (SELECT value FROM json_each(?))")
+            args.append(json.dumps(sorted(set(hashes))))
         if clauses:
             sql += " WHERE " + " AND ".join(clauses)
         for col in order or ():
@@ -468,6 +547,12 @@ class RunStore:
             sql += f" LIMIT {int(limit)}"
         cur = self.conn.execute(sql, args)
         return [dict(zip(cols, r)) for r in cur.fetchall()]
+
+    def _numeric_column(self, col: str) -> bool:
+        """True when every non-NULL value of ``col`` is a number (and there is one)."""
+        types = {t for (t,) in self.conn.execute(
+            f"SELECT DISTINCT typeof({quote(col)}) FROM runs WHERE {quote(col)} IS NOT NULL")}
+        return bool(types) and types <= {"integer", "real"}
 
     def count(self) -> dict[str, int]:
         """Number of rows per status."""
@@ -495,6 +580,12 @@ def parse_filter(text: str) -> tuple[str, str, Any]:
                 value = json.loads(raw)
             except ValueError:
                 value = raw
+                try:  # numbers JSON does not read: ".5", "5.", "+2", "1E-6"
+                    number = float(raw)
+                    if math.isfinite(number):
+                        value = number
+                except ValueError:
+                    pass
             if isinstance(value, (list, dict)):
                 value = json.dumps(value, sort_keys=True)
             return col, op, value
@@ -542,6 +633,7 @@ def export_parquet(rows: Sequence[Mapping[str, Any]], path: str | Path,
         else:
             data[c] = pa.array([None if v is None else str(v) for v in vals], type=pa.string())
     path = Path(path)
+    _export_target(path, "Parquet")
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         pq.write_table(pa.table(data), str(tmp))
@@ -551,12 +643,28 @@ def export_parquet(rows: Sequence[Mapping[str, Any]], path: str | Path,
             tmp.unlink()
 
 
+def _export_target(path: Path, what: str) -> None:
+    """Refuse an export file that cannot be written (SceneError naming it), before any
+    temporary file is made."""
+    if path.is_dir():
+        raise SceneError(f"cannot write the {what} export to {str(path)!r}: it is a "
+                         f"directory; give a file name such as runs.{what.lower()}")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise SceneError(f"cannot write the {what} export to {str(path)!r}: "
+                         f"{exc.strerror or exc}") from None
+
+
 def _atomic_write(path: Path, data: bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
+    _export_target(path, "CSV")
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         tmp.write_bytes(data)
         os.replace(tmp, path)
+    except OSError as exc:
+        raise SceneError(f"cannot write the CSV export to {str(path)!r}: "
+                         f"{exc.strerror or exc}") from None
     finally:
         if tmp.exists():
             tmp.unlink()
