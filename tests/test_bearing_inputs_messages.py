@@ -419,3 +419,28 @@ def test_single_row_tapered_bearing_says_how_it_is_modelled():
     d["operation"]["axial_load"] = 0.0
     d["bearing"]["rows"] = 2
     assert not [w for w in input_warnings(Bearing.from_dict(d)) if "opposed pair" in w]
+
+
+@pytest.mark.parametrize("name, key", [("6209", "radial_load"), ("nncf5040", "radial_load"),
+                                       ("30205", "radial_load"), ("7010-steel", "axial_load")])
+@pytest.mark.parametrize("load", [1e-20, 1e-300, 5e-324])
+def test_load_below_the_smallest_contact_load_is_refused_naming_it(name, key, load):
+    """A load that no contact can carry (it underflowed in the load distribution: a
+    ZeroDivisionError of the loaded-angle average, or Brent's 'f(a) and f(b) must have
+    different signs' as a failed load distribution) is refused up front."""
+    data = _example(name)
+    data["operation"][key] = load
+    with pytest.raises(SceneError, match=rf"operation\.{key} = {load:g} N .*1e-06 N.*give 0"):
+        Bearing.from_dict(data)
+
+
+def test_tiny_radial_load_exits_2_without_a_traceback(tmp_path, capsys):
+    data = _example("6209")
+    data["operation"]["radial_load"] = 1e-300
+    path = tmp_path / "b.toml"
+    path.write_text(io.scene_to_toml(data), encoding="utf-8")
+    assert cli.main(["bearing", str(path), "--out", str(tmp_path / "out"),
+                     "--no-figures"]) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and "operation.radial_load" in err
+

@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import (GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec, Traction,
+from ..scene import (FORCE_RANGE, GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec, Traction,
                      field_bool, field_bounded, field_choice, field_integer,
                      field_name_prefix, field_nonnegative, field_number, field_piezo,
                      field_piezo_table, field_poisson, field_positive, field_range,
@@ -130,6 +130,11 @@ MIN_NOMINAL_CONTACT_ANGLE = 2.0
 #: hold for any angle below 90 deg (the loaded angles stay below it, else the loads are
 #: refused); beyond 60 deg the bearing is a thrust bearing, which is not modelled.
 MAX_NOMINAL_CONTACT_ANGLE = 60.0
+
+#: Smallest non-zero ``operation.radial_load`` or ``axial_load`` [N]: the smallest contact
+#: load the contact scenes accept (``scene.FORCE_RANGE``); no element carries more than the
+#: bearing's load, and a smaller one underflows in the load distribution.
+MIN_BEARING_LOAD = FORCE_RANGE[0]
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
 #: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`.
@@ -658,7 +663,8 @@ class Operation:
     inner_rpm : float
         Inner-ring speed n [1/min], > 0.
     radial_load, axial_load : float
-        Fr, Fa [N], >= 0, not both zero. The radial load acts along azimuth 0.
+        Fr, Fa [N], >= 0, not both zero; each 0 or at least :data:`MIN_BEARING_LOAD`
+        (1e-6 N). The radial load acts along azimuth 0.
     oil_temperature : float or None
         Oil (and bearing) temperature [deg C], in [-60, 500] deg C
         (:data:`OIL_TEMPERATURE_RANGE`: cold starts allowed); required by a temperature law
@@ -680,6 +686,11 @@ class Operation:
         if fr == 0.0 and fa == 0.0:
             raise SceneError("operation: radial_load and axial_load are both 0 N; give a "
                              "load (an unloaded bearing has no EHL contacts)")
+        for name, value in (("radial_load", fr), ("axial_load", fa)):
+            if 0.0 < value < MIN_BEARING_LOAD:
+                raise SceneError(f"operation.{name} = {value:g} N is below {MIN_BEARING_LOAD:g} "
+                                 "N, the smallest contact load the contact model accepts, so "
+                                 "no element could carry it; give 0 for none (loads are in N)")
         if self.oil_temperature is not None:
             t = field_number(self, "oil_temperature", "deg C")
             t_lo, t_hi = OIL_TEMPERATURE_RANGE
