@@ -444,3 +444,20 @@ def test_tiny_radial_load_exits_2_without_a_traceback(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "Traceback" not in err and "operation.radial_load" in err
 
+
+@pytest.mark.parametrize("psi0", [1e20, -1e300, 361.0])
+def test_first_element_azimuth_out_of_a_turn_is_refused_naming_it(psi0):
+    """1e20 deg was accepted and then reported as the loads turning a contact angle
+    beyond 90 deg (the element azimuths lose every digit)."""
+    data = _example("6209")
+    data["bearing"]["first_element_azimuth"] = psi0
+    with pytest.raises(SceneError, match=r"bearing\.first_element_azimuth must lie in "
+                                         r"\[-360, 360\] deg"):
+        Bearing.from_dict(data)
+
+
+def test_first_element_azimuth_within_a_turn_is_accepted():
+    data = _example("6209")
+    for psi0 in (-360.0, 20.0, 360.0):
+        data["bearing"]["first_element_azimuth"] = psi0
+        assert Bearing.from_dict(data).geometry.first_element_azimuth == psi0

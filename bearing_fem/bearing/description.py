@@ -135,6 +135,10 @@ MAX_NOMINAL_CONTACT_ANGLE = 60.0
 #: load the contact scenes accept (``scene.FORCE_RANGE``); no element carries more than the
 #: bearing's load, and a smaller one underflows in the load distribution.
 MIN_BEARING_LOAD = FORCE_RANGE[0]
+
+#: ``bearing.first_element_azimuth`` range [deg]: one turn either way (beyond it the
+#: element azimuths psi_0 + 2 pi j/Z lose their digits).
+FIRST_ELEMENT_AZIMUTH_RANGE = (-360.0, 360.0)
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
 #: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`.
@@ -288,7 +292,8 @@ class Geometry:
     slices : int or None
         Slices along a profiled roller (default 11; 1 for a straight roller).
     first_element_azimuth : float
-        Azimuth of element 0 [deg] from the direction of the radial load.
+        Azimuth of element 0 [deg] from the direction of the radial load, in [-360, 360]
+        (:data:`FIRST_ELEMENT_AZIMUTH_RANGE`).
     static_load_rating : float or None
         C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1).
     """
@@ -355,7 +360,8 @@ class Geometry:
             raise SceneError(f"bearing.radial_clearance must be >= 0 m, got {c_r:g} m: a "
                              "negative clearance (preload) is not modelled; give 0 for a "
                              "bearing without clearance")
-        field_number(self, "first_element_azimuth", "deg")
+        field_bounded(self, "first_element_azimuth", "deg", *FIRST_ELEMENT_AZIMUTH_RANGE,
+                      why="the azimuth of element 0 from the radial load, within one turn")
         _optional_positive(self, "static_load_rating", "N")
         if self.type in BALL_TYPES:
             self._check_ball()
