@@ -461,3 +461,27 @@ def test_first_element_azimuth_within_a_turn_is_accepted():
     for psi0 in (-360.0, 20.0, 360.0):
         data["bearing"]["first_element_azimuth"] = psi0
         assert Bearing.from_dict(data).geometry.first_element_azimuth == psi0
+
+
+@pytest.mark.parametrize("c0", [5e-324, 1e-300, 1.0, 1e300])
+def test_static_load_rating_outside_its_range_is_refused_naming_it(c0):
+    """5e-324 N was accepted and overflowed Palmgren's f1 = z (P0/C0)^y: a ValueError
+    traceback of 'bearing-fem bearing' after the contact solves."""
+    data = _example("6209")
+    data["bearing"]["static_load_rating"] = c0
+    with pytest.raises(SceneError, match=r"bearing\.static_load_rating must lie in "
+                                         r"\[10, 1e\+09\] N"):
+        Bearing.from_dict(data)
+
+
+def test_tiny_static_load_rating_exits_2_without_a_traceback(tmp_path, capsys):
+    data = _example("6209")
+    data["bearing"]["static_load_rating"] = 5e-324
+    data["mesh"] = {"point_nodes": [17, 17]}
+    path = tmp_path / "b.toml"
+    path.write_text(io.scene_to_toml(data), encoding="utf-8")
+    assert cli.main(["bearing", str(path), "--out", str(tmp_path / "out"),
+                     "--no-figures"]) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and "bearing.static_load_rating" in err
+

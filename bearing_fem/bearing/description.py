@@ -139,6 +139,11 @@ MIN_BEARING_LOAD = FORCE_RANGE[0]
 #: ``bearing.first_element_azimuth`` range [deg]: one turn either way (beyond it the
 #: element azimuths psi_0 + 2 pi j/Z lose their digits).
 FIRST_ELEMENT_AZIMUTH_RANGE = (-360.0, 360.0)
+
+#: ``bearing.static_load_rating`` C0 range [N]: miniature bearings (tens of N) to slewing
+#: bearings (1e7..1e8 N); outside it Palmgren's f1 = z (P0/C0)^y overflows or the value is
+#: a unit slip.
+STATIC_LOAD_RATING_RANGE = (10.0, 1e9)
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
 #: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`.
@@ -295,7 +300,8 @@ class Geometry:
         Azimuth of element 0 [deg] from the direction of the radial load, in [-360, 360]
         (:data:`FIRST_ELEMENT_AZIMUTH_RANGE`).
     static_load_rating : float or None
-        C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1).
+        C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1), in
+        :data:`STATIC_LOAD_RATING_RANGE`.
     """
 
     _section = "bearing"
@@ -362,7 +368,9 @@ class Geometry:
                              "bearing without clearance")
         field_bounded(self, "first_element_azimuth", "deg", *FIRST_ELEMENT_AZIMUTH_RANGE,
                       why="the azimuth of element 0 from the radial load, within one turn")
-        _optional_positive(self, "static_load_rating", "N")
+        if self.static_load_rating is not None:
+            field_bounded(self, "static_load_rating", "N", *STATIC_LOAD_RATING_RANGE,
+                          why="catalogue C0 values; a rating in kN is 1000 times larger")
         if self.type in BALL_TYPES:
             self._check_ball()
         else:
