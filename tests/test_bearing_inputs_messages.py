@@ -485,3 +485,15 @@ def test_tiny_static_load_rating_exits_2_without_a_traceback(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "Traceback" not in err and "bearing.static_load_rating" in err
 
+
+@pytest.mark.parametrize("rho", [5e-324, 7.85, 1e300])
+def test_element_density_outside_its_range_is_refused_naming_it(rho):
+    """1e300 kg/m^3 with the centrifugal model was reported as the loads turning a
+    contact angle beyond 90 deg, naming operation.radial_load."""
+    data = _example("7010-steel")
+    data["materials"]["element_density"] = rho
+    data.setdefault("model", {})["centrifugal"] = True
+    with pytest.raises(SceneError, match=r"materials\.element_density must lie in "
+                                         r"\[500, 25000\] kg/m\^3"):
+        Bearing.from_dict(data)
+

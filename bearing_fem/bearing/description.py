@@ -144,6 +144,10 @@ FIRST_ELEMENT_AZIMUTH_RANGE = (-360.0, 360.0)
 #: bearings (1e7..1e8 N); outside it Palmgren's f1 = z (P0/C0)^y overflows or the value is
 #: a unit slip.
 STATIC_LOAD_RATING_RANGE = (10.0, 1e9)
+
+#: ``materials.element_density`` range [kg/m^3]: polymer balls (about 900..1400) to
+#: tungsten carbide (15600); 7.85 is g/cm^3.
+ELEMENT_DENSITY_RANGE = (500.0, 25000.0)
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
 #: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`.
@@ -534,7 +538,8 @@ class BearingMaterials:
     ring_poisson, element_poisson : float or None
         Poisson ratios [-]; None: from the preset.
     element_density : float or None
-        Density of the rolling elements [kg/m^3] (centrifugal load); None: preset.
+        Density of the rolling elements [kg/m^3] (centrifugal load), in
+        :data:`ELEMENT_DENSITY_RANGE`; None: preset.
     """
 
     _section = "materials"
@@ -551,7 +556,9 @@ class BearingMaterials:
         field_choice(self, "elements", tuple(MATERIAL_PRESETS))
         for name in ("ring_modulus", "element_modulus"):
             _modulus(self, name)
-        _optional_positive(self, "element_density", "kg/m^3")
+        if self.element_density is not None:
+            field_bounded(self, "element_density", "kg/m^3", *ELEMENT_DENSITY_RANGE,
+                          why="polymer to tungsten carbide balls; 7.85 is g/cm^3")
         for name in ("ring_poisson", "element_poisson"):
             if getattr(self, name) is not None:
                 field_poisson(self, name)
