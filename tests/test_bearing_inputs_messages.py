@@ -497,3 +497,11 @@ def test_element_density_outside_its_range_is_refused_naming_it(rho):
                                          r"\[500, 25000\] kg/m\^3"):
         Bearing.from_dict(data)
 
+
+@pytest.mark.parametrize("f", [1.5, 1e300])
+def test_bore_form_friction_coefficient_above_one_is_refused(f):
+    data = _example("nncf5040")
+    data["empirical"]["friction_coefficient"] = f
+    with pytest.raises(SceneError, match=r"empirical\.friction_coefficient must lie in "
+                                         r"\(0, 1\]"):
+        Bearing.from_dict(data)

@@ -879,7 +879,7 @@ class EmpiricalOptions:
         (:func:`bearing_fem.bearing.empirical.palmgren_f1`).
     friction_coefficient : float or None
         Reduced friction coefficient f_pr [-] of the bore-based form M1 = f_pr P d/2
-        (Yachikov & Vostrikov 2015); None: that model is not evaluated.
+        (Yachikov & Vostrikov 2015), in (0, 1]; None: that model is not evaluated.
     skf_series : str or None
         Bearing series for the SKF four-component model's geometry constants: one listed
         for the bearing's type in
@@ -916,6 +916,10 @@ class EmpiricalOptions:
         for name in ("palmgren_f0", "palmgren_f1", "friction_coefficient",
                      "nikitin_flow_ratio"):
             _optional_positive(self, name, "(dimensionless)")
+        if self.friction_coefficient is not None:
+            field_bounded(self, "friction_coefficient", "(dimensionless)", 0.0, 1.0,
+                          open_low=True, why="a friction coefficient; bearings have "
+                          "0.001..0.005")
         for name in SKF_CONSTANT_FIELDS:  # which are needed and > 0: Bearing (by type)
             if getattr(self, name) is not None:
                 field_number(self, name, "(catalogue units)")
