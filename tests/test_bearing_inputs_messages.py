@@ -505,3 +505,14 @@ def test_bore_form_friction_coefficient_above_one_is_refused(f):
     with pytest.raises(SceneError, match=r"empirical\.friction_coefficient must lie in "
                                          r"\(0, 1\]"):
         Bearing.from_dict(data)
+
+
+@pytest.mark.parametrize("name, key", [("30205", "axial_load"), ("6209", "radial_load")])
+def test_load_above_the_largest_contact_load_is_refused_naming_it(name, key):
+    """An axial load of 1e20 N on the tapered row failed in Brent's bracket of the load
+    distribution ('f(a) and f(b) must have different signs', exit 3) instead of being
+    refused as input."""
+    data = _example(name)
+    data["operation"][key] = 1e20
+    with pytest.raises(SceneError, match=rf"operation\.{key} = 1e\+20 N exceeds 1e\+12 N"):
+        Bearing.from_dict(data)

@@ -136,6 +136,10 @@ MAX_NOMINAL_CONTACT_ANGLE = 60.0
 #: bearing's load, and a smaller one underflows in the load distribution.
 MIN_BEARING_LOAD = FORCE_RANGE[0]
 
+#: Largest ``operation.radial_load`` or ``axial_load`` [N]: the largest contact load the
+#: contact scenes accept (``scene.FORCE_RANGE``; the largest bearings carry about 1e8 N).
+MAX_BEARING_LOAD = FORCE_RANGE[1]
+
 #: ``bearing.first_element_azimuth`` range [deg]: one turn either way (beyond it the
 #: element azimuths psi_0 + 2 pi j/Z lose their digits).
 FIRST_ELEMENT_AZIMUTH_RANGE = (-360.0, 360.0)
@@ -684,8 +688,8 @@ class Operation:
     inner_rpm : float
         Inner-ring speed n [1/min], > 0.
     radial_load, axial_load : float
-        Fr, Fa [N], >= 0, not both zero; each 0 or at least :data:`MIN_BEARING_LOAD`
-        (1e-6 N). The radial load acts along azimuth 0.
+        Fr, Fa [N], >= 0, not both zero; each 0 or in [:data:`MIN_BEARING_LOAD`,
+        :data:`MAX_BEARING_LOAD`] (1e-6..1e12 N). The radial load acts along azimuth 0.
     oil_temperature : float or None
         Oil (and bearing) temperature [deg C], in [-60, 500] deg C
         (:data:`OIL_TEMPERATURE_RANGE`: cold starts allowed); required by a temperature law
@@ -712,6 +716,10 @@ class Operation:
                 raise SceneError(f"operation.{name} = {value:g} N is below {MIN_BEARING_LOAD:g} "
                                  "N, the smallest contact load the contact model accepts, so "
                                  "no element could carry it; give 0 for none (loads are in N)")
+            if value > MAX_BEARING_LOAD:
+                raise SceneError(f"operation.{name} = {value:g} N exceeds {MAX_BEARING_LOAD:g} "
+                                 "N, the largest contact load the contact model accepts (the "
+                                 "largest bearings carry about 1e8 N); loads are in N")
         if self.oil_temperature is not None:
             t = field_number(self, "oil_temperature", "deg C")
             t_lo, t_hi = OIL_TEMPERATURE_RANGE
