@@ -66,9 +66,10 @@ COUNTS = {
     "thermal": (30, 3),
     "rigid-gap": (45, 7),
     "outlet-grading": (20, 2),
-    "bearing-mutation": (36, 5),
+    "bearing-mutation": (60, 5),
     "bearing-variant": (24, 3),
     "bearing-garbage": (10, 2),
+    "bearing-extreme": (39, 1),
 }
 #: Margin on a stated time limit: factor and seconds (see the module docstring).
 TIME_FACTOR, TIME_SLACK = 1.25, 1.0
@@ -391,6 +392,20 @@ BEARING_FACTORS = [0.0, -1.0, 1e-3, 1e-2, 0.1, 10.0, 1e3, 1e6]
 #: Values of a wrong type or of no finite number for the mutations.
 BEARING_ODD_VALUES: list[Any] = ["text", "1e-3", True, False, [1.0, 2.0], "__inline__",
                                  math.nan, math.inf, -math.inf, 10**400, 2**63]
+#: Values far outside any range (as the scenes' EXTREMES).
+BEARING_EXTREMES = [5e-324, 1e-300, 1e-20, 1e20, 1e300, -1e300]
+#: Optional keys the shipped examples leave out, with a plausible value that a mutation
+#: scales (or replaces by an extreme).
+BEARING_OPTIONAL: dict[tuple[str, str], Any] = {
+    ("bearing", "first_element_azimuth"): 20.0, ("bearing", "static_load_rating"): 2e4,
+    ("materials", "element_density"): 7850.0, ("materials", "ring_modulus"): 2.08e11,
+    ("materials", "element_poisson"): 0.3, ("model", "min_load_fraction"): 1e-3,
+    ("model", "roughness"): 2e-7, ("empirical", "palmgren_f0"): 2.0,
+    ("empirical", "palmgren_f1"): 5e-4, ("empirical", "friction_coefficient"): 0.003,
+    ("empirical", "nikitin_flow_ratio"): 1.0, ("lubricant", "thermal_conductivity"): 0.13,
+    ("lubricant", "specific_heat"): 2000.0, ("operation", "oil_temperature"): 60.0,
+    ("mesh", "x_range"): [-4.5, 1.5], ("mesh", "y_range"): [-3.0, 3.0],
+}
 
 
 def example_bearing(name: str) -> dict:
@@ -436,13 +451,25 @@ def _scaled(value: Any, factor: float) -> Any:
     return value * factor
 
 
-def gen_bearing_mutation(rng: random.Random, quick: bool) -> tuple[str, bytes, dict]:
-    """One shipped example with one number scaled, one value of a wrong type (string,
-    boolean, array, inline table, NaN, inf, a huge integer), a key missing or an unknown
-    key or section."""
+def gen_bearing_mutation(rng: random.Random, quick: bool, index: int = 0) -> tuple[str, bytes, dict]:
+    """One shipped example with one number scaled or set to an extreme (5e-324 ..
+    1e300), one value of a wrong type (string, boolean, array, inline table, NaN, inf, a
+    huge integer), an optional key added (plausible, scaled or extreme), a key missing or
+    an unknown key or section."""
     name = rng.choice(BEARING_EXAMPLES)
     data = _bearing_budget(rng, example_bearing(name), quick)
-    kind = rng.choices(["scale", "odd", "missing", "unknown"], weights=[5, 4, 2, 1])[0]
+    kind = rng.choices(["scale", "odd", "missing", "unknown", "extreme", "optional"],
+                       weights=[5, 4, 2, 1, 2, 3])[0]
+    if kind == "optional":
+        (section, key), value = rng.choice(list(BEARING_OPTIONAL.items()))
+        if rng.random() < 0.3:
+            value = rng.choice(BEARING_EXTREMES)
+            value = [-abs(value), 1.5] if isinstance(BEARING_OPTIONAL[section, key], list) \
+                else value
+        else:
+            value = _scaled(value, rng.choice(BEARING_FACTORS + [1.0, 1.0]))
+        data.setdefault(section, {})[key] = value
+        return f"{name}: optional {section}.{key} = {value!r}", _toml(data), data
     if kind == "missing":
         section = rng.choice([s for s in data if isinstance(data[s], dict)])
         if rng.random() < 0.25:
@@ -459,6 +486,11 @@ def gen_bearing_mutation(rng: random.Random, quick: bool) -> tuple[str, bytes, d
         data["frobnicate"] = {"a": 1}
         return f"{name}: unknown section [frobnicate]", _toml(data), data
     section, key = rng.choice(_numeric_fields(data))
+    if kind == "extreme":
+        value = rng.choice(BEARING_EXTREMES)
+        data[section][key] = [value] * len(data[section][key]) \
+            if isinstance(data[section][key], list) else value
+        return f"{name}: {section}.{key} = {value!r}", _toml(data), data
     if kind == "scale":
         factor = rng.choice(BEARING_FACTORS)
         data[section][key] = _scaled(data[section][key], factor)
@@ -473,7 +505,7 @@ def gen_bearing_mutation(rng: random.Random, quick: bool) -> tuple[str, bytes, d
     return f"{name}: {section}.{key} = {shown}", text, data
 
 
-def gen_bearing_variant(rng: random.Random, quick: bool) -> tuple[str, bytes, dict]:
+def gen_bearing_variant(rng: random.Random, quick: bool, index: int = 0) -> tuple[str, bytes, dict]:
     """A realistic bearing that should solve: a shipped example at another load, speed,
     oil temperature, clearance, number of rows or contact angle, a tapered bearing with
     and without axial load, crowned or logarithmic rollers with few slices, the
@@ -561,7 +593,7 @@ def gen_bearing_variant(rng: random.Random, quick: bool) -> tuple[str, bytes, di
     return f"{name}: {', '.join(notes)}", _toml(data), data
 
 
-def gen_bearing_garbage(rng: random.Random, quick: bool) -> tuple[str, bytes, dict]:
+def gen_bearing_garbage(rng: random.Random, quick: bool, index: int = 0) -> tuple[str, bytes, dict]:
     """Structural garbage given to ``bearing``: broken TOML, a contact scene, an empty or
     binary file, a byte-order mark (valid), ``[[bearing]]``, a missing ``[bearing]``."""
     name = rng.choice(BEARING_EXAMPLES)
@@ -594,9 +626,43 @@ def gen_bearing_garbage(rng: random.Random, quick: bool) -> tuple[str, bytes, di
     return f"{name}, nested table [bearing.extra]", text + b"\n[bearing.extra]\na = 1\n", {}
 
 
-BEARING_GENERATORS: dict[str, Callable[[random.Random, bool], tuple[str, bytes, dict]]] = {
+def bearing_fields() -> list[tuple[str, str, list[str]]]:
+    """(section, key, examples) of every number of the shipped examples and of the
+    optional keys (:data:`BEARING_OPTIONAL`), with the examples it applies to."""
+    out: dict[tuple[str, str], list[str]] = {}
+    for name in BEARING_EXAMPLES:
+        for field_ in _numeric_fields(example_bearing(name)):
+            out.setdefault(field_, []).append(name)
+    balls = [n for n in BEARING_EXAMPLES if _is_ball(example_bearing(n))]
+    for field_ in BEARING_OPTIONAL:
+        out.setdefault(field_, balls if field_ == ("mesh", "y_range") else BEARING_EXAMPLES)
+    return [(sec, key, names) for (sec, key), names in out.items()]
+
+
+def gen_bearing_extreme(rng: random.Random, quick: bool, index: int = 0
+                        ) -> tuple[str, bytes, dict]:
+    """Field ``index`` of :func:`bearing_fields` (every number once, in turn) set to an
+    extreme value (:data:`BEARING_EXTREMES`) in an example that has it."""
+    fields = bearing_fields()
+    section, key, names = fields[index % len(fields)]
+    name = rng.choice(names)
+    data = _bearing_budget(rng, example_bearing(name), quick)
+    value = rng.choice(BEARING_EXTREMES)
+    old = data.get(section, {}).get(key, BEARING_OPTIONAL.get((section, key)))
+    if key in ("x_range", "y_range"):
+        new: Any = [-abs(value), 1.5] if rng.random() < 0.5 else [-4.5, abs(value)]
+    elif isinstance(old, list):
+        new = [value] * len(old)
+    else:
+        new = value
+    data.setdefault(section, {})[key] = new
+    return f"{name}: {section}.{key} = {new!r}", _toml(data), data
+
+
+BEARING_GENERATORS: dict[str, Callable[[random.Random, bool, int],
+                                       tuple[str, bytes, dict]]] = {
     "bearing-mutation": gen_bearing_mutation, "bearing-variant": gen_bearing_variant,
-    "bearing-garbage": gen_bearing_garbage,
+    "bearing-garbage": gen_bearing_garbage, "bearing-extreme": gen_bearing_extreme,
 }
 
 
@@ -612,7 +678,7 @@ def generate(seed: int, quick: bool = False) -> list[Case]:
                 cases.append(Case(name, category, desc, text))
                 continue
             if category in BEARING_GENERATORS:
-                desc, text, data = BEARING_GENERATORS[category](rng, quick)
+                desc, text, data = BEARING_GENERATORS[category](rng, quick, i)
                 sol = data.get("solver", {})
                 limit, budget = sol.get("time_limit"), sol.get("iteration_budget")
                 cases.append(Case(name, category, desc, text,
@@ -795,15 +861,19 @@ def _check_bearing(case: Case, summary: dict, res: Outcome) -> None:
     """The checks of a bearing summary: signs and friction coefficients of a successful
     one (anywhere in it: totals, elements, contacts, film formulas, empirical models),
     h_min <= h_central of each contact, and each contact's Newton iterations and wall
-    time against the per-contact budget (``[solver]`` applies to every contact), the
-    bearing's wall time against the limit times its distinct contact solves."""
+    time (per slice for a profiled roller, whose contact sums its slices) against the
+    per-contact budget (``[solver]`` applies to every contact scene), the bearing's wall
+    time against the limit times its distinct contact solves."""
     v = res.violations
     contacts = [c for e in summary.get("elements") or [] for c in (e.get("inner"),
                                                                    e.get("outer"))
                 if isinstance(c, dict)]
-    its = [c["newton_iterations"] for c in contacts
+    # a profiled roller's contact sums its slices' iterations and wall times (each slice
+    # one scene with the [solver] budget): compared per slice
+    per = [max(1, c.get("slices") or 1) for c in contacts]
+    its = [c["newton_iterations"] / n for c, n in zip(contacts, per)
            if isinstance(c.get("newton_iterations"), int)]
-    res.newton_iterations = max(its, default=None)
+    res.newton_iterations = math.ceil(max(its)) if its else None
     if res.success is True:
         found: list[str] = []
         for key, value, parent in _walk_items(summary):
@@ -824,7 +894,8 @@ def _check_bearing(case: Case, summary: dict, res: Outcome) -> None:
     if case.time_limit is None:
         return
     limit = case.time_limit
-    walls = [c["wall_time_s"] for c in contacts if isinstance(c.get("wall_time_s"), (int, float))]
+    walls = [c["wall_time_s"] / n for c, n in zip(contacts, per)
+             if isinstance(c.get("wall_time_s"), (int, float))]
     solves = (summary.get("contact_solves") or {}).get("distinct_solved") or 0
     ratios = [w / limit for w in walls]
     if isinstance(res.summary_wall_s, (int, float)):
