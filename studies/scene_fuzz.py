@@ -1,5 +1,6 @@
-"""Seeded fuzz of the command line: does ``bearing-fem solve`` ever crash, write NaN,
-contradict itself, call an unphysical number a success, or overrun its budget?
+"""Seeded fuzz of the command line: does ``bearing-fem solve`` or ``bearing-fem bearing``
+ever crash, write NaN, contradict itself, call an unphysical number a success, or overrun
+its budget?
 
 Question
     For a few hundred generated scenes -- structural garbage (wrong types, unknown keys,
@@ -7,14 +8,27 @@ Question
     contacts, thermal line contacts, point contacts with a traction model, rigid
     prescribed-gap contacts on both sides of Kapitsa's existence limit, and line contacts
     on outlet-graded grids (``mesh.grading = "outlet"``) -- does every run
-    of ``bearing-fem solve SCENE --out DIR`` end in an orderly way?
+    of ``bearing-fem solve SCENE --out DIR`` end in an orderly way? And for bearing files
+    generated from the five shipped examples -- mutations (a number scaled by 0, -1,
+    1e-3 .. 1e6 or set to an extreme, a value of a wrong type, a string, a boolean,
+    ``nan``/``inf``, a huge integer, a key missing, an unknown key or section, an optional
+    key added), every number of the examples and the optional keys in turn at an extreme
+    value, realistic variants that should solve (loads, speeds, oil temperatures,
+    clearances, rows, contact angles, tapered rows with and without axial load, crowned
+    and logarithmic rollers with few slices, the centrifugal model, the thermal patch)
+    and structural garbage (broken TOML, a contact scene, an empty or binary file) -- does
+    every run of ``bearing-fem bearing FILE --out DIR --no-figures`` end in an orderly way?
 
 Scene
     Each case is a TOML file generated from a seed (:func:`generate`). Every generated
     scene that can be solved carries ``[solver] time_limit`` and ``iteration_budget``.
     Each case runs ``bearing_fem.cli.main(["solve", file, "--out", dir])`` in its own
     forked process (stdout and stderr captured at the file-descriptor level, a hard
-    timeout well above the stated time limit), two at a time.
+    timeout well above the stated time limit), two at a time. Bearing cases run
+    ``cli.main(["bearing", file, "--out", dir, "--no-figures"])`` the same way; every
+    solvable one carries coarse contact grids (``[mesh] point_nodes`` 33..65 or
+    ``line_nodes`` 201..401) and ``[solver] time_limit`` (1 or 2 s) and
+    ``iteration_budget``, which apply to each contact scene.
 
 Checks (each failure is a *violation*, listed with its case)
     * ``traceback``: an exit code other than 0, 2 or 3, or "Traceback" on stderr;
@@ -31,12 +45,22 @@ Checks (each failure is a *violation*, listed with its case)
       (the limit is checked between Newton iterations, and post-processing follows the
       last one), or a process that had to be killed at its hard timeout.
 
+    Bearing cases are checked the same way on ``bearing_summary.json``, the physical checks
+    applied to every number of a successful summary (totals, elements, contacts, film
+    formulas, empirical models; not the input echo ``bearing`` or the relative errors
+    ``error_estimate``): ``negative-film``, ``negative-load``, ``negative-torque``,
+    ``negative-heat`` (keys in :data:`BEARING_SIGNED_KEYS`), ``friction>1`` (any
+    ``friction_coefficient``), ``film-order`` (h_min > h_central in one mapping);
+    ``budget-iterations`` and ``budget-time`` per contact scene (a profiled roller's
+    contact, which sums its slices, per slice), and ``budget-time`` also for the
+    bearing's wall time above 1.25 x the limit x its distinct contact solves + 1 s.
+
 Expected outcome
     Zero violations. The study returns the counts and writes ``cases.csv`` and
     ``cases.md`` (every case and its outcome) and ``violations/<case>.toml``, the
     reproducer of each violation, into ``outdir``.
 
-Run: ``python studies/scene_fuzz.py OUTDIR [--quick] [--seed N]``.
+Run: ``python studies/scene_fuzz.py OUTDIR [--quick] [--seed N] [--only CATEGORY ..]``.
 """
 
 import argparse
@@ -971,7 +995,9 @@ def main(outdir: str | Path = "out/scene_fuzz", quick: bool = False, seed: int =
     -------
     dict
         ``cases``, ``seed``, ``max_time_ratio`` (largest solve wall time over its time
-        limit), ``max_iteration_ratio`` (largest Newton iterations over the budget),
+        limit; a bearing: the largest of its contact scenes' ratios and of its wall time
+        over the limit times its distinct solves), ``max_iteration_ratio`` (largest
+        Newton iterations over the budget; a bearing: its contact scene with the most),
         ``by_category``, ``by_exit`` (exit code -> count),
         ``by_status``, ``violations`` (number of cases with one), ``by_violation``
         (check -> count), ``violating`` (list of ``{"case", "description",
