@@ -27,7 +27,7 @@ Scene
     timeout well above the stated time limit), two at a time. Bearing cases run
     ``cli.main(["bearing", file, "--out", dir, "--no-figures"])`` the same way; every
     solvable one carries coarse contact grids (``[mesh] point_nodes`` 33..65 or
-    ``line_nodes`` 201..401) and ``[solver] time_limit`` (1 or 2 s) and
+    ``line_nodes`` 201..401) and ``[solver] time_limit`` (0.5 or 1 s) and
     ``iteration_budget``, which apply to each contact scene.
 
 Checks (each failure is a *violation*, listed with its case)
@@ -455,7 +455,7 @@ def _bearing_budget(rng: random.Random, data: dict, quick: bool) -> dict:
         mesh["point_nodes"] = [n, n]
     else:
         mesh["line_nodes"] = rng.choice([201, 301] if quick else [201, 301, 401])
-    data["solver"] = {"time_limit": rng.choice([1.0, 2.0]),
+    data["solver"] = {"time_limit": rng.choice([0.5, 1.0]),
                       "iteration_budget": rng.choice([30, 80, 200])}
     return data
 
