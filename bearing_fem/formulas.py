@@ -139,8 +139,9 @@ def moes_line_central(M: Any, L: Any) -> Any:
     asy = moes_line_asymptotes(M, L)
     s = asy["s"]
     iso = (asy["H_RI"] ** (7.0 / 3.0) + asy["H_EI"] ** (7.0 / 3.0)) ** (3.0 * s / 7.0)
-    with np.errstate(divide="ignore"):
-        # L = 0: H_RP = H_EP = 0 -> inverse powers inf -> piezo-viscous term 0 (exact limit)
+    with np.errstate(divide="ignore", over="ignore"):
+        # L = 0 (or L so small that the inverse powers overflow): H_RP, H_EP -> 0 ->
+        # inverse powers inf -> piezo-viscous term 0 (exact limit)
         piezo = (asy["H_RP"] ** -3.5 + asy["H_EP"] ** -3.5) ** (-2.0 * s / 7.0)
     return (iso + piezo) ** (1.0 / s)
 
@@ -192,7 +193,7 @@ def nijenbanning_central(M: Any, L: Any, lam: Any = 1.0) -> Any:
     s = asy["s"]
     iso = (asy["H_RI"] ** 1.5 + (asy["H_EI"] ** -4.0 + 0.1**4) ** (-3.0 / 8.0)) \
         ** (2.0 * s / 3.0)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):  # L -> 0: term -> 0 (exact limit)
         piezo = (asy["H_RP"] ** -8.0 + asy["H_EP"] ** -8.0) ** (-s / 8.0)
     return (iso + piezo) ** (1.0 / s)
 

@@ -1,5 +1,6 @@
-"""Seeded fuzz of the command line: does ``bearing-fem solve`` ever crash, write NaN,
-contradict itself, call an unphysical number a success, or overrun its budget?
+"""Seeded fuzz of the command line: does ``bearing-fem solve`` or ``bearing-fem bearing``
+ever crash, write NaN, contradict itself, call an unphysical number a success, or overrun
+its budget?
 
 Question
     For a few hundred generated scenes -- structural garbage (wrong types, unknown keys,
@@ -7,14 +8,27 @@ Question
     contacts, thermal line contacts, point contacts with a traction model, rigid
     prescribed-gap contacts on both sides of Kapitsa's existence limit, and line contacts
     on outlet-graded grids (``mesh.grading = "outlet"``) -- does every run
-    of ``bearing-fem solve SCENE --out DIR`` end in an orderly way?
+    of ``bearing-fem solve SCENE --out DIR`` end in an orderly way? And for bearing files
+    generated from the five shipped examples -- mutations (a number scaled by 0, -1,
+    1e-3 .. 1e6 or set to an extreme, a value of a wrong type, a string, a boolean,
+    ``nan``/``inf``, a huge integer, a key missing, an unknown key or section, an optional
+    key added), every number of the examples and the optional keys in turn at an extreme
+    value, realistic variants that should solve (loads, speeds, oil temperatures,
+    clearances, rows, contact angles, tapered rows with and without axial load, crowned
+    and logarithmic rollers with few slices, the centrifugal model, the thermal patch)
+    and structural garbage (broken TOML, a contact scene, an empty or binary file) -- does
+    every run of ``bearing-fem bearing FILE --out DIR --no-figures`` end in an orderly way?
 
 Scene
     Each case is a TOML file generated from a seed (:func:`generate`). Every generated
     scene that can be solved carries ``[solver] time_limit`` and ``iteration_budget``.
     Each case runs ``bearing_fem.cli.main(["solve", file, "--out", dir])`` in its own
     forked process (stdout and stderr captured at the file-descriptor level, a hard
-    timeout well above the stated time limit), two at a time.
+    timeout well above the stated time limit), two at a time. Bearing cases run
+    ``cli.main(["bearing", file, "--out", dir, "--no-figures"])`` the same way; every
+    solvable one carries coarse contact grids (``[mesh] point_nodes`` 33..65 or
+    ``line_nodes`` 201..401) and ``[solver] time_limit`` (0.5 or 1 s) and
+    ``iteration_budget``, which apply to each contact scene.
 
 Checks (each failure is a *violation*, listed with its case)
     * ``traceback``: an exit code other than 0, 2 or 3, or "Traceback" on stderr;
@@ -31,12 +45,22 @@ Checks (each failure is a *violation*, listed with its case)
       (the limit is checked between Newton iterations, and post-processing follows the
       last one), or a process that had to be killed at its hard timeout.
 
+    Bearing cases are checked the same way on ``bearing_summary.json``, the physical checks
+    applied to every number of a successful summary (totals, elements, contacts, film
+    formulas, empirical models; not the input echo ``bearing`` or the relative errors
+    ``error_estimate``): ``negative-film``, ``negative-load``, ``negative-torque``,
+    ``negative-heat`` (keys in :data:`BEARING_SIGNED_KEYS`), ``friction>1`` (any
+    ``friction_coefficient``), ``film-order`` (h_min > h_central in one mapping);
+    ``budget-iterations`` and ``budget-time`` per contact scene (a profiled roller's
+    contact, which sums its slices, per slice), and ``budget-time`` also for the
+    bearing's wall time above 1.25 x the limit x its distinct contact solves + 1 s.
+
 Expected outcome
     Zero violations. The study returns the counts and writes ``cases.csv`` and
     ``cases.md`` (every case and its outcome) and ``violations/<case>.toml``, the
     reproducer of each violation, into ``outdir``.
 
-Run: ``python studies/scene_fuzz.py OUTDIR [--quick] [--seed N]``.
+Run: ``python studies/scene_fuzz.py OUTDIR [--quick] [--seed N] [--only CATEGORY ..]``.
 """
 
 import argparse
@@ -66,12 +90,18 @@ COUNTS = {
     "thermal": (30, 3),
     "rigid-gap": (45, 7),
     "outlet-grading": (20, 2),
+    "bearing-mutation": (60, 5),
+    "bearing-variant": (24, 3),
+    "bearing-garbage": (10, 2),
+    "bearing-extreme": (39, 1),
 }
 #: Margin on a stated time limit: factor and seconds (see the module docstring).
 TIME_FACTOR, TIME_SLACK = 1.25, 1.0
 #: Hard timeout of one case [s] beyond its time limit (imports are shared by fork;
 #: export and the error-estimate levels come after the last Newton iteration).
 HARD_TIMEOUT = 60.0
+#: Hard timeout of one bearing case [s] (its contacts share the per-contact time limit).
+HARD_TIMEOUT_BEARING = 180.0
 #: Longest exit-2 message [characters].
 MAX_MESSAGE = 600
 #: A Python warning as ``warnings.showwarning`` prints it: "file.py:12: RuntimeWarning: ..".
@@ -88,6 +118,7 @@ class Case:
     text: bytes
     time_limit: float | None = None
     iteration_budget: int | None = None
+    command: str = "solve"
 
 
 @dataclass
@@ -101,6 +132,7 @@ class Outcome:
     success: Any = None
     newton_iterations: int | None = None
     summary_wall_s: float | None = None
+    time_ratio: float | None = None
     violations: list[str] = field(default_factory=list)
     stderr: str = ""
 
@@ -374,6 +406,290 @@ GENERATORS: dict[str, Callable[[random.Random, bool], tuple[str, dict]]] = {
 }
 
 
+# ---------------------------------------------------------------------------------------
+# bearing files (``bearing-fem bearing FILE --out DIR --no-figures``)
+# ---------------------------------------------------------------------------------------
+#: The shipped example bearings the bearing cases start from.
+BEARING_EXAMPLES = ["6209", "7010-steel", "7010-hybrid", "nncf5040", "30205"]
+#: Factors the mutations scale one number by.
+BEARING_FACTORS = [0.0, -1.0, 1e-3, 1e-2, 0.1, 10.0, 1e3, 1e6]
+#: Values of a wrong type or of no finite number for the mutations.
+BEARING_ODD_VALUES: list[Any] = ["text", "1e-3", True, False, [1.0, 2.0], "__inline__",
+                                 math.nan, math.inf, -math.inf, 10**400, 2**63]
+#: Values far outside any range (as the scenes' EXTREMES).
+BEARING_EXTREMES = [5e-324, 1e-300, 1e-20, 1e20, 1e300, -1e300]
+#: Optional keys the shipped examples leave out, with a plausible value that a mutation
+#: scales (or replaces by an extreme).
+BEARING_OPTIONAL: dict[tuple[str, str], Any] = {
+    ("bearing", "first_element_azimuth"): 20.0, ("bearing", "static_load_rating"): 2e4,
+    ("materials", "element_density"): 7850.0, ("materials", "ring_modulus"): 2.08e11,
+    ("materials", "element_poisson"): 0.3, ("model", "min_load_fraction"): 1e-3,
+    ("model", "roughness"): 2e-7, ("empirical", "palmgren_f0"): 2.0,
+    ("empirical", "palmgren_f1"): 5e-4, ("empirical", "friction_coefficient"): 0.003,
+    ("empirical", "nikitin_flow_ratio"): 1.0, ("lubricant", "thermal_conductivity"): 0.13,
+    ("lubricant", "specific_heat"): 2000.0, ("operation", "oil_temperature"): 60.0,
+    ("mesh", "x_range"): [-4.5, 1.5], ("mesh", "y_range"): [-3.0, 3.0],
+}
+
+
+def example_bearing(name: str) -> dict:
+    """A shipped example bearing as a nested dict (the TOML layout)."""
+    from importlib import resources
+
+    import tomllib
+
+    text = (resources.files("bearing_fem") / "bearings" / f"{name}.toml").read_text(
+        encoding="utf-8")
+    return tomllib.loads(text)
+
+
+def _is_ball(data: dict) -> bool:
+    return str(data.get("bearing", {}).get("type", "")).endswith("ball")
+
+
+def _bearing_budget(rng: random.Random, data: dict, quick: bool) -> dict:
+    """Coarse contact grids and a per-contact solver budget: a few seconds a bearing."""
+    mesh = data.setdefault("mesh", {})
+    if _is_ball(data):
+        n = rng.choice([33, 41] if quick else [33, 41, 49, 65])
+        mesh["point_nodes"] = [n, n]
+    else:
+        mesh["line_nodes"] = rng.choice([201, 301] if quick else [201, 301, 401])
+    data["solver"] = {"time_limit": rng.choice([0.5, 1.0]),
+                      "iteration_budget": rng.choice([30, 80, 200])}
+    return data
+
+
+def _numeric_fields(data: dict) -> list[tuple[str, str]]:
+    """(section, key) of every number of a bearing dict outside [mesh] and [solver]."""
+    return [(sec, key) for sec, table in data.items() if isinstance(table, dict)
+            and sec not in ("mesh", "solver") for key, v in table.items()
+            if not isinstance(v, bool) and isinstance(v, (int, float, list))]
+
+
+def _scaled(value: Any, factor: float) -> Any:
+    if isinstance(value, list):
+        return [_scaled(v, factor) for v in value]
+    if isinstance(value, int) and float(factor).is_integer():
+        return value * int(factor)
+    return value * factor
+
+
+def gen_bearing_mutation(rng: random.Random, quick: bool, index: int = 0) -> tuple[str, bytes, dict]:
+    """One shipped example with one number scaled or set to an extreme (5e-324 ..
+    1e300), one value of a wrong type (string, boolean, array, inline table, NaN, inf, a
+    huge integer), an optional key added (plausible, scaled or extreme), a key missing or
+    an unknown key or section."""
+    name = rng.choice(BEARING_EXAMPLES)
+    data = _bearing_budget(rng, example_bearing(name), quick)
+    kind = rng.choices(["scale", "odd", "missing", "unknown", "extreme", "optional"],
+                       weights=[5, 4, 2, 1, 2, 3])[0]
+    if kind == "optional":
+        (section, key), value = rng.choice(list(BEARING_OPTIONAL.items()))
+        if rng.random() < 0.3:
+            value = rng.choice(BEARING_EXTREMES)
+            value = [-abs(value), 1.5] if isinstance(BEARING_OPTIONAL[section, key], list) \
+                else value
+        else:
+            value = _scaled(value, rng.choice(BEARING_FACTORS + [1.0, 1.0]))
+        data.setdefault(section, {})[key] = value
+        return f"{name}: optional {section}.{key} = {value!r}", _toml(data), data
+    if kind == "missing":
+        section = rng.choice([s for s in data if isinstance(data[s], dict)])
+        if rng.random() < 0.25:
+            data.pop(section)
+            return f"{name}: section [{section}] missing", _toml(data), data
+        key = rng.choice(list(data[section]))
+        data[section].pop(key)
+        return f"{name}: {section}.{key} missing", _toml(data), data
+    if kind == "unknown":
+        if rng.random() < 0.5:
+            section = rng.choice([s for s in data if isinstance(data[s], dict)])
+            data[section]["colour"] = "blue"
+            return f"{name}: unknown key {section}.colour", _toml(data), data
+        data["frobnicate"] = {"a": 1}
+        return f"{name}: unknown section [frobnicate]", _toml(data), data
+    section, key = rng.choice(_numeric_fields(data))
+    if kind == "extreme":
+        value = rng.choice(BEARING_EXTREMES)
+        data[section][key] = [value] * len(data[section][key]) \
+            if isinstance(data[section][key], list) else value
+        return f"{name}: {section}.{key} = {value!r}", _toml(data), data
+    if kind == "scale":
+        factor = rng.choice(BEARING_FACTORS)
+        data[section][key] = _scaled(data[section][key], factor)
+        return f"{name}: {section}.{key} x {factor:g}", _toml(data), data
+    value = rng.choice(BEARING_ODD_VALUES)
+    data[section][key] = value
+    text = _toml(data)
+    if value == "__inline__":
+        text = text.replace(b'"__inline__"', b"{ a = 1 }")
+        value = "{ a = 1 }"
+    shown = "10**400" if isinstance(value, int) and value > 2**64 else repr(value)
+    return f"{name}: {section}.{key} = {shown}", text, data
+
+
+def gen_bearing_variant(rng: random.Random, quick: bool, index: int = 0) -> tuple[str, bytes, dict]:
+    """A realistic bearing that should solve: a shipped example at another load, speed,
+    oil temperature, clearance, number of rows or contact angle, a tapered bearing with
+    and without axial load, crowned or logarithmic rollers with few slices, the
+    centrifugal model, the thermal patch (roller bearings with the Prokofiev law)."""
+    name = rng.choice(BEARING_EXAMPLES)
+    data = example_bearing(name)
+    b, op, model = data["bearing"], data["operation"], data.setdefault("model", {})
+    kind = b["type"]
+    notes = []
+    choice = rng.choice(["load", "speed", "temperature", "clearance", "rows", "angle",
+                         "profile", "centrifugal", "thermal"])
+    if choice == "load":
+        op["radial_load"] = round(op.get("radial_load", 0.0) * _loguniform(rng, 0.05, 3.0), 1)
+        if kind in ("angular-contact-ball", "deep-groove-ball") and rng.random() < 0.5:
+            op["axial_load"] = round(_loguniform(rng, 100.0, 3000.0), 1)
+        notes.append(f"Fr {op['radial_load']:g} N, Fa {op.get('axial_load', 0.0):g} N")
+    elif choice == "speed":
+        op["inner_rpm"] = round(_loguniform(rng, 50.0, 20000.0 if _is_ball(data) else 5000.0))
+        notes.append(f"{op['inner_rpm']:g} rpm")
+    elif choice == "temperature":
+        t = round(rng.uniform(20.0, 110.0), 1)
+        op["oil_temperature"] = t
+        lub = data["lubricant"]
+        if lub.get("temperature_law") != "prokofiev":  # the viscosity at t: a Prokofiev oil
+            eta = lub.pop("viscosity")
+            lub.update({"temperature_law": "prokofiev", "reference_temperature": 60.0,
+                        "reference_viscosity": eta, "exponent": 2.9})
+        notes.append(f"oil at {t:g} C (Prokofiev)")
+    elif choice == "clearance":
+        if kind == "angular-contact-ball":
+            b["contact_angle"] = round(rng.uniform(12.0, 30.0), 1)
+            notes.append(f"contact angle {b['contact_angle']:g} deg")
+        else:
+            top = 20e-6 if _is_ball(data) else 0.04 * b["element_diameter"]
+            b["radial_clearance"] = round(rng.uniform(0.0, top), 8)
+            notes.append(f"c_r {b['radial_clearance']:g} m")
+    elif choice == "rows" and not _is_ball(data):
+        rows = rng.choice([1, 2, 4] if kind == "tapered-roller" else [1, 2, 3, 4])
+        b["rows"] = rows
+        if kind == "tapered-roller" and rows > 1 and rng.random() < 0.5:
+            op["axial_load"] = 0.0
+        if "width" in b:
+            b["width"] = round(max(b["width"], 1.05 * rows * b["effective_length"]), 4)
+        notes.append(f"{rows} rows, Fa {op.get('axial_load', 0.0):g} N")
+    elif choice in ("angle", "rows"):
+        if kind in ("angular-contact-ball", "tapered-roller"):
+            beta = round(rng.uniform(10.0, 30.0 if kind == "tapered-roller" else 40.0), 1)
+            b["contact_angle"] = beta
+            if kind == "tapered-roller" and op.get("axial_load", 0.0) > 0.0:
+                op["axial_load"] = round(1.6 * op["radial_load"] * math.tan(math.radians(beta)))
+            notes.append(f"contact angle {beta:g} deg, Fa {op.get('axial_load', 0.0):g} N")
+        else:  # the tapered example as a radially loaded pair
+            data = example_bearing("30205")
+            data["bearing"]["rows"] = 2
+            data["bearing"]["width"] = 0.03
+            data["operation"]["axial_load"] = rng.choice([0.0, 2000.0])
+            name, notes = "30205", [f"2 rows, Fa {data['operation']['axial_load']:g} N"]
+    elif choice == "profile" and not _is_ball(data):
+        profile = rng.choice(["crowned", "crowned", "logarithmic"])
+        b["profile"] = profile
+        b["slices"] = rng.choice([3, 5, 7, 11])
+        if profile == "crowned":
+            b["crown_drop"] = round(_loguniform(rng, 1e-6, 0.005 * b["element_diameter"]), 8)
+            if rng.random() < 0.5:
+                b["flat_length"] = round(0.5 * b["effective_length"], 5)
+        else:
+            b["design_load"] = round(_loguniform(rng, 500.0, 50000.0))
+        notes.append(f"{profile} rollers, {b['slices']} slices")
+    elif choice in ("profile", "centrifugal"):
+        model["centrifugal"] = True
+        op["inner_rpm"] = round(op["inner_rpm"] * rng.choice([1.0, 2.0]))
+        notes.append(f"centrifugal, {op['inner_rpm']:g} rpm")
+    else:  # thermal patch: line contacts with the Prokofiev law
+        if _is_ball(data) or data["lubricant"].get("temperature_law") != "prokofiev":
+            data = example_bearing("nncf5040")
+            name = "nncf5040"
+        data.setdefault("model", {})["thermal"] = "patch"
+        data["operation"]["oil_temperature"] = round(rng.uniform(30.0, 90.0), 1)
+        data["thermal"] = {"max_iterations": rng.choice([3, 10]),
+                           "source_model": rng.choice(["jaeger", "fe"])}
+        notes.append(f"thermal patch at {data['operation']['oil_temperature']:g} C")
+    if not data.get("model"):
+        data.pop("model", None)
+    data = _bearing_budget(rng, data, quick)
+    return f"{name}: {', '.join(notes)}", _toml(data), data
+
+
+def gen_bearing_garbage(rng: random.Random, quick: bool, index: int = 0) -> tuple[str, bytes, dict]:
+    """Structural garbage given to ``bearing``: broken TOML, a contact scene, an empty or
+    binary file, a byte-order mark (valid), ``[[bearing]]``, a missing ``[bearing]``."""
+    name = rng.choice(BEARING_EXAMPLES)
+    data = _bearing_budget(rng, example_bearing(name), quick)
+    text = _toml(data)
+    choice = rng.randrange(9)
+    if choice == 0:
+        cut = rng.randrange(1, len(text))
+        return f"{name} truncated after {cut} bytes", text[:cut], {}
+    if choice == 1:
+        raw = bytearray(text)
+        for _ in range(rng.randint(1, 5)):
+            raw[rng.randrange(len(raw))] = rng.choice(b"[]=\"'#\n\\{},.xyz0")
+        return f"{name} with corrupted bytes", bytes(raw), {}
+    if choice == 2:
+        scene = rng.choice([line_elastic, point_elastic])(rng, quick)
+        return "a contact scene file", _toml(_budget(rng, scene, quick)), {}
+    if choice == 3:
+        return "empty file", b"", {}
+    if choice == 4:
+        return "binary garbage", bytes(rng.randrange(256) for _ in range(300)), {}
+    if choice == 5:
+        return f"{name} with a UTF-8 byte-order mark (valid)", b"\xef\xbb\xbf" + text, data
+    if choice == 6:
+        return f"{name} as an array of tables [[bearing]]", text.replace(
+            b"[bearing]", b"[[bearing]]", 1), {}
+    if choice == 7:
+        data.pop("bearing")
+        return f"{name} without [bearing]", _toml(data), {}
+    return f"{name}, nested table [bearing.extra]", text + b"\n[bearing.extra]\na = 1\n", {}
+
+
+def bearing_fields() -> list[tuple[str, str, list[str]]]:
+    """(section, key, examples) of every number of the shipped examples and of the
+    optional keys (:data:`BEARING_OPTIONAL`), with the examples it applies to."""
+    out: dict[tuple[str, str], list[str]] = {}
+    for name in BEARING_EXAMPLES:
+        for field_ in _numeric_fields(example_bearing(name)):
+            out.setdefault(field_, []).append(name)
+    balls = [n for n in BEARING_EXAMPLES if _is_ball(example_bearing(n))]
+    for field_ in BEARING_OPTIONAL:
+        out.setdefault(field_, balls if field_ == ("mesh", "y_range") else BEARING_EXAMPLES)
+    return [(sec, key, names) for (sec, key), names in out.items()]
+
+
+def gen_bearing_extreme(rng: random.Random, quick: bool, index: int = 0
+                        ) -> tuple[str, bytes, dict]:
+    """Field ``index`` of :func:`bearing_fields` (every number once, in turn) set to an
+    extreme value (:data:`BEARING_EXTREMES`) in an example that has it."""
+    fields = bearing_fields()
+    section, key, names = fields[index % len(fields)]
+    name = rng.choice(names)
+    data = _bearing_budget(rng, example_bearing(name), quick)
+    value = rng.choice(BEARING_EXTREMES)
+    old = data.get(section, {}).get(key, BEARING_OPTIONAL.get((section, key)))
+    if key in ("x_range", "y_range"):
+        new: Any = [-abs(value), 1.5] if rng.random() < 0.5 else [-4.5, abs(value)]
+    elif isinstance(old, list):
+        new = [value] * len(old)
+    else:
+        new = value
+    data.setdefault(section, {})[key] = new
+    return f"{name}: {section}.{key} = {new!r}", _toml(data), data
+
+
+BEARING_GENERATORS: dict[str, Callable[[random.Random, bool, int],
+                                       tuple[str, bytes, dict]]] = {
+    "bearing-mutation": gen_bearing_mutation, "bearing-variant": gen_bearing_variant,
+    "bearing-garbage": gen_bearing_garbage, "bearing-extreme": gen_bearing_extreme,
+}
+
+
 def generate(seed: int, quick: bool = False) -> list[Case]:
     """The cases of one fuzz run (deterministic for a seed)."""
     rng = random.Random(seed)
@@ -384,6 +700,14 @@ def generate(seed: int, quick: bool = False) -> list[Case]:
             if category == "garbage":
                 desc, text = _garbage(rng, quick)
                 cases.append(Case(name, category, desc, text))
+                continue
+            if category in BEARING_GENERATORS:
+                desc, text, data = BEARING_GENERATORS[category](rng, quick, i)
+                sol = data.get("solver", {})
+                limit, budget = sol.get("time_limit"), sol.get("iteration_budget")
+                cases.append(Case(name, category, desc, text,
+                                  limit if isinstance(limit, float) and limit > 0 else None,
+                                  budget if type(budget) is int else None, command="bearing"))
                 continue
             desc, data = GENERATORS[category](rng, quick)
             data = _budget(rng, copy.deepcopy(data), quick)
@@ -399,7 +723,7 @@ def generate(seed: int, quick: bool = False) -> list[Case]:
 # ---------------------------------------------------------------------------------------
 # running
 # ---------------------------------------------------------------------------------------
-def _child(scene: str, outdir: str, out_path: str, err_path: str) -> None:
+def _child(argv: list[str], out_path: str, err_path: str) -> None:
     """Forked process: run the command line with stdout/stderr going to files."""
     out = open(out_path, "w", encoding="utf-8")
     err = open(err_path, "w", encoding="utf-8")
@@ -409,7 +733,7 @@ def _child(scene: str, outdir: str, out_path: str, err_path: str) -> None:
     try:
         from bearing_fem import cli
 
-        code = cli.main(["solve", scene, "--out", outdir])
+        code = cli.main(argv)
     except BaseException:  # an escaped exception is what the fuzz looks for
         traceback.print_exc()
         code = 1
@@ -418,12 +742,20 @@ def _child(scene: str, outdir: str, out_path: str, err_path: str) -> None:
     os._exit(code)
 
 
+def _argv(case: Case, path: str, outdir: str) -> list[str]:
+    """The command line of one case."""
+    if case.command == "bearing":
+        return ["bearing", path, "--out", outdir, "--no-figures"]
+    return ["solve", path, "--out", outdir]
+
+
 def _start(case: Case, work: Path) -> tuple[Any, float]:
     folder = work / case.name
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / "scene.toml").write_bytes(case.text)
+    path = folder / ("bearing.toml" if case.command == "bearing" else "scene.toml")
+    path.write_bytes(case.text)
     proc = multiprocessing.get_context("fork").Process(
-        target=_child, args=(str(folder / "scene.toml"), str(folder / "out"),
+        target=_child, args=(_argv(case, str(path), str(folder / "out")),
                              str(folder / "stdout.txt"), str(folder / "stderr.txt")))
     proc.start()
     return proc, time.perf_counter()
@@ -477,7 +809,8 @@ def check(case: Case, folder: Path, exit_code: int | None, wall: float) -> Outco
         if len(lines) != 1 or len(lines[0]) > MAX_MESSAGE:
             v.append("long-message")
         return res
-    summary_path = out / "summary.json"
+    bearing = case.command == "bearing"
+    summary_path = out / ("bearing_summary.json" if bearing else "summary.json")
     if not summary_path.is_file():
         if exit_code in (0, 3):
             v.append("exit-vs-success")
@@ -486,10 +819,13 @@ def check(case: Case, folder: Path, exit_code: int | None, wall: float) -> Outco
     if not finite:
         v.append("nonfinite")
     res.status, res.success = summary.get("status", ""), summary.get("success")
-    res.newton_iterations = summary.get("newton_iterations")
     res.summary_wall_s = summary.get("wall_time_s")
     if (exit_code == 0) != (res.success is True) or (exit_code == 3) != (res.success is False):
         v.append("exit-vs-success")
+    if bearing:
+        _check_bearing(case, summary, res)
+        return res
+    res.newton_iterations = summary.get("newton_iterations")
     if res.success is True:
         h_min, h_c = summary.get("h_min"), summary.get("h_central")
         if any(isinstance(h, (int, float)) and h < 0 for h in (h_min, h_c)):
@@ -508,10 +844,91 @@ def check(case: Case, folder: Path, exit_code: int | None, wall: float) -> Outco
     if case.iteration_budget is not None and isinstance(res.newton_iterations, int) \
             and res.newton_iterations > case.iteration_budget:
         v.append("budget-iterations")
-    if case.time_limit is not None and isinstance(res.summary_wall_s, (int, float)) \
-            and res.summary_wall_s > TIME_FACTOR * case.time_limit + TIME_SLACK:
-        v.append("budget-time")
+    if case.time_limit is not None and isinstance(res.summary_wall_s, (int, float)):
+        res.time_ratio = res.summary_wall_s / case.time_limit
+        if res.summary_wall_s > TIME_FACTOR * case.time_limit + TIME_SLACK:
+            v.append("budget-time")
     return res
+
+
+#: Keys of a bearing summary whose numbers must not be negative in a successful run,
+#: by the check they belong to (``heat_power_stabilisation``, a difference of two heat
+#: forms, may have either sign and is not listed).
+BEARING_SIGNED_KEYS = {
+    "negative-film": ("h_min", "h_central", "h_central_formula"),
+    "negative-load": ("load", "load_outer", "load_solved", "radial_load", "axial_load",
+                      "max_element_load", "centrifugal_force"),
+    "negative-torque": ("friction_torque", "friction_torque_inner", "friction_torque_outer",
+                        "torque", "torque_viscous", "torque_load"),
+    "negative-heat": ("heat_power", "heat_power_inner", "heat_power_outer",
+                      "heat_power_poiseuille_direct", "friction_heat_power",
+                      "churning_heat_power"),
+}
+
+
+def _walk_items(data: Any, skip: tuple[str, ...] = ("bearing", "units", "error_estimate")):
+    """Every (key, value, parent mapping) of a nested summary, outside the ``skip`` keys
+    (the echo of the input, the units, and the relative errors, which reuse the names
+    of the quantities)."""
+    if isinstance(data, dict):
+        for key, value in data.items():
+            if key in skip:
+                continue
+            yield key, value, data
+            yield from _walk_items(value, skip)
+    elif isinstance(data, list):
+        for value in data:
+            yield from _walk_items(value, skip)
+
+
+def _check_bearing(case: Case, summary: dict, res: Outcome) -> None:
+    """The checks of a bearing summary: signs and friction coefficients of a successful
+    one (anywhere in it: totals, elements, contacts, film formulas, empirical models),
+    h_min <= h_central of each contact, and each contact's Newton iterations and wall
+    time (per slice for a profiled roller, whose contact sums its slices) against the
+    per-contact budget (``[solver]`` applies to every contact scene), the bearing's wall
+    time against the limit times its distinct contact solves."""
+    v = res.violations
+    contacts = [c for e in summary.get("elements") or [] for c in (e.get("inner"),
+                                                                   e.get("outer"))
+                if isinstance(c, dict)]
+    # a profiled roller's contact sums its slices' iterations and wall times (each slice
+    # one scene with the [solver] budget): compared per slice
+    per = [max(1, c.get("slices") or 1) for c in contacts]
+    its = [c["newton_iterations"] / n for c, n in zip(contacts, per)
+           if isinstance(c.get("newton_iterations"), int)]
+    res.newton_iterations = math.ceil(max(its)) if its else None
+    if res.success is True:
+        found: list[str] = []
+        for key, value, parent in _walk_items(summary):
+            if not isinstance(value, (int, float)) or isinstance(value, bool):
+                continue
+            for name, keys in BEARING_SIGNED_KEYS.items():
+                if key in keys and value < 0:
+                    found.append(name)
+            if key == "friction_coefficient" and abs(value) > 1.0:
+                found.append("friction>1")
+            if key == "h_min" and isinstance(parent.get("h_central"), (int, float)) \
+                    and value > parent["h_central"]:
+                found.append("film-order")
+        v.extend(dict.fromkeys(found))
+    if case.iteration_budget is not None and res.newton_iterations is not None \
+            and res.newton_iterations > case.iteration_budget:
+        v.append("budget-iterations")
+    if case.time_limit is None:
+        return
+    limit = case.time_limit
+    walls = [c["wall_time_s"] / n for c, n in zip(contacts, per)
+             if isinstance(c.get("wall_time_s"), (int, float))]
+    solves = (summary.get("contact_solves") or {}).get("distinct_solved") or 0
+    ratios = [w / limit for w in walls]
+    if isinstance(res.summary_wall_s, (int, float)):
+        ratios.append(res.summary_wall_s / (limit * max(1, solves)))
+        if res.summary_wall_s > TIME_FACTOR * limit * max(1, solves) + TIME_SLACK:
+            v.append("budget-time")
+    res.time_ratio = max(ratios, default=None)
+    if any(w > TIME_FACTOR * limit + TIME_SLACK for w in walls) and "budget-time" not in v:
+        v.append("budget-time")
 
 
 def run_cases(cases: list[Case], work: Path, workers: int = 2) -> list[Outcome]:
@@ -519,6 +936,7 @@ def run_cases(cases: list[Case], work: Path, workers: int = 2) -> list[Outcome]:
     import bearing_fem.cli  # noqa: F401  (imported once here, shared by every fork)
     import bearing_fem.contacts.dispatch  # noqa: F401
     import bearing_fem.io  # noqa: F401
+    import bearing_fem.bearing  # noqa: F401
 
     pending = list(cases)
     running: list[tuple[Case, Any, float]] = []
@@ -531,7 +949,8 @@ def run_cases(cases: list[Case], work: Path, workers: int = 2) -> list[Outcome]:
         time.sleep(0.01)
         for item in list(running):
             case, proc, t0 = item
-            limit = (case.time_limit or 0.0) * 3.0 + HARD_TIMEOUT
+            limit = (HARD_TIMEOUT_BEARING if case.command == "bearing"
+                     else (case.time_limit or 0.0) * 3.0 + HARD_TIMEOUT)
             elapsed = time.perf_counter() - t0
             if proc.is_alive() and elapsed < limit:
                 continue
@@ -569,14 +988,16 @@ def _write_tables(outcomes: list[Outcome], outdir: Path) -> None:
 
 
 def main(outdir: str | Path = "out/scene_fuzz", quick: bool = False, seed: int = 20240612,
-         workers: int = 2) -> dict:
+         workers: int = 2, categories: list[str] | None = None) -> dict:
     """Generate, run and check the cases; write the tables; return the counts.
 
     Returns
     -------
     dict
         ``cases``, ``seed``, ``max_time_ratio`` (largest solve wall time over its time
-        limit), ``max_iteration_ratio`` (largest Newton iterations over the budget),
+        limit; a bearing: the largest of its contact scenes' ratios and of its wall time
+        over the limit times its distinct solves), ``max_iteration_ratio`` (largest
+        Newton iterations over the budget; a bearing: its contact scene with the most),
         ``by_category``, ``by_exit`` (exit code -> count),
         ``by_status``, ``violations`` (number of cases with one), ``by_violation``
         (check -> count), ``violating`` (list of ``{"case", "description",
@@ -590,6 +1011,11 @@ def main(outdir: str | Path = "out/scene_fuzz", quick: bool = False, seed: int =
     repro = outdir / "violations"
     shutil.rmtree(repro, ignore_errors=True)
     cases = generate(seed, quick)
+    if categories:  # a subset of the same cases (generation does not depend on it)
+        unknown = sorted(set(categories) - set(COUNTS))
+        if unknown:
+            raise ValueError(f"unknown categories {unknown}; known: {', '.join(COUNTS)}")
+        cases = [c for c in cases if c.category in categories]
     outcomes = run_cases(cases, work, workers)
     _write_tables(outcomes, outdir)
     violating = []
@@ -609,8 +1035,7 @@ def main(outdir: str | Path = "out/scene_fuzz", quick: bool = False, seed: int =
     for o in outcomes:
         for name in o.violations:
             by_violation[name] = by_violation.get(name, 0) + 1
-    time_ratios = [o.summary_wall_s / o.case.time_limit for o in outcomes
-                   if o.case.time_limit and isinstance(o.summary_wall_s, (int, float))]
+    time_ratios = [o.time_ratio for o in outcomes if o.time_ratio is not None]
     its_ratios = [o.newton_iterations / o.case.iteration_budget for o in outcomes
                   if o.case.iteration_budget and isinstance(o.newton_iterations, int)]
     result = {
@@ -633,8 +1058,10 @@ if __name__ == "__main__":
     parser.add_argument("outdir", nargs="?", default="out/scene_fuzz")
     parser.add_argument("--quick", action="store_true", help="the ~40-case subset")
     parser.add_argument("--seed", type=int, default=20240612)
+    parser.add_argument("--only", nargs="+", metavar="CATEGORY",
+                        help=f"run only these categories ({', '.join(COUNTS)})")
     args = parser.parse_args()
-    res = main(args.outdir, quick=args.quick, seed=args.seed)
+    res = main(args.outdir, quick=args.quick, seed=args.seed, categories=args.only)
     print(json.dumps({k: v for k, v in res.items() if k != "violating"}, indent=2))
     for item in res["violating"]:
         print(f"{item['case']}: {' '.join(item['violations'])} ({item['description']}; "

@@ -115,3 +115,18 @@ def test_film_formulas_table():
     assert len([k for k in f if "Zhirkin" in k]) == len(formulas.ZHIRKIN_FITS)
     p = film_formulas("point", 2000.0, 0.005, 2.3e11, 0.03, 5.0, 2e-8, ry=0.16)
     assert set(p) == {"Nijenbanning-Venner-Moes", "Hamrock-Dowson"}
+
+
+@pytest.mark.parametrize("piezo", [1e-300, 1e-12])
+def test_film_formulas_leave_out_the_piezoviscous_fits_for_a_vanishing_alpha(piezo):
+    """alpha = 1e-300 1/Pa (G = alpha E' ~ 1e-289) gave Hamrock-Dowson films of 1e-150 m
+    with h_min > h_central; such a contact is isoviscous for the fits: only the Moes-type
+    fits are evaluated, as for alpha = 0."""
+    from bearing_fem.bearing.empirical import FIT_MIN_MATERIALS_PARAMETER, film_formulas
+
+    assert 2.3e11 * piezo < FIT_MIN_MATERIALS_PARAMETER
+    p = film_formulas("point", 300.0, 0.004, 2.3e11, 0.007, 15.0, piezo, ry=0.1)
+    assert set(p) == {"Nijenbanning-Venner-Moes"}
+    f = film_formulas("line", 5e5, 0.012, 2.3e11, 0.1, 3.0, piezo)
+    assert set(f) == {"Moes"}
+    assert f["Moes"]["h_central"] > 0.0 and p["Nijenbanning-Venner-Moes"]["h_central"] > 0.0

@@ -419,3 +419,100 @@ def test_single_row_tapered_bearing_says_how_it_is_modelled():
     d["operation"]["axial_load"] = 0.0
     d["bearing"]["rows"] = 2
     assert not [w for w in input_warnings(Bearing.from_dict(d)) if "opposed pair" in w]
+
+
+@pytest.mark.parametrize("name, key", [("6209", "radial_load"), ("nncf5040", "radial_load"),
+                                       ("30205", "radial_load"), ("7010-steel", "axial_load")])
+@pytest.mark.parametrize("load", [1e-20, 1e-300, 5e-324])
+def test_load_below_the_smallest_contact_load_is_refused_naming_it(name, key, load):
+    """A load that no contact can carry (it underflowed in the load distribution: a
+    ZeroDivisionError of the loaded-angle average, or Brent's 'f(a) and f(b) must have
+    different signs' as a failed load distribution) is refused up front."""
+    data = _example(name)
+    data["operation"][key] = load
+    with pytest.raises(SceneError, match=rf"operation\.{key} = {load:g} N .*1e-06 N.*give 0"):
+        Bearing.from_dict(data)
+
+
+def test_tiny_radial_load_exits_2_without_a_traceback(tmp_path, capsys):
+    data = _example("6209")
+    data["operation"]["radial_load"] = 1e-300
+    path = tmp_path / "b.toml"
+    path.write_text(io.scene_to_toml(data), encoding="utf-8")
+    assert cli.main(["bearing", str(path), "--out", str(tmp_path / "out"),
+                     "--no-figures"]) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and "operation.radial_load" in err
+
+
+@pytest.mark.parametrize("psi0", [1e20, -1e300, 361.0])
+def test_first_element_azimuth_out_of_a_turn_is_refused_naming_it(psi0):
+    """1e20 deg was accepted and then reported as the loads turning a contact angle
+    beyond 90 deg (the element azimuths lose every digit)."""
+    data = _example("6209")
+    data["bearing"]["first_element_azimuth"] = psi0
+    with pytest.raises(SceneError, match=r"bearing\.first_element_azimuth must lie in "
+                                         r"\[-360, 360\] deg"):
+        Bearing.from_dict(data)
+
+
+def test_first_element_azimuth_within_a_turn_is_accepted():
+    data = _example("6209")
+    for psi0 in (-360.0, 20.0, 360.0):
+        data["bearing"]["first_element_azimuth"] = psi0
+        assert Bearing.from_dict(data).geometry.first_element_azimuth == psi0
+
+
+@pytest.mark.parametrize("c0", [5e-324, 1e-300, 1.0, 1e300])
+def test_static_load_rating_outside_its_range_is_refused_naming_it(c0):
+    """5e-324 N was accepted and overflowed Palmgren's f1 = z (P0/C0)^y: a ValueError
+    traceback of 'bearing-fem bearing' after the contact solves."""
+    data = _example("6209")
+    data["bearing"]["static_load_rating"] = c0
+    with pytest.raises(SceneError, match=r"bearing\.static_load_rating must lie in "
+                                         r"\[10, 1e\+09\] N"):
+        Bearing.from_dict(data)
+
+
+def test_tiny_static_load_rating_exits_2_without_a_traceback(tmp_path, capsys):
+    data = _example("6209")
+    data["bearing"]["static_load_rating"] = 5e-324
+    data["mesh"] = {"point_nodes": [17, 17]}
+    path = tmp_path / "b.toml"
+    path.write_text(io.scene_to_toml(data), encoding="utf-8")
+    assert cli.main(["bearing", str(path), "--out", str(tmp_path / "out"),
+                     "--no-figures"]) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and "bearing.static_load_rating" in err
+
+
+@pytest.mark.parametrize("rho", [5e-324, 7.85, 1e300])
+def test_element_density_outside_its_range_is_refused_naming_it(rho):
+    """1e300 kg/m^3 with the centrifugal model was reported as the loads turning a
+    contact angle beyond 90 deg, naming operation.radial_load."""
+    data = _example("7010-steel")
+    data["materials"]["element_density"] = rho
+    data.setdefault("model", {})["centrifugal"] = True
+    with pytest.raises(SceneError, match=r"materials\.element_density must lie in "
+                                         r"\[500, 25000\] kg/m\^3"):
+        Bearing.from_dict(data)
+
+
+@pytest.mark.parametrize("f", [1.5, 1e300])
+def test_bore_form_friction_coefficient_above_one_is_refused(f):
+    data = _example("nncf5040")
+    data["empirical"]["friction_coefficient"] = f
+    with pytest.raises(SceneError, match=r"empirical\.friction_coefficient must lie in "
+                                         r"\(0, 1\]"):
+        Bearing.from_dict(data)
+
+
+@pytest.mark.parametrize("name, key", [("30205", "axial_load"), ("6209", "radial_load")])
+def test_load_above_the_largest_contact_load_is_refused_naming_it(name, key):
+    """An axial load of 1e20 N on the tapered row failed in Brent's bracket of the load
+    distribution ('f(a) and f(b) must have different signs', exit 3) instead of being
+    refused as input."""
+    data = _example(name)
+    data["operation"][key] = 1e20
+    with pytest.raises(SceneError, match=rf"operation\.{key} = 1e\+20 N exceeds 1e\+12 N"):
+        Bearing.from_dict(data)

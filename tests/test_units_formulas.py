@@ -283,3 +283,19 @@ def test_summary_units_refuses_an_unknown_kind():
     for bad in ("Point", "ball", ""):
         with pytest.raises(ValueError, match=r"kind must be 'line' or 'point', got "):
             summary_units(bad)
+
+
+def test_moes_fits_reach_the_isoviscous_limit_without_overflow_warnings():
+    """L = 1e-290 (alpha = 1e-300 1/Pa) overflowed H_RP^-3.5 (line) and H_RP^-8 (point) to
+    inf, the exact limit, with a raw RuntimeWarning; the result is the L = 0 film."""
+    import warnings
+
+    from bearing_fem import formulas
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        line = formulas.moes_line_central(20.0, 1e-290)
+        point = formulas.nijenbanning_central(50.0, 1e-290, 0.1)
+    assert line == pytest.approx(float(formulas.moes_line_central(20.0, 0.0)), rel=1e-12)
+    assert point == pytest.approx(float(formulas.nijenbanning_central(50.0, 0.0, 0.1)),
+                                  rel=1e-12)

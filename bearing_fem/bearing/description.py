@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import (GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec, Traction,
+from ..scene import (FORCE_RANGE, GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec, Traction,
                      field_bool, field_bounded, field_choice, field_integer,
                      field_name_prefix, field_nonnegative, field_number, field_piezo,
                      field_piezo_table, field_poisson, field_positive, field_range,
@@ -130,6 +130,28 @@ MIN_NOMINAL_CONTACT_ANGLE = 2.0
 #: hold for any angle below 90 deg (the loaded angles stay below it, else the loads are
 #: refused); beyond 60 deg the bearing is a thrust bearing, which is not modelled.
 MAX_NOMINAL_CONTACT_ANGLE = 60.0
+
+#: Smallest non-zero ``operation.radial_load`` or ``axial_load`` [N]: the smallest contact
+#: load the contact scenes accept (``scene.FORCE_RANGE``); no element carries more than the
+#: bearing's load, and a smaller one underflows in the load distribution.
+MIN_BEARING_LOAD = FORCE_RANGE[0]
+
+#: Largest ``operation.radial_load`` or ``axial_load`` [N]: the largest contact load the
+#: contact scenes accept (``scene.FORCE_RANGE``; the largest bearings carry about 1e8 N).
+MAX_BEARING_LOAD = FORCE_RANGE[1]
+
+#: ``bearing.first_element_azimuth`` range [deg]: one turn either way (beyond it the
+#: element azimuths psi_0 + 2 pi j/Z lose their digits).
+FIRST_ELEMENT_AZIMUTH_RANGE = (-360.0, 360.0)
+
+#: ``bearing.static_load_rating`` C0 range [N]: miniature bearings (tens of N) to slewing
+#: bearings (1e7..1e8 N); outside it Palmgren's f1 = z (P0/C0)^y overflows or the value is
+#: a unit slip.
+STATIC_LOAD_RATING_RANGE = (10.0, 1e9)
+
+#: ``materials.element_density`` range [kg/m^3]: polymer balls (about 900..1400) to
+#: tungsten carbide (15600); 7.85 is g/cm^3.
+ELEMENT_DENSITY_RANGE = (500.0, 25000.0)
 #: Oil temperatures [deg C] accepted by ``operation.oil_temperature``: cold starts down to
 #: -60 deg C (low-temperature synthetic oils), up to 500 deg C (oils decompose long before;
 #: above it the value is kelvin), the top of :data:`bearing_fem.scene.TEMPERATURE_RANGE`.
@@ -283,9 +305,11 @@ class Geometry:
     slices : int or None
         Slices along a profiled roller (default 11; 1 for a straight roller).
     first_element_azimuth : float
-        Azimuth of element 0 [deg] from the direction of the radial load.
+        Azimuth of element 0 [deg] from the direction of the radial load, in [-360, 360]
+        (:data:`FIRST_ELEMENT_AZIMUTH_RANGE`).
     static_load_rating : float or None
-        C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1).
+        C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1), in
+        :data:`STATIC_LOAD_RATING_RANGE`.
     """
 
     _section = "bearing"
@@ -350,8 +374,11 @@ class Geometry:
             raise SceneError(f"bearing.radial_clearance must be >= 0 m, got {c_r:g} m: a "
                              "negative clearance (preload) is not modelled; give 0 for a "
                              "bearing without clearance")
-        field_number(self, "first_element_azimuth", "deg")
-        _optional_positive(self, "static_load_rating", "N")
+        field_bounded(self, "first_element_azimuth", "deg", *FIRST_ELEMENT_AZIMUTH_RANGE,
+                      why="the azimuth of element 0 from the radial load, within one turn")
+        if self.static_load_rating is not None:
+            field_bounded(self, "static_load_rating", "N", *STATIC_LOAD_RATING_RANGE,
+                          why="catalogue C0 values; a rating in kN is 1000 times larger")
         if self.type in BALL_TYPES:
             self._check_ball()
         else:
@@ -515,7 +542,8 @@ class BearingMaterials:
     ring_poisson, element_poisson : float or None
         Poisson ratios [-]; None: from the preset.
     element_density : float or None
-        Density of the rolling elements [kg/m^3] (centrifugal load); None: preset.
+        Density of the rolling elements [kg/m^3] (centrifugal load), in
+        :data:`ELEMENT_DENSITY_RANGE`; None: preset.
     """
 
     _section = "materials"
@@ -532,7 +560,9 @@ class BearingMaterials:
         field_choice(self, "elements", tuple(MATERIAL_PRESETS))
         for name in ("ring_modulus", "element_modulus"):
             _modulus(self, name)
-        _optional_positive(self, "element_density", "kg/m^3")
+        if self.element_density is not None:
+            field_bounded(self, "element_density", "kg/m^3", *ELEMENT_DENSITY_RANGE,
+                          why="polymer to tungsten carbide balls; 7.85 is g/cm^3")
         for name in ("ring_poisson", "element_poisson"):
             if getattr(self, name) is not None:
                 field_poisson(self, name)
@@ -658,7 +688,8 @@ class Operation:
     inner_rpm : float
         Inner-ring speed n [1/min], > 0.
     radial_load, axial_load : float
-        Fr, Fa [N], >= 0, not both zero. The radial load acts along azimuth 0.
+        Fr, Fa [N], >= 0, not both zero; each 0 or in [:data:`MIN_BEARING_LOAD`,
+        :data:`MAX_BEARING_LOAD`] (1e-6..1e12 N). The radial load acts along azimuth 0.
     oil_temperature : float or None
         Oil (and bearing) temperature [deg C], in [-60, 500] deg C
         (:data:`OIL_TEMPERATURE_RANGE`: cold starts allowed); required by a temperature law
@@ -680,6 +711,15 @@ class Operation:
         if fr == 0.0 and fa == 0.0:
             raise SceneError("operation: radial_load and axial_load are both 0 N; give a "
                              "load (an unloaded bearing has no EHL contacts)")
+        for name, value in (("radial_load", fr), ("axial_load", fa)):
+            if 0.0 < value < MIN_BEARING_LOAD:
+                raise SceneError(f"operation.{name} = {value:g} N is below {MIN_BEARING_LOAD:g} "
+                                 "N, the smallest contact load the contact model accepts, so "
+                                 "no element could carry it; give 0 for none (loads are in N)")
+            if value > MAX_BEARING_LOAD:
+                raise SceneError(f"operation.{name} = {value:g} N exceeds {MAX_BEARING_LOAD:g} "
+                                 "N, the largest contact load the contact model accepts (the "
+                                 "largest bearings carry about 1e8 N); loads are in N")
         if self.oil_temperature is not None:
             t = field_number(self, "oil_temperature", "deg C")
             t_lo, t_hi = OIL_TEMPERATURE_RANGE
@@ -847,7 +887,7 @@ class EmpiricalOptions:
         (:func:`bearing_fem.bearing.empirical.palmgren_f1`).
     friction_coefficient : float or None
         Reduced friction coefficient f_pr [-] of the bore-based form M1 = f_pr P d/2
-        (Yachikov & Vostrikov 2015); None: that model is not evaluated.
+        (Yachikov & Vostrikov 2015), in (0, 1]; None: that model is not evaluated.
     skf_series : str or None
         Bearing series for the SKF four-component model's geometry constants: one listed
         for the bearing's type in
@@ -884,6 +924,10 @@ class EmpiricalOptions:
         for name in ("palmgren_f0", "palmgren_f1", "friction_coefficient",
                      "nikitin_flow_ratio"):
             _optional_positive(self, name, "(dimensionless)")
+        if self.friction_coefficient is not None:
+            field_bounded(self, "friction_coefficient", "(dimensionless)", 0.0, 1.0,
+                          open_low=True, why="a friction coefficient; bearings have "
+                          "0.001..0.005")
         for name in SKF_CONSTANT_FIELDS:  # which are needed and > 0: Bearing (by type)
             if getattr(self, name) is not None:
                 field_number(self, name, "(catalogue units)")

@@ -390,6 +390,14 @@ def nikitin_split(rpm: float, bore: float, outside: float, ball_diameter: float,
 # ---------------------------------------------------------------------------------------
 # film formulas
 # ---------------------------------------------------------------------------------------
+#: Smallest materials parameter G = alpha E' [-] at which the piezoviscous fits
+#: (Pan-Hamrock, Dowson-Higginson, Zhirkin's sets, Hamrock-Dowson: H ~ G^b) are evaluated.
+#: Oils on steel have G of 2000..6000; as G -> 0 the fits' films vanish like G^b (1e-150 m
+#: at alpha = 1e-300 1/Pa) and Hamrock-Dowson's h_min exceeds its h_central, so a contact
+#: below this G is isoviscous for them, as alpha = 0 is.
+FIT_MIN_MATERIALS_PARAMETER = 100.0
+
+
 def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: float,
                   mean_speed: float, piezo: float, ry: float | None = None) -> dict[str, Any]:
     """Films of the published fits for one contact [m] (mean-speed inputs, SI).
@@ -399,7 +407,25 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
     H = K U^a G^b W^c in Hamrock's mean-speed groups; see
     :data:`bearing_fem.formulas.ZHIRKIN_CONVENTIONS`). Point contacts (``load`` in N):
     Nijenbanning-Venner-Moes central and Hamrock-Dowson (minimum and central). An
-    isoviscous contact (alpha = 0) gets only the Moes-type fits (the others need alpha E' > 0).
+    isoviscous contact (alpha E' below :data:`FIT_MIN_MATERIALS_PARAMETER`, alpha = 0
+    included) gets only the Moes-type fits (the others are fits in G = alpha E' that
+    vanish as G -> 0).
+
+    Parameters
+    ----------
+    kind : {"line", "point"}
+    load : float
+        Contact load [N] (point) or load per unit length [N/m] (line).
+    rx, ry : float
+        Reduced radii [m] in and across the rolling direction (``ry`` for points only).
+    e_prime : float
+        Reduced modulus E' [Pa].
+    viscosity : float
+        Inlet viscosity eta0 [Pa s].
+    mean_speed : float
+        Mean entrainment speed u_m [m/s].
+    piezo : float
+        Pressure-viscosity coefficient alpha [1/Pa].
 
     Returns
     -------
@@ -407,7 +433,8 @@ def film_formulas(kind: str, load: float, rx: float, e_prime: float, viscosity: 
         name -> {"h_min": m or None, "h_central": m or None, "convention": str}.
     """
     out: dict[str, Any] = {}
-    piezo_viscous = piezo > 0.0   # the Hamrock-style fits need G = alpha E' > 0
+    # the Hamrock-style fits need a G = alpha E' of a piezoviscous oil
+    piezo_viscous = piezo * e_prime >= FIT_MIN_MATERIALS_PARAMETER
     if kind == "line":
         hc = formulas.line_central_film_moes(load, rx, e_prime, viscosity, mean_speed, piezo)
         out["Moes"] = {"h_min": None, "h_central": hc, "convention": "sum speed (Moes groups)"}
