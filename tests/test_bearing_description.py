@@ -370,3 +370,15 @@ def test_nikitin_overflow_is_reported_not_raised():
     ok = _nikitin_entry(b, 10000.0, 1e-5, 500.0, 2000.0, 1047.2)
     assert ok["heat_power"] > 0.0
     json.dumps([entry, ok], allow_nan=False)
+
+
+@pytest.mark.parametrize("t_ref", [5e-324, 1e-3])
+def test_prokofiev_viscosity_outside_the_scenes_range_names_the_law(t_ref):
+    """A reference temperature near 0 deg C drives the Prokofiev viscosity at the oil
+    temperature to ~0 Pa s: refused naming the law's fields, not a lubricant.viscosity
+    the bearing file does not contain."""
+    d = copy.deepcopy(load_example("nncf5040").to_dict())
+    d["lubricant"]["reference_temperature"] = t_ref
+    with pytest.raises(SceneError, match=r"lubricant\.temperature_law = 'prokofiev' gives "
+                                         r".* Pa s at operation\.oil_temperature = 40 deg C"):
+        Bearing.from_dict(d)

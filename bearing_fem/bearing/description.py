@@ -1049,6 +1049,9 @@ class Bearing:
                              + ("model.thermal = 'none' and " if patch else "")
                              + "lubricant.temperature_law = 'none' with lubricant.viscosity "
                              "(Pa s) at that temperature")
+        if (lub.temperature_law == "prokofiev" and op.oil_temperature is not None
+                and op.oil_temperature > 0.0):
+            self._check_law_viscosity()
         if model.elasticity == "local" and g.is_ball:
             raise SceneError("model.elasticity = 'local' (Kodnir) is defined for line "
                              f"contacts only, got {g.type!r}")
@@ -1069,6 +1072,27 @@ class Bearing:
                              "roller bearings with model.elasticity = 'half-space' and "
                              f"model.thermal = 'none'; got {g.type!r}, model.elasticity = "
                              f"{model.elasticity!r}, model.thermal = {model.thermal!r}")
+
+    def _check_law_viscosity(self) -> None:
+        """The Prokofiev law's viscosity at the oil temperature within the contact scenes'
+        :data:`~bearing_fem.scene.VISCOSITY_RANGE` [Pa s], else a SceneError naming the
+        law's fields (the contact scenes would refuse a ``lubricant.viscosity`` the bearing
+        file does not contain)."""
+        from ..physics.rheology import prokofiev
+
+        lub, t = self.lubricant, float(self.operation.oil_temperature)
+        eta = float(prokofiev(t, lub.reference_viscosity, lub.reference_temperature,
+                              lub.exponent))
+        lo, hi = VISCOSITY_RANGE
+        if not lo <= eta <= hi:
+            raise SceneError(
+                f"lubricant.temperature_law = 'prokofiev' gives {eta:.4g} Pa s at "
+                f"operation.oil_temperature = {t:g} deg C (reference_viscosity "
+                f"{lub.reference_viscosity:g} Pa s at reference_temperature "
+                f"{lub.reference_temperature:g} deg C, exponent {lub.exponent:g}), outside "
+                f"[{lo:g}, {hi:g}] Pa s; check lubricant.reference_viscosity (Pa s at "
+                "lubricant.reference_temperature, deg C), lubricant.exponent and the oil "
+                "temperature")
 
     def _check_skf_constants(self) -> None:
         """``empirical.skf_r1 ...``: exactly the constants the SKF model of this type uses
