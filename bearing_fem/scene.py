@@ -344,9 +344,10 @@ def sections_from_dict(data: Any, sections: Mapping[str, tuple[str, type]],
     if unknown:
         raise SceneError(f"unknown {what} section(s) {_names(unknown)}; "
                          f"known: {', '.join(known)}{hint}")
-    for name in required:
-        if name not in data:
-            raise SceneError(f"missing {what} section [{name}]")
+    absent = [name for name in required if name not in data]
+    if absent:
+        raise SceneError(f"missing {what} section{'s' if len(absent) > 1 else ''} "
+                         + ", ".join(f"[{name}]" for name in absent))
     kwargs: dict[str, Any] = {}
     if "title" in data:
         kwargs["title"] = data["title"]
