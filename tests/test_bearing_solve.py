@@ -397,3 +397,7 @@ def test_contacts_estimate_warnings_merge_into_one_sentence_per_quantity():
     (text,) = _merge_estimate_warnings({d: ["3 outer"], sentence(0.3, "grids 951, 1901"):
                                         ["4 inner"]})
     assert "each contact's grid and one coarser" in text, text
+    # equal estimates on other grids: one number, not a range "20 to 20%"
+    (text,) = _merge_estimate_warnings({a: ["0 inner"], sentence(0.2, "grids 951, 1901, 3801"):
+                                        ["5 inner"]})
+    assert "error 20% (level difference, each contact's grid" in text, text

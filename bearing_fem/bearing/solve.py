@@ -479,9 +479,10 @@ def _merge_estimate_warnings(texts: dict[str, list[str]]) -> dict[str, list[str]
         hows = " or ".join(sorted({f["how"] for f in found}, reverse=True))
         grids = {f["grids"] for f in found}
         where = grids.pop() if len(grids) == 1 else _coarser_grids(grids)
+        lo, hi = f"{min(errors):.3g}", f"{max(errors):.3g}"
+        span = lo if lo == hi else f"{lo} to {hi}"
         sentence = (f"{parts['key']} is not mesh-converged: estimated discretisation error "
-                    f"{min(errors):.3g} to {max(errors):.3g}% ({hows}, {where}); "
-                    f"{parts['tail']}")
+                    f"{span}% ({hows}, {where}); {parts['tail']}")
         merged[sentence] = [n for t in members for n in texts[t]]
     return merged
 
