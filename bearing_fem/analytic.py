@@ -873,7 +873,7 @@ def harris_axial_integral(epsilon: float, exponent: float) -> float:
     :func:`harris_radial_integral` J_r, a zero-clearance row whose inner ring is displaced
     by delta_r radially and delta_a axially carries F_r = Z Q_max J_r cos(alpha) and
     F_a = Z Q_max J_a sin(alpha), epsilon = (1 + (delta_a / delta_r) tan(alpha))/2
-    (Harris & Kotzalas). J_a(1/2)/J_r(1/2) = 1.260 for line contacts (n = 10/9) and 1.216
+    (Harris & Kotzalas). J_a(1/2)/J_r(1/2) = 1.258 for line contacts (n = 10/9) and 1.216
     for point contacts (n = 3/2): the axial force that a radial load induces in one row
     whose half is loaded.
 

@@ -112,12 +112,12 @@ def plot_load_distribution(result: Any, path: str | Path) -> Path:
     fig, ax = plt.subplots(figsize=(7, 4))
     other = _opposed_row(result)
     ax.bar(a["psi"], a["load"], width=0.6 * 360.0 / max(len(a["psi"]), 1), color="C0",
-           label="inner contact load" + (", row 1" if other is not None else ""))
+           label="inner contact load" + (", row 0" if other is not None else ""))
     if np.any(a["load_outer"] != a["load"]):
         ax.plot(a["psi"], a["load_outer"], "o", color="C3", label="outer contact load")
     if other is not None:
         ax.plot(other["psi"], other["load"], "D", color="C1", ms=5,
-                label="inner contact load, row 2 (opposed)")
+                label="inner contact load, row 1 (opposed)")
     half = math.degrees(result.distribution.load_zone_half_angle)
     if half < 180.0:
         ax.axvspan(-half, half, color="C0", alpha=0.08, label=f"load zone +-{half:.1f} deg")
@@ -158,17 +158,18 @@ def films_figure(result: BearingResult) -> Figure:
     plt = _pyplot()
     a = _element_arrays(result)
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
-    for key, lab, mk in (("hmin_i", "inner", "o-"), ("hmin_o", "outer", "s-")):
-        ax1.plot(a["psi"], a[key] * 1e6, mk, label=lab)
-    for key, lab, mk in (("pmax_i", "inner", "o-"), ("pmax_o", "outer", "s-")):
-        ax2.plot(a["psi"], a[key] * 1e-9, mk, label=lab)
     other = _opposed_row(result)
+    first = ", row 0" if other is not None else ""   # the row numbers of elements.csv
+    for key, lab, mk in (("hmin_i", "inner", "o-"), ("hmin_o", "outer", "s-")):
+        ax1.plot(a["psi"], a[key] * 1e6, mk, label=lab + first)
+    for key, lab, mk in (("pmax_i", "inner", "o-"), ("pmax_o", "outer", "s-")):
+        ax2.plot(a["psi"], a[key] * 1e-9, mk, label=lab + first)
     if other is not None:  # the opposed row's loaded elements (no result elsewhere: NaN)
         for ax, key, scale in ((ax1, "hmin_i", 1e6), (ax1, "hmin_o", 1e6),
                                (ax2, "pmax_i", 1e-9), (ax2, "pmax_o", 1e-9)):
             side = "inner" if key.endswith("_i") else "outer"
             ax.plot(other["psi"], other[key] * scale, "o--" if side == "inner" else "s--",
-                    mfc="none", label=f"{side}, row 2 (opposed)")
+                    mfc="none", label=f"{side}, row 1 (opposed)")
     ax1.set_ylabel("h_min [um]")
     ax2.set_ylabel("p_max [GPa]")
     ax2.set_xlabel("azimuth psi [deg]")

@@ -389,3 +389,15 @@ def test_contacts_estimate_warnings_merge_into_one_sentence_per_quantity():
     (text,) = three
     assert "20 to 35%" in text and "each contact's grid and two coarser" in text, text
     assert _merge_estimate_warnings({a: ["0 inner"]}) == {a: ["0 inner"]}, "one: unchanged"
+    # a contact whose coarsest level did not converge has one coarser grid, not two
+    d = sentence(0.25, "grids 1901, 3801")
+    (text,) = _merge_estimate_warnings({a: ["0 inner"], d: ["3 outer"]})
+    assert "each contact's grid and one to two coarser" in text, \
+        f"the grids notes list 3 and 2 grids: {text}"
+    (text,) = _merge_estimate_warnings({d: ["3 outer"], sentence(0.3, "grids 951, 1901"):
+                                        ["4 inner"]})
+    assert "each contact's grid and one coarser" in text, text
+    # equal estimates on other grids: one number, not a range "20 to 20%"
+    (text,) = _merge_estimate_warnings({a: ["0 inner"], sentence(0.2, "grids 951, 1901, 3801"):
+                                        ["5 inner"]})
+    assert "error 20% (level difference, each contact's grid" in text, text

@@ -91,3 +91,21 @@ def test_estimator_ceiling_on_known_sequences():
     c2 = error_estimates.estimator_ceiling(spread)
     assert c2["best_constant_share"] < 1.0
     assert c2["trend_correlation"] < -0.5, c2["trend_correlation"]
+
+
+def test_estimator_ceiling_per_kind_and_quantity():
+    # two map kinds whose next changes d3/d2 differ by a factor 25 (> the window of width
+    # 9): no single constant fits both, one constant per kind and quantity fits every pair
+    def seq(ratio: float) -> list[float]:
+        return list(np.cumsum([1.0, 1e-2, 1e-3, 1e-3 * ratio]))
+
+    rows = []
+    for kind, ratio in (("line", 1.0 / 30.0), ("point", 0.8)):
+        for _ in range(3):
+            row = _row({q: seq(ratio) for q in error_estimates.QUANTITIES})
+            row["kind"] = kind
+            rows.append(row)
+    c = error_estimates.estimator_ceiling(rows)
+    assert c["best_constant_share"] == 0.5, c
+    np.testing.assert_allclose(c["best_group_constants_share"], 1.0,
+                               err_msg="a constant per kind and quantity fits each group")

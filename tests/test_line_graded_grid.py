@@ -115,6 +115,27 @@ def test_failed_rigid_barus_line_above_the_load_limit_is_no_solution():
     assert ok.status == "converged", ok.message
 
 
+
+def test_converged_rigid_barus_line_above_the_load_limit_is_no_solution():
+    """1.3 times the largest load of the rigid Barus roller 'converged' on 401 nodes (alpha
+    p_max 14, h0 at the limit gap): the grid carried the excess on a one-element pressure
+    spike. No solution exists (a finite domain carries less than the limit), so the
+    status says so, as for a failed solve of that load."""
+    import bearing_fem as bf
+    from bearing_fem import analytic
+
+    limit, _ = analytic.martin_barus_load_limit(0.008, 0.04, 5.0, 2e-8)
+    scene = bf.Scene.from_dict({
+        "contact": {"kind": "line", "rx": 0.008},
+        "lubricant": {"viscosity": 0.04, "piezo": 2e-8},
+        "kinematics": {"u1": 5.0, "u2": 5.0}, "load": {"force": 1.3 * limit},
+        "model": {"elasticity": "rigid"}, "mesh": {"nodes": 401}})
+    r = bf.solve(scene)
+    assert r.status == "no_solution" and not r.success, (r.status, r.message)
+    assert f"{limit:.4g} N/m" in r.message and "spike" in r.message, r.message
+    assert 2e-8 * r.pressure.max() <= 1.0, "the reduced pressure q, bounded by 1/alpha"
+
+
 def _moes_line(mesh=None, **over):
     """The Moes M = 100, L = 10 line contact of the studies."""
     import bearing_fem as bf

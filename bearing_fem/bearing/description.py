@@ -1013,11 +1013,13 @@ class Bearing:
                 half = (harris_axial_integral(0.5, 10.0 / 9.0)
                         / harris_radial_integral(0.5, 10.0 / 9.0))
                 tb = math.tan(math.radians(g.contact_angle))
+                psi_j = math.degrees(math.acos(min(1.0, op.radial_load * tb / fa_min)))
                 raise SceneError(
                     f"operation.axial_load = {op.axial_load:g} N is too small for "
                     f"operation.radial_load = {op.radial_load:g} N on one row of tapered "
                     f"rollers at {g.contact_angle:g} deg: a single row needs more than "
-                    f"{fa_min:.4g} N (F_r tan(beta) over the roller nearest the load line), "
+                    f"{fa_min:.4g} N = F_r tan(beta)/cos(psi_j), psi_j = {psi_j:.4g} deg the "
+                    "azimuth of the roller nearest the load line (that roller alone loaded), "
                     f"and {half:.3g} F_r tan(beta) = {half * op.radial_load * tb:.4g} N to "
                     "load half its rollers; give the bearing's net axial load (including "
                     "the force its opposed bearing exerts), or rows = 2 for an opposed pair")

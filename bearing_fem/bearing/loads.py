@@ -397,11 +397,10 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
     fa = float(bearing.operation.axial_load)
     if fa > 0.0:  # a tapered bearing under axial load (the description refuses others)
         dr, da = _tapered_displacements(bearing, loads, cos_psi, row, row_sign, cb, sb, c)
-        half = _tapered_load_zone(dr, da, cr, cb, sb, g.rows)
     else:
         d_guess = 2.0 * c * (5.0 * fr_row / (g.elements * cb)) ** 0.9 / cb + cr
         dr, da = _bracket_root(resid, 0.0, d_guess, "radial displacement"), 0.0
-        half = math.pi if dr <= cr else math.acos(cr / dr)
+    half = _roller_load_zone(dr, da, cr, cb, sb, g.rows)
     qi, qo, delta, sl = loads(dr, da)
     alpha = np.full(psi.shape, beta)
     k_n = (2.0 * c) ** (-1.0 / 0.9)
@@ -448,35 +447,22 @@ def _tapered_displacements(bearing: Bearing, loads, cos_psi: np.ndarray, row: np
     def axial_resid(da: float) -> float:
         return sums(solve_dr(da), da)[1] - fa
 
-    lo, hi = 0.0, scale
-    f0 = axial_resid(0.0)
-    if f0 > 0.0:  # the radial load alone induces more than F_a: the ring moves back
-        hi, lo = 0.0, -scale
-        for _ in range(200):
-            if axial_resid(lo) < 0.0:
-                break
-            lo *= 2.0
-        else:
-            raise RuntimeError("no axial displacement balances the load (bracket grew to "
-                               f"{lo!r} m)")
+    if axial_resid(0.0) > 0.0:  # the radial load alone induces more than F_a: the ring
+        # moves back (the residual increases with delta_a: search -delta_a upwards)
+        da = -_bracket_root(lambda t: -axial_resid(-t), 0.0, scale,
+                            "axial displacement (drawn back)")
     else:
-        for _ in range(200):
-            if axial_resid(hi) > 0.0:
-                break
-            hi *= 2.0
-        else:
-            raise RuntimeError("no axial displacement balances the load (bracket grew to "
-                               f"{hi!r} m)")
-    da = brentq(axial_resid, lo, hi, xtol=1e-22, rtol=BALANCE_RTOL * 1e-2, maxiter=500)
+        da = _bracket_root(axial_resid, 0.0, scale, "axial displacement")
     return solve_dr(da), float(da)
 
 
-def _tapered_load_zone(dr: float, da: float, cr: float, cb: float, sb: float,
-                       rows: int) -> float:
+def _roller_load_zone(dr: float, da: float, cr: float, cb: float, sb: float,
+                      rows: int) -> float:
     """Half angle psi_l [rad] of the widest load zone of the rows (continuous approach
-    (delta_r cos psi - c_r) cos(beta) +- delta_a sin(beta) > 0)."""
+    (delta_r cos psi - c_r) cos(beta) +- delta_a sin(beta) > 0; with delta_a = 0,
+    cos(psi_l) = c_r/delta_r)."""
     half = 0.0
-    for s in ((1.0,) if rows == 1 else (1.0, -1.0)):
+    for s in ((1.0,) if rows == 1 or da == 0.0 else (1.0, -1.0)):
         free = s * da * sb - cr * cb       # the approach at cos(psi) = 0
         if dr <= 0.0:
             h = math.pi if free > 0.0 else 0.0

@@ -478,13 +478,25 @@ def _merge_estimate_warnings(texts: dict[str, list[str]]) -> dict[str, list[str]
         errors = [float(f["error"]) for f in found]
         hows = " or ".join(sorted({f["how"] for f in found}, reverse=True))
         grids = {f["grids"] for f in found}
-        where = grids.pop() if len(grids) == 1 else "each contact's grid and two coarser"
+        where = grids.pop() if len(grids) == 1 else _coarser_grids(grids)
+        lo, hi = f"{min(errors):.3g}", f"{max(errors):.3g}"
+        span = lo if lo == hi else f"{lo} to {hi}"
         sentence = (f"{parts['key']} is not mesh-converged: estimated discretisation error "
-                    f"{min(errors):.3g} to {max(errors):.3g}% ({hows}, {where}); "
-                    f"{parts['tail']}")
+                    f"{span}% ({hows}, {where}); {parts['tail']}")
         merged[sentence] = [n for t in members for n in texts[t]]
     return merged
 
+
+def _coarser_grids(notes: set[str]) -> str:
+    """Words for the estimates' grids when the contacts' grids differ: each contact's
+    grid and how many coarser ones (the grids notes "grids a, b, c" of
+    :func:`bearing_fem.post.estimate_warnings`, finest last)."""
+    counts = sorted({n.count(",") for n in notes if n.startswith("grids ")})
+    if not counts:
+        return "each contact's own grids"
+    words = {1: "one", 2: "two", 3: "three"}
+    lo, hi = (words.get(k, str(k)) for k in (counts[0], counts[-1]))
+    return f"each contact's grid and {lo if lo == hi else f'{lo} to {hi}'} coarser"
 
 def _default_domain(scene: Any) -> tuple[float, float]:
     """(inlet, side) of the default domain of a loaded elastic contact scene [Hertz
