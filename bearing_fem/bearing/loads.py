@@ -44,7 +44,8 @@ from .description import Bearing
 from .geometry import (ball_stiffness, free_contact_angle, groove_centre_distance,
                        radial_clearance, roller_compliance, reduced_modulus)
 
-__all__ = ["LoadDistribution", "distribute_loads", "element_azimuths", "profile_drop",
+__all__ = ["LoadDistribution", "distribute_loads", "row_axial_force", "element_azimuths",
+           "profile_drop",
            "series_ball_stiffness", "centrifugal_force", "LOAD_EXPONENT_BALL",
            "LOAD_EXPONENT_LINE"]
 
@@ -471,6 +472,26 @@ def _roller_load_zone(dr: float, da: float, cr: float, cb: float, sb: float,
             h = math.pi if cpl <= -1.0 else (0.0 if cpl >= 1.0 else math.acos(cpl))
         half = max(half, h)
     return half
+
+
+def row_axial_force(dist: LoadDistribution) -> float:
+    """Axial force of the first row's inner contacts, sum Q_i sin(alpha_i) over row 0 [N].
+
+    For one row it is the axial load the row carries; for tapered rows in opposed pairs
+    under a radial load only it is the axial force each row induces and the opposed row
+    (or the opposed bearing of a single row) reacts.
+
+    Parameters
+    ----------
+    dist : LoadDistribution
+
+    Returns
+    -------
+    float
+        [N], >= 0.
+    """
+    first = dist.row == 0
+    return float(np.sum(dist.load_inner[first] * np.sin(np.abs(dist.alpha_inner[first]))))
 
 
 def distribute_loads(bearing: Bearing) -> LoadDistribution:

@@ -31,7 +31,7 @@ from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing, input_warnings, kelvin_like_temperatures
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
-from .loads import LoadDistribution, distribute_loads
+from .loads import LoadDistribution, distribute_loads, row_axial_force
 from .totals import bearing_totals, contact_summary, slice_label
 
 __all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
@@ -59,6 +59,7 @@ BEARING_UNITS = {
     "load_distribution.max_element_load": "N", "load_distribution.centrifugal_force": "N",
     "load_distribution.radial_clearance": "m", "load_distribution.load_exponent": "1",
     "load_balance.radial_sum": "N", "load_balance.axial_sum": "N",
+    "load_balance.row_axial_force": "N",
     "load_balance.radial_relative_error": "1", "load_balance.axial_relative_error": "1",
     "energy_balance.torque_times_speed": "W", "energy_balance.heat_power": "W",
     "energy_balance.relative_difference": "1", "energy_balance.stabilisation_fraction": "1",
@@ -215,6 +216,7 @@ class BearingResult:
             fr, fa = float(op.radial_load), float(op.axial_load)
             out["load_balance"] = {
                 "radial_sum": d.radial_sum, "axial_sum": d.axial_sum,
+                "row_axial_force": row_axial_force(d),
                 "radial_relative_error": (d.radial_sum - fr) / fr if fr > 0 else None,
                 "axial_relative_error": (d.axial_sum - fa) / fa if fa > 0 else None}
             out["load_distribution"] = {
