@@ -20,8 +20,8 @@ from pathlib import Path
 from typing import Any, Literal, Mapping
 
 from ..errors import SceneError
-from ..scene import (FORCE_RANGE, GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec, Traction,
-                     field_bool, field_bounded, field_choice, field_integer,
+from ..scene import (FORCE_RANGE, GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, SolverSpec,
+                     Traction, field_bool, field_bounded, field_choice, field_integer,
                      field_name_prefix, field_nonnegative, field_number, field_piezo,
                      field_piezo_table, field_poisson, field_positive, field_range,
                      parse_toml, read_text_file, sections_from_dict, sections_to_dict)

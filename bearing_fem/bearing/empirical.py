@@ -579,9 +579,10 @@ def _nikitin_entry(bearing: Bearing, rpm: float, nu_m2s: float, fr: float, fa: f
         tot = nikitin_power_loss(*args, flow_ratio=opts.nikitin_flow_ratio,
                                  coefficient_set=opts.nikitin_set)
         split = nikitin_split(*args, material=material, flow_range="max")
+        finite = all(math.isfinite(v) for v in (tot["heat_power"], *split.values()))
     except OverflowError:
-        tot, split = {"heat_power": math.inf}, {}
-    if not all(math.isfinite(v) for v in (tot["heat_power"], *split.values())):
+        finite = False
+    if not finite:
         return {"available": False,
                 "reason": "Nikitin's criteria overflow for this oil and speed (Re, Pr or Eu "
                           "beyond double precision): far outside the fitted range"}

@@ -391,18 +391,23 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
         qi = np.where(delta > 0.0, (np.clip(delta, 0.0, None) / (2.0 * c)) ** (1.0 / 0.9), 0.0)
         return qi, qi, delta, None
 
+    def row_sums(qi: np.ndarray) -> tuple[float, float]:
+        """(sum Q cos(beta) cos(psi), sum s_k Q sin(beta)) of inner loads [N]."""
+        return float(np.sum(qi * cb * cos_psi)), float(np.sum(row_sign * qi * sb))
+
     def resid(dr: float) -> float:
         qi = loads(dr)[0]
         return float(np.sum(qi[row == 0] * cb * cos_psi[row == 0])) - fr_row
 
     fa = float(bearing.operation.axial_load)
     if fa > 0.0:  # a tapered bearing under axial load (the description refuses others)
-        dr, da = _tapered_displacements(bearing, loads, cos_psi, row, row_sign, cb, sb, c)
+        dr, da = _tapered_displacements(bearing, lambda r, a: row_sums(loads(r, a)[0]), c)
     else:
         d_guess = 2.0 * c * (5.0 * fr_row / (g.elements * cb)) ** 0.9 / cb + cr
         dr, da = _bracket_root(resid, 0.0, d_guess, "radial displacement"), 0.0
     half = _roller_load_zone(dr, da, cr, cb, sb, g.rows)
     qi, qo, delta, sl = loads(dr, da)
+    radial_sum, axial_sum = row_sums(qi)
     alpha = np.full(psi.shape, beta)
     k_n = (2.0 * c) ** (-1.0 / 0.9)
     return LoadDistribution(
@@ -410,31 +415,27 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
         alpha_outer=alpha.copy(), approach=delta, in_load_zone=qi > 0.0,
         radial_displacement=float(dr), axial_displacement=float(da), axial_offset=0.0,
         load_zone_half_angle=float(half),
-        radial_sum=float(np.sum(qi * cb * cos_psi)),
-        axial_sum=float(np.sum(row_sign * qi * sb)) if da != 0.0 else 0.0,
+        radial_sum=radial_sum, axial_sum=axial_sum if da != 0.0 else 0.0,
         centrifugal_force=fc,
         slice_positions=y, slice_widths=widths, slice_loads=sl,
         exponent=LOAD_EXPONENT_LINE, stiffness=float(k_n), clearance=cr)
 
 
-def _tapered_displacements(bearing: Bearing, loads, cos_psi: np.ndarray, row: np.ndarray,
-                           row_sign: np.ndarray, cb: float, sb: float,
-                           c: float) -> tuple[float, float]:
+def _tapered_displacements(bearing: Bearing, sums, c: float) -> tuple[float, float]:
     """(delta_r, delta_a) [m] of a tapered-roller bearing under a radial and an axial load.
 
     Row k's rollers approach by (delta_r cos psi - c_r) cos(beta) + s_k delta_a sin(beta),
     s_k = +1 for even k and -1 for odd k (opposed rows); the ring displacement balances
     sum Q cos(beta) cos(psi) = F_r and sum s_k Q sin(beta) = F_a (nested Brent: delta_r
-    for each delta_a). One row needs F_a above
+    for each delta_a); ``sums(delta_r, delta_a)`` gives those two sums [N], ``c`` is the
+    roller compliance of Palmgren's law. One row needs F_a above
     :func:`~bearing_fem.bearing.description.single_row_min_axial_load`, which the bearing
     description checks.
     """
     g, op = bearing.geometry, bearing.operation
     fr, fa = float(op.radial_load), float(op.axial_load)
-
-    def sums(dr: float, da: float) -> tuple[float, float]:
-        qi = loads(dr, da)[0]
-        return (float(np.sum(qi * cb * cos_psi)), float(np.sum(row_sign * qi * sb)))
+    beta = math.radians(g.contact_angle)
+    cb, sb = math.cos(beta), math.sin(beta)
 
     scale = 2.0 * c * (5.0 * max(fr, fa) / (g.elements * min(cb, sb))) ** 0.9
     scale = max(scale, float(g.radial_clearance), 1e-12)

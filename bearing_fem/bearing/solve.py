@@ -462,21 +462,21 @@ def _merge_estimate_warnings(texts: dict[str, list[str]]) -> dict[str, list[str]
     the range of their estimated errors, naming the grids when all contacts share them
     (text -> contact names, in the order of first appearance); other warnings
     unchanged."""
+    parsed = {text: parse_estimate_warning(text) for text in texts}
     groups: dict[tuple[str, str], list[str]] = {}
-    for text in texts:
-        parts = parse_estimate_warning(text)
+    for text, parts in parsed.items():
         if parts is not None:
             groups.setdefault((parts["key"], parts["tail"]), []).append(text)
     merged: dict[str, list[str]] = {}
     for text, names in texts.items():
-        parts = parse_estimate_warning(text)
+        parts = parsed[text]
         members = groups.get((parts["key"], parts["tail"])) if parts else None
         if not members or len(members) < 2:
             merged.setdefault(text, []).extend(names)
             continue
         if text != members[0]:
             continue  # folded into the first member's sentence
-        found = [parse_estimate_warning(t) for t in members]
+        found = [parsed[t] for t in members]
         errors = [float(f["error"]) for f in found]
         hows = " or ".join(sorted({f["how"] for f in found}, reverse=True))
         grids = {f["grids"] for f in found}

@@ -113,10 +113,9 @@ def flash_temperature(x_nodes: np.ndarray, q_elements: np.ndarray, x_eval: np.nd
     """
     if speed < 0.0:
         xn = np.asarray(x_nodes, dtype=float)
-        mirrored = flash_temperature(-xn[::-1], np.asarray(q_elements, dtype=float)[::-1],
-                                     -np.asarray(x_eval, dtype=float), conductivity, density,
-                                     heat_capacity, -speed, source_model=source_model)
-        return mirrored
+        return flash_temperature(-xn[::-1], np.asarray(q_elements, dtype=float)[::-1],
+                                 -np.asarray(x_eval, dtype=float), conductivity, density,
+                                 heat_capacity, -speed, source_model=source_model)
     if source_model == "jaeger":
         return jaeger_surface_temperature(x_nodes, q_elements, x_eval, conductivity, density,
                                           heat_capacity, speed)
