@@ -70,7 +70,8 @@ from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
                      solve_newton_model)
 from .linear import active_set_solve, pressure_from_reduced
-from .point_grid import LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates
+from .point_grid import (LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates,
+                         require_finite_factor_data)
 from .problem import ScaledResidual, fischer_burmeister
 
 log = logging.getLogger(__name__)
@@ -521,6 +522,81 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
                             cavitation)
 
 
+#: A rigid Barus point scene with Reynolds cavitation is refused before any Newton
+#: iteration (status ``no_solution``) when its load exceeds this multiple of
+#: :func:`rigid_barus_point_load_limit` (the margin covers that limit's grid error,
+#: measured below 1 % between the 81^2 and 161^2 grids, and the scene's own grid).
+RIGID_BARUS_POINT_LOAD_MARGIN = 1.1
+
+
+def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
+                                 mean_speed: float, piezo: float,
+                                 nodes: int = 81) -> tuple[float, float]:
+    """Largest load a rigid Barus point contact with the Reynolds outlet carries, and the
+    gap at which it does.
+
+    The Barus pressure p = -ln(1 - alpha q)/alpha of the isoviscous reduced pressure q
+    exists while alpha q_max < 1 (Kapitsa). On the paraboloid gap h = h0 + x^2/(2 rx)
+    + y^2/(2 ry) the isoviscous problem is self-similar in X = x/sqrt(2 rx h0),
+    Y = y/sqrt(2 ry h0): q = eta0 u_m sqrt(2 rx h0)/h0^2 Q(X, Y), Q set by ry/rx alone. So
+    q_max grows as h0^(-3/2) as the gap closes, the load grows to its limit at the gap
+    h0* where alpha q_max = 1, and there W* = 2 sqrt(rx ry) h0* int -ln(1 - Q/Q_max)/alpha
+    dX dY (a logarithmic, integrable singularity at the peak). No load above W* has a
+    solution. Q comes from one reduced-pressure solve on the default rigid grid
+    (:data:`RIGID_RANGE_REYNOLDS`, sinh-graded); the integral is taken at the
+    quadrature points, where Q < Q_max. The line-contact counterpart in closed form is
+    :func:`bearing_fem.analytic.martin_barus_load_limit`.
+
+    Parameters
+    ----------
+    rx, ry : float
+        Reduced radii [m].
+    viscosity : float
+        eta0 [Pa s].
+    mean_speed : float
+        u_m [m/s], > 0.
+    piezo : float
+        alpha [1/Pa], > 0.
+    nodes : int
+        Grid nodes per direction of the reduced-pressure solve.
+
+    Returns
+    -------
+    (float, float)
+        W* [N] and h0* [m].
+    """
+    h_n = 1e-6  # any gap: the solution is rescaled to h0* below
+    xu, yu = math.sqrt(2.0 * rx * h_n), math.sqrt(2.0 * ry * h_n)
+    (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
+    grid = PointGrid.tensor(graded_coordinates(x0, x1, nodes, xu, stretch=1.5),
+                            graded_coordinates(y0, y1, nodes, yu, stretch=1.5))
+    q, _, _ = reduced_pressure_solve(grid, h_n, rx, ry, mean_speed, viscosity,
+                                     np.zeros(grid.size), "reynolds")
+    q = np.maximum(q, 0.0)
+    q_max = float(np.max(q))
+    h_star = h_n * (piezo * q_max) ** (2.0 / 3.0)
+    ops = grid.ops
+    ratio = np.minimum(ops.value @ (q / q_max), 1.0 - 1e-16)
+    load = (h_star / h_n) * float(ops.weights @ -np.log1p(-ratio)) / piezo
+    return load, h_star
+
+
+def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
+    """(W*, h0*) of :func:`rigid_barus_point_load_limit` when ``scene`` (rigid,
+    incompressible, Barus, Reynolds cavitation, under load) asks for more than
+    :data:`RIGID_BARUS_POINT_LOAD_MARGIN` W*, else None."""
+    lub, m = scene.lubricant, scene.model
+    if not (m.elasticity == "rigid" and scene.load.force is not None
+            and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
+            and lub.density == "incompressible" and m.cavitation == "reynolds"):
+        return None
+    limit, h_star = rigid_barus_point_load_limit(
+        scene.contact.rx, scene.contact.ry, lub.viscosity, scene.kinematics.mean_speed,
+        lub.effective_piezo)
+    return (limit, h_star) if scene.load.force > RIGID_BARUS_POINT_LOAD_MARGIN * limit \
+        else None
+
+
 # ---------------------------------------------------------------------------------------
 # nonlinear problem
 # ---------------------------------------------------------------------------------------
@@ -903,6 +979,7 @@ class PointProblem(ScaledResidual):
             m = a_p + a_h @ self.compliance.near_field(self.near_field_cells)
         jpp = sp.diags(scale) @ sp.csr_matrix(m)[rows][:, rows]
         jpp = (jpp + sp.diags(diag)).tocsc()
+        require_finite_factor_data(jpp.data)
         return spla.splu(jpp, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=LU_PIVOT_THRESHOLD,
                          options={"SymmetricMode": True}).solve
 
@@ -1425,6 +1502,10 @@ def solve_point(scene: Scene, *, boundary_pressure: Callable | np.ndarray | None
         model = PointModel(scene, boundary_pressure, sq)
         if is_linear(scene):
             return solve_linear_model(model, scene, t0)
+        over = (_rigid_barus_overload(scene)
+                if boundary_pressure is None and sq == 0.0 else None)
+        if over is not None:
+            return _overload_result(scene, *over, t0)
         result = solve_newton_model(model, scene, t0, progress=progress)
         if result.success or boundary_pressure is not None or sq != 0.0:
             return result
@@ -1433,6 +1514,25 @@ def solve_point(scene: Scene, *, boundary_pressure: Callable | np.ndarray | None
             return result
         return _high_load_outcome(scene, result, narrow, solve_newton_model(
             PointModel(narrow), narrow, t0, progress=progress))
+
+
+def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Result:
+    """``no_solution`` for a rigid Barus load above its limit, without Newton iterations:
+    the fields are the linear solve's at a gap 5 % below h0* (the reduced pressure q,
+    whose alpha q_max exceeds 1 there), the message names the load and the limit."""
+    gap = 0.95 * h_star
+    linear = replace(scene, load=replace(scene.load, force=None, gap=gap))
+    res = solve_linear_model(PointModel(linear), linear, t0)
+    message = (f"no_solution: load.force = {scene.load.force:.4g} N exceeds what the rigid "
+               f"Barus point contact can carry: its largest load is {limit:.4g} N, at the "
+               f"gap h0 = {h_star:.4g} m where alpha q_max = 1 (Kapitsa's existence limit "
+               "alpha q_max < 1, docs/theory.md; the isoviscous reduced pressure grows as "
+               "h0^(-3/2) as the gap closes). Lower the load, give the gap (load.gap) "
+               "instead, or model the elasticity. The pressure field holds the reduced "
+               f"pressure q at the gap {gap:.4g} m, no Newton iteration was run.")
+    return replace(res, scene=scene, success=False, status="no_solution", message=message,
+                   quantities={}, error_estimate=None, traction_model=None,
+                   wall_time_s=time.perf_counter() - t0)
 
 
 def high_load_scene(scene: Scene, spent_iterations: int = 0,

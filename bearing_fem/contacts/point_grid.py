@@ -609,6 +609,19 @@ def graded_coordinates(lo: float, hi: float, nodes: int, unit: float,
 # ---------------------------------------------------------------------------------------
 # preconditioner pattern
 # ---------------------------------------------------------------------------------------
+def require_finite_factor_data(data: np.ndarray) -> None:
+    """Raise RuntimeError if a matrix about to be factored has a non-finite entry.
+
+    SuperLU does not check its input: a NaN or inf entry (an iterate whose viscosity
+    overflowed in the Jacobian while its residual stayed finite) crashed the process
+    (segmentation fault in ``splu``) instead of failing the Newton step, which the
+    Newton loop answers with a regularised retry.
+    """
+    bad = int(np.count_nonzero(~np.isfinite(data)))
+    if bad:
+        raise RuntimeError(f"the Jacobian to factor has {bad} non-finite entries")
+
+
 def nested_dissection(nx: int, ny: int, leaf: int = ND_LEAF_NODES) -> np.ndarray:
     """Nested-dissection order of an nx x ny tensor grid (flat index j*nx + i).
 
@@ -713,6 +726,7 @@ class FreePattern:
         """
         data = m[self._select] * np.asarray(scale)[self.perm][self._row]
         data[self._diag] += np.asarray(diag)[self.perm]
+        require_finite_factor_data(data)
         if single:
             data = data.astype(np.float32)
         a = sp.csc_matrix((data, self.indices, self.indptr), shape=(self.size, self.size))

@@ -1,0 +1,79 @@
+"""Rigid Barus point contacts under load: the largest load (Kapitsa's existence limit
+alpha q_max < 1 on the self-similar isoviscous solution) and the refusal of loads above
+it before any Newton iteration."""
+import numpy as np
+import pytest
+
+import bearing_fem as bf
+from bearing_fem.contacts.point import (RIGID_BARUS_POINT_LOAD_MARGIN,
+                                        rigid_barus_point_load_limit)
+from bearing_fem.contacts.point_grid import require_finite_factor_data
+
+RX, RY, ETA, UM, ALPHA = 0.01, 0.01, 0.01, 1.0, 2e-8
+
+
+def rigid_scene(load: dict, nodes: int = 81, ry: float = RY) -> bf.Scene:
+    return bf.Scene.from_dict({
+        "contact": {"kind": "point", "rx": RX, "ry": ry},
+        "materials": {"reduced_modulus": 2.2e11},
+        "lubricant": {"viscosity": ETA, "piezo": ALPHA, "viscosity_law": "barus"},
+        "kinematics": {"u1": UM, "u2": UM}, "load": load, "mesh": {"nodes": [nodes, nodes]},
+        "model": {"elasticity": "rigid", "cavitation": "reynolds"}})
+
+
+@pytest.mark.parametrize("ry", [RY, 4 * RY])
+def test_load_limit_is_the_largest_load_of_the_gap_solves(ry):
+    """The gap-driven linear solves (the scene's own path, no self-similarity assumed)
+    exist down to h0* and carry at most W* there: the limit from one rescaled solve is
+    the supremum of their loads."""
+    limit, h_star = rigid_barus_point_load_limit(RX, ry, ETA, UM, ALPHA)
+    assert 0.0 < limit < np.inf and h_star > 0.0
+    below = bf.solve(rigid_scene({"gap": 0.99 * h_star}, ry=ry))
+    assert below.status == "no_solution", below.message
+    loads = [bf.solve(rigid_scene({"gap": f * h_star}, ry=ry)).quantities["load"]
+             for f in (1.003, 1.05, 1.5)]
+    # 1.003 h0*: alpha q_max = 0.9955, the load within the 81^2 grid's quadrature
+    # difference (nodal mass against quadrature points, ~1 %) of the limit
+    np.testing.assert_allclose(loads[0], limit, rtol=0.03,
+                               err_msg="the load just above h0* is not the limit")
+    assert loads[0] > loads[1] > loads[2], "the load must fall as the gap opens"
+
+
+def test_load_limit_converges_with_the_grid():
+    coarse, h_c = rigid_barus_point_load_limit(RX, RY, ETA, UM, ALPHA, nodes=41)
+    fine, h_f = rigid_barus_point_load_limit(RX, RY, ETA, UM, ALPHA, nodes=161)
+    default, _ = rigid_barus_point_load_limit(RX, RY, ETA, UM, ALPHA)
+    # measured: 41^2 0.4835 N, 81^2 0.5028 N, 161^2 0.5093 N, 321^2 0.5099 N
+    np.testing.assert_allclose(default, fine, rtol=0.02,
+                               err_msg="the default 81^2 limit is off the 161^2 one by more "
+                                       "than the refusal margin can absorb")
+    assert abs(coarse - fine) > abs(default - fine), "no grid convergence"
+    np.testing.assert_allclose(h_c, h_f, rtol=0.01, err_msg="h0* depends on q_max only")
+
+
+def test_overload_is_refused_without_newton_iterations():
+    limit, h_star = rigid_barus_point_load_limit(RX, RY, ETA, UM, ALPHA)
+    force = 2.0 * RIGID_BARUS_POINT_LOAD_MARGIN * limit
+    r = bf.solve(rigid_scene({"force": force}))
+    assert r.status == "no_solution" and not r.success
+    assert r.newton_iterations == 0
+    assert f"{limit:.4g} N" in r.message and f"{force:.4g} N" in r.message, r.message
+    assert r.quantities == {} and np.all(np.isfinite(r.pressure))
+    # the fields hold the reduced pressure q at 0.95 h0*, beyond the limit: alpha q_max > 1
+    assert ALPHA * float(np.max(r.pressure)) > 1.0
+
+
+def test_load_below_the_limit_is_not_refused():
+    """Below the margin the Newton solve runs (and converges at half the limit)."""
+    limit, h_star = rigid_barus_point_load_limit(RX, RY, ETA, UM, ALPHA)
+    r = bf.solve(rigid_scene({"force": 0.5 * limit}))
+    assert r.status == "converged", r.message
+    assert r.quantities["h_central"] > h_star
+
+
+def test_factor_refuses_non_finite_entries():
+    """SuperLU does not check its input; a NaN entry crashed the process (segmentation
+    fault) on an overloaded rigid Barus ball before the check."""
+    with pytest.raises(RuntimeError, match="1 non-finite"):
+        require_finite_factor_data(np.array([1.0, np.nan, 2.0]))
+    require_finite_factor_data(np.array([1.0, 2.0]))
