@@ -78,6 +78,135 @@ def reduced_from_barus(p: _Any, piezo: _Any) -> np.ndarray:
     return np.where(alpha > 0.0, q, p)
 
 
+#: Smallest Roelands pressure index Z = alpha p0 / (ln eta0 + 9.67) of the closed-form
+#: reduced pressure: below it (alpha under about 3e-10 1/Pa) the incomplete gamma
+#: functions of order 1/Z > 100 underflow, and the law is nearly isoviscous anyway.
+ROELANDS_REDUCED_MIN_INDEX = 0.01
+
+
+def _roelands_reduced_constants(viscosity: float, piezo: float) -> tuple[float, float, float]:
+    """(a, A, ln C) of the Roelands reduced pressure: a = 1/Z, A = ln eta0 + 9.67 and
+    C = (p0/Z) e^A A^(-1/Z) Gamma(1/Z), so that q(p) = C [Q(a, A) - Q(a, A (1 + p/p0)^Z)]
+    = C [P(a, A (1 + p/p0)^Z) - P(a, A)] with P, Q the regularised lower and upper
+    incomplete gamma functions (the P form where A < a, where Q rounds to 1)."""
+    from scipy.special import gammaln
+
+    from .physics.rheology import ROELANDS_LN_ETA_INF, ROELANDS_P0, roelands_index
+
+    require_positive("viscosity", viscosity, "Pa s")
+    require_positive("piezo", piezo, "1/Pa")
+    big_a = float(np.log(viscosity) - ROELANDS_LN_ETA_INF)
+    if big_a <= 0.0:
+        raise ValueError(f"viscosity must exceed exp(-9.67) = 6.3e-5 Pa s for the Roelands "
+                         f"law (ln eta0 + 9.67 > 0), got {viscosity!r} Pa s")
+    z = float(roelands_index(viscosity, piezo))
+    if z < ROELANDS_REDUCED_MIN_INDEX:
+        raise ValueError(f"the Roelands reduced pressure needs the pressure index Z = alpha p0 "
+                         f"/ (ln eta0 + 9.67) >= {ROELANDS_REDUCED_MIN_INDEX:g}, got Z = "
+                         f"{z:.3g} (piezo = {piezo!r} 1/Pa, viscosity = {viscosity!r} Pa s)")
+    a = 1.0 / z
+    log_c = float(np.log(ROELANDS_P0 / z) + big_a - a * np.log(big_a) + gammaln(a))
+    return a, big_a, log_c
+
+
+def roelands_reduced_limit(viscosity: float, piezo: float) -> float:
+    """Largest Roelands reduced pressure q_inf = int_0^inf eta0/eta(p) dp [Pa].
+
+    The Roelands viscosity eta = eta0 exp{A[(1 + p/p0)^Z - 1]}, A = ln eta0 + 9.67, grows
+    without bound, so the reduced pressure q = int_0^p eta0/eta ds of any pressure stays
+    below q_inf = (p0/Z) e^A A^(-1/Z) Gamma(1/Z, A) (substitute t = (1 + s/p0)^Z: an upper
+    incomplete gamma function). A rigid Roelands film exists only while q_max < q_inf,
+    as a Barus film only while alpha q_max < 1 (Kapitsa); with the same low-pressure
+    slope (Z = alpha p0/A) q_inf lies near 1/alpha for mineral oils.
+
+    Parameters
+    ----------
+    viscosity : float
+        eta0 [Pa s], above exp(-9.67) = 6.3e-5 Pa s.
+    piezo : float
+        alpha [1/Pa], > 0 (sets Z).
+
+    Returns
+    -------
+    float
+        q_inf [Pa].
+    """
+    from scipy.special import gammainc, gammaincc
+
+    a, big_a, log_c = _roelands_reduced_constants(viscosity, piezo)
+    upper = 1.0 - gammainc(a, big_a) if big_a < a else gammaincc(a, big_a)
+    return float(np.exp(log_c) * upper)
+
+
+def reduced_from_roelands(p: _Any, viscosity: float, piezo: float) -> np.ndarray:
+    """Roelands reduced pressure q = int_0^p eta0/eta(s) ds [Pa], p >= 0 [Pa].
+
+    q = C [Q(1/Z, A) - Q(1/Z, A (1 + p/p0)^Z)], C = (p0/Z) e^A A^(-1/Z) Gamma(1/Z) and
+    Q the regularised upper incomplete gamma function (see
+    :func:`roelands_reduced_limit`). With it the rigid isothermal Reynolds equation of
+    an incompressible Roelands oil is the isoviscous one in q, as with Kapitsa's Barus
+    transform.
+
+    Parameters
+    ----------
+    p : float or array
+        Pressure [Pa], >= 0.
+    viscosity, piezo : float
+        eta0 [Pa s] and alpha [1/Pa] of the law.
+    """
+    from scipy.special import gammainc, gammaincc
+
+    from .physics.rheology import ROELANDS_P0
+
+    a, big_a, log_c = _roelands_reduced_constants(viscosity, piezo)
+    p = np.asarray(p, dtype=float)
+    if np.any(p < 0.0) or not np.all(np.isfinite(p)):
+        raise ValueError("p must be finite and >= 0 Pa for the Roelands reduced pressure")
+    t = (1.0 + p / ROELANDS_P0) ** (1.0 / a)
+    if big_a < a:
+        return np.exp(log_c) * (gammainc(a, big_a * t) - gammainc(a, big_a))
+    return np.exp(log_c) * (gammaincc(a, big_a) - gammaincc(a, big_a * t))
+
+
+def roelands_from_reduced(q: _Any, viscosity: float, piezo: float) -> np.ndarray:
+    """Pressure from the Roelands reduced pressure [Pa]: the inverse of
+    :func:`reduced_from_roelands`.
+
+    p = p0 [(x/A)^(1/Z) - 1] with x = Q^-1(1/Z, Q(1/Z, A) - q/C) (the inverse regularised
+    upper incomplete gamma function); ``inf`` where q >= q_inf
+    (:func:`roelands_reduced_limit`: no pressure has that reduced pressure) or within
+    rounding of it.
+
+    Parameters
+    ----------
+    q : float or array
+        Reduced pressure [Pa], >= 0.
+    viscosity, piezo : float
+        eta0 [Pa s] and alpha [1/Pa] of the law.
+    """
+    from scipy.special import gammainc, gammaincc, gammainccinv, gammaincinv
+
+    from .physics.rheology import ROELANDS_P0
+
+    a, big_a, log_c = _roelands_reduced_constants(viscosity, piezo)
+    q = np.asarray(q, dtype=float)
+    if np.any(q < 0.0) or np.any(np.isnan(q)):
+        raise ValueError("q must be >= 0 Pa for the Roelands pressure")
+    eps = 8.0 * np.finfo(float).eps  # within rounding of q_inf: noise, not a pressure
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        if big_a < a:
+            target = gammainc(a, big_a) + q * np.exp(-log_c)
+            exists = target < 1.0 - eps
+            x = gammaincinv(a, np.where(exists, target, 0.5))
+        else:
+            top = gammaincc(a, big_a)
+            target = top - q * np.exp(-log_c)
+            exists = target > eps * top
+            x = gammainccinv(a, np.where(exists, target, 0.5))
+        p = ROELANDS_P0 * np.expm1(a * np.log(np.maximum(x / big_a, 1.0)))
+    return np.where(exists, np.maximum(p, 0.0), np.inf)
+
+
 def _check_kapitsa(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_speed: _Any,
                    dh0dt: _Any) -> None:
     require_positive("h0", h0, "m")

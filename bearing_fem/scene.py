@@ -1137,10 +1137,12 @@ class Scene:
                              f"be 'none', got {self.model.thermal!r}")
         if self.model.elasticity == "rigid":
             lub = self.lubricant
-            if lub.density != "incompressible" or lub.viscosity_law == "roelands":
+            if lub.density != "incompressible" or (lub.viscosity_law == "roelands"
+                                                   and self.model.cavitation != "reynolds"):
                 raise SceneError("a rigid squeeze series is solved instant by instant on the "
                                  "linear path: it needs an incompressible lubricant with a "
-                                 "constant or Barus viscosity law")
+                                 "constant or Barus viscosity law, or a Roelands law with "
+                                 "model.cavitation = 'reynolds'")
 
     def _check_thermal(self) -> None:
         """The thermal patch: its section, line contacts only, both surfaces moving."""

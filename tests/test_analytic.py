@@ -372,3 +372,65 @@ def test_elliptic_hertz_flattens_the_gap(ratio):
                         rtol=0, atol=1e-8 * hp.delta,
                         err_msg="angular quadrature (1e-11 asked) of the exact radial "
                                 "integral; elliptic-integral solve to 1e-14")
+
+
+# --- Roelands reduced pressure (the rigid Roelands linear path) -----------------------
+ROELANDS_OILS = [(0.01, 2e-8), (0.1, 1.5e-8), (1e-3, 3e-8), (2.0, 1e-8), (1e-4, 5e-9)]
+#: nearly isoviscous laws (pressure index Z = 0.039 and 0.0106: the lower incomplete
+#: gamma form, orders 1/Z = 26 and 94)
+ROELANDS_SMALL_INDEX = [(0.01, 1e-9), (1e-3, 1.5e-10)]
+
+
+@pytest.mark.parametrize("eta0,alpha", ROELANDS_OILS + ROELANDS_SMALL_INDEX)
+def test_roelands_reduced_pressure_is_the_integral_of_eta0_over_eta(eta0, alpha):
+    from scipy.integrate import quad
+
+    from bearing_fem.analytic import reduced_from_roelands, roelands_reduced_limit
+    from bearing_fem.physics.rheology import roelands
+
+    def integrand(s):
+        with np.errstate(over="ignore"):  # eta = inf beyond ~1e10 Pa: eta0/eta = 0
+            return eta0 / float(roelands(s, eta0, alpha))
+
+    ps = np.array([1e3, 1e6, 1e8, 5e8, 1e9])
+    q = reduced_from_roelands(ps, eta0, alpha)
+    ref = [quad(integrand, 0.0, p, limit=400, epsabs=0.0, epsrel=1e-12)[0] for p in ps]
+    np.testing.assert_allclose(q, ref, rtol=2e-8,
+                               err_msg="closed form (incomplete gamma) against quadrature")
+    if (eta0, alpha) in ROELANDS_SMALL_INDEX:
+        return  # q_inf is astronomically large (1e18 Pa and more)
+    # the limit: the integrand has fallen below 1e-30 of eta0/eta0 well before 1e11 Pa
+    far = quad(integrand, 0.0, 1e9, limit=400, epsrel=1e-12)[0] + quad(
+        integrand, 1e9, 1e11, limit=400, epsrel=1e-12)[0]
+    np.testing.assert_allclose(roelands_reduced_limit(eta0, alpha), far, rtol=1e-8,
+                               err_msg="q_inf against the quadrature to 1e11 Pa")
+
+
+@pytest.mark.parametrize("eta0,alpha", ROELANDS_OILS + ROELANDS_SMALL_INDEX)
+def test_roelands_reduced_pressure_round_trip(eta0, alpha):
+    from bearing_fem.analytic import (reduced_from_roelands, roelands_from_reduced,
+                                      roelands_reduced_limit)
+    from bearing_fem.physics.rheology import roelands
+
+    ps = np.array([0.0, 1.0, 1e4, 1e6, 1e7, 1e8, 3e8])
+    back = roelands_from_reduced(reduced_from_roelands(ps, eta0, alpha), eta0, alpha)
+    # p is ill-conditioned in q where eta/eta0 is large (dp = eta/eta0 dq): the
+    # round-trip error grows as (eta/eta0) times the rounding of q
+    tol = 1e-12 * np.maximum(roelands(ps, eta0, alpha) / eta0, 1.0) * 1e4
+    assert np.all(np.abs(back - ps) <= tol * np.maximum(ps, 1e3)), (back, ps)
+    lim = roelands_reduced_limit(eta0, alpha)
+    assert np.all(np.isinf(roelands_from_reduced([lim, 2 * lim], eta0, alpha)))
+    assert np.isfinite(roelands_from_reduced(0.999 * lim, eta0, alpha))
+
+
+def test_roelands_reduced_limit_is_near_one_over_alpha_for_a_mineral_oil():
+    """Same low-pressure slope as Barus (Z = alpha p0 / A): q_inf lies near 1/alpha; the
+    docs quote 5.26e7 Pa against 5e7 Pa at eta0 = 0.01 Pa s, alpha = 2e-8 1/Pa."""
+    from bearing_fem.analytic import roelands_reduced_limit
+
+    q_inf = roelands_reduced_limit(0.01, 2e-8)
+    assert f"{q_inf:.3g}" == "5.26e+07", q_inf
+    with pytest.raises(ValueError, match="6.3e-5 Pa s"):
+        roelands_reduced_limit(5e-5, 2e-8)
+    with pytest.raises(ValueError, match="Z = 2.94e-05"):
+        roelands_reduced_limit(0.05, 1e-12)

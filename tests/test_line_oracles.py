@@ -93,8 +93,9 @@ def test_beyond_existence_is_no_solution(cavitation):
 
 
 def test_rigid_newton_matches_linear_path():
-    """Roelands is not transformable: the Newton path must agree with the linear path
-    when its pressure-viscosity is switched off (both are the same isoviscous problem)."""
+    """A Roelands law with a pressure index below ROELANDS_REDUCED_MIN_INDEX goes to
+    Newton: the Newton path must agree with the linear path when its pressure-viscosity
+    is switched off (both are the same isoviscous problem)."""
     lin = bf.solve(rigid_scene("reynolds", law="constant", nodes=801, x_range=(-20, 3)))
     s = rigid_scene("reynolds", law="roelands", piezo=0.0, nodes=801, x_range=(-20, 3))
     s = s.replace(lubricant=s.lubricant.__class__(viscosity=ETA, piezo=1e-12,

@@ -2,10 +2,11 @@
 
 Paths (a scene pays only for what it needs):
 
-* rigid, incompressible, constant or Barus viscosity, prescribed gap: the **linear**
-  path (:mod:`bearing_fem.contacts.linear`): Kapitsa's reduced pressure, one sparse
-  solve or an active-set sequence, and the explicit status ``no_solution`` beyond the
-  existence limit alpha q_max < 1;
+* rigid, incompressible, prescribed gap, constant or Barus viscosity (or Roelands with
+  Reynolds cavitation): the **linear** path (:mod:`bearing_fem.contacts.linear`): the
+  reduced pressure (Kapitsa's for Barus), one sparse solve or an active-set sequence,
+  and the explicit status ``no_solution`` beyond the existence limit (alpha q_max < 1
+  for Barus, q_max < q_inf for Roelands);
 * everything else: **damped Newton** by the shared driver
   (:mod:`bearing_fem.contacts.driver`) on the line (:mod:`~bearing_fem.contacts.line`)
   or point (:mod:`~bearing_fem.contacts.point`) discretisation, elastic point scenes

@@ -625,16 +625,26 @@ def _solve_newton_model(model: Any, scene: Any, t0: float, *,
 
 def solve_linear_model(model: Any, scene: Any, t0: float) -> Result:
     """Linear (reduced-pressure) solve of a model's finest level, with the error
-    estimate from the same solve on ``ESTIMATE_LEVELS`` coarser grids."""
-    level = model.levels()[-1]
-    status, solution, message, solves = model.linear(level)
+    estimate from the same solve on ``ESTIMATE_LEVELS`` coarser grids.
+
+    The grids are solved coarse to fine, each cavitated set starting from the coarser
+    solution's (``model.linear(level, start=...)``); the estimate uses the coarser
+    solutions down to the first that failed."""
+    chain = [model.levels()[-1]]
+    for _ in range(ESTIMATE_LEVELS):
+        level = model.coarsen(chain[0])
+        if level is None:
+            break
+        chain.insert(0, level)
+    start = None
+    solved: list[tuple[str, Solution]] = []
+    for level in chain[:-1]:
+        st, start, _, _ = model.linear(level, start=start)
+        solved.append((st, start))
+    status, solution, message, solves = model.linear(chain[-1], start=start)
     coarse: list[Solution] = []
     if status in SUCCESS_STATUSES:
-        for _ in range(ESTIMATE_LEVELS):
-            level = model.coarsen(level)
-            if level is None:
-                break
-            st, sol, _, _ = model.linear(level)
+        for st, sol in reversed(solved):
             if st not in SUCCESS_STATUSES:
                 break
             coarse.insert(0, sol)

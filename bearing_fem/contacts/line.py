@@ -34,7 +34,6 @@ import scipy.sparse.linalg as spla
 from skfem import CellBasis, ElementLineP1, MeshLine
 
 from .. import units
-from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import line_central_film_moes
 from ..mesh import every_other, outlet_graded_nodes
@@ -50,7 +49,8 @@ from ..result import Result
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
                      solve_newton_model)
-from .linear import active_set_solve, pressure_from_reduced
+from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
+                     reduced_law)
 from .problem import ScaledResidual, fischer_burmeister
 
 
@@ -696,11 +696,10 @@ def _half_space(disc: LineDiscretisation, e_prime: float):
 
 
 def is_linear(scene) -> bool:
-    """True if a scene is solved by linear solves (rigid, incompressible, constant or
-    Barus viscosity, prescribed gap): Kapitsa's reduced pressure."""
-    m, lub = scene.model, scene.lubricant
-    return (m.elasticity == "rigid" and lub.density == "incompressible"
-            and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
+    """True if a scene is solved by linear solves of the reduced pressure
+    (:func:`bearing_fem.contacts.linear.is_linear_scene`: rigid, incompressible,
+    prescribed gap; constant or Barus viscosity, or Roelands with Reynolds cavitation)."""
+    return is_linear_scene(scene)
 
 
 def line_levels(nodes: int, coarsest: int = COARSEST_NODES,
@@ -719,7 +718,8 @@ def line_levels(nodes: int, coarsest: int = COARSEST_NODES,
 
 
 def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
-                             mean_speed: float, eta0: float, cavitation: str):
+                             mean_speed: float, eta0: float, cavitation: str,
+                             active: np.ndarray | None = None):
     """Solve the rigid isoviscous Reynolds problem for the reduced pressure q [Pa].
 
     One sparse solve for full-Sommerfeld; a primal-dual active-set sequence of sparse
@@ -733,7 +733,7 @@ def reduced_isoviscous_solve(problem: LineProblem, h0: float, q_bc: np.ndarray,
     h = h0 + problem.g_q
     a = ops.flux_jacobian(0, np.zeros_like(h), (h**3 / (12.0 * eta0),)).tocsr()
     f = ops.weak_divergence(mean_speed * h)
-    return active_set_solve(a, f, q_bc, problem.free, cavitation)
+    return active_set_solve(a, f, q_bc, problem.free, cavitation, active=active)
 
 
 class LineModel:
@@ -959,20 +959,26 @@ class LineModel:
             -1, ops.n_quad).sum(axis=1) / np.diff(self.setup.disc.x)
         return per_element, d
 
-    def linear(self, level: LineSetup) -> tuple[str, Solution, str, int]:
+    def linear(self, level: LineSetup, start: Solution | None = None
+               ) -> tuple[str, Solution, str, int]:
         """Linear (reduced-pressure) solve on ``level``: status, solution, message and
-        the number of linear solves."""
+        the number of linear solves. ``start``: a solution on another grid whose
+        cavitated nodes (p <= 0) make the first guess of the cavitated set."""
         scene = self.scene
         lub = scene.lubricant
-        alpha = lub.effective_piezo
+        law = reduced_law(lub)
         problem = self.problem(level)
         h0 = scene.load.gap
         q_bc = np.zeros(level.disc.x.size)
-        q_bc[0], q_bc[-1] = (reduced_from_barus(np.array(self.bp), alpha) if alpha > 0
-                             else self.bp)
+        q_bc[0], q_bc[-1] = law.to_reduced(np.array(self.bp, dtype=float))
+        active = None
+        if start is not None:
+            dry = (np.asarray(start.pressure) <= 0.0).astype(float)
+            active = np.interp(level.disc.x, start.x, dry) > 0.5
         q, solves, _ = reduced_isoviscous_solve(problem, h0, q_bc, scene.kinematics.mean_speed,
-                                                lub.viscosity, scene.model.cavitation)
-        status, field, msg = pressure_from_reduced(q, alpha, solves)
+                                                lub.viscosity, scene.model.cavitation,
+                                                active=active)
+        status, field, msg = pressure_from_reduced(q, law, solves)
         return status, self.solution(problem, field=field, h0=h0,
                                      post=status == "linear"), msg, solves
 

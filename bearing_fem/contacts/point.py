@@ -22,7 +22,8 @@ for every test function phi vanishing on the boundary,
 
 Two paths (a scene pays only for what it needs):
 
-* **linear** - rigid, incompressible, constant or Barus viscosity, prescribed gap: the
+* **linear** - rigid, incompressible, prescribed gap, constant or Barus viscosity (or
+  Roelands with Reynolds cavitation, whose reduced pressure is bounded by q_inf): the
   Kapitsa reduced pressure q = (1 - exp(-alpha p))/alpha obeys the isoviscous equation
   A q = f - s  (A stiffness with h^3/(12 eta0), f = int u_m h dphi/dx, s = int dh0/dt phi),
   one sparse solve (full-Sommerfeld) or a primal-dual active set of sparse solves
@@ -56,7 +57,6 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from .. import units
-from ..analytic import reduced_from_barus
 from ..errors import SceneError
 from ..formulas import point_central_film_nvm
 from ..mesh import every_other
@@ -69,7 +69,8 @@ from ..validation import require_int
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
                      solve_newton_model)
-from .linear import active_set_solve, pressure_from_reduced
+from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
+                     reduced_law)
 from .point_grid import (LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates,
                          require_finite_factor_data)
 from .problem import ScaledResidual, fischer_burmeister
@@ -448,9 +449,9 @@ def _file_axes(scene, nodes: tuple[int, int] | None, x_unit: float,
 
 
 def is_linear(scene) -> bool:
-    m, lub = scene.model, scene.lubricant
-    return (m.elasticity == "rigid" and lub.density == "incompressible"
-            and lub.viscosity_law in ("constant", "barus") and scene.load.gap is not None)
+    """True if a point scene is solved by linear solves of the reduced pressure
+    (:func:`bearing_fem.contacts.linear.is_linear_scene`)."""
+    return is_linear_scene(scene)
 
 
 def boundary_values(grid: PointGrid, boundary_pressure) -> np.ndarray:
@@ -479,7 +480,8 @@ def boundary_values(grid: PointGrid, boundary_pressure) -> np.ndarray:
 # ---------------------------------------------------------------------------------------
 def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
                            mean_speed: float, viscosity: float, q_bc: np.ndarray,
-                           cavitation: str, squeeze_velocity: float = 0.0
+                           cavitation: str, squeeze_velocity: float = 0.0,
+                           active: np.ndarray | None = None
                            ) -> tuple[np.ndarray, int, np.ndarray]:
     """Rigid isoviscous Reynolds problem for the reduced pressure q [Pa].
 
@@ -503,6 +505,8 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
     cavitation : {"none", "reynolds"}
     squeeze_velocity : float
         dh0/dt [m/s] (< 0: approach, positive squeeze pressure).
+    active : bool ndarray, optional
+        First guess of the cavitated nodes (flat), e.g. from a coarser grid.
 
     Returns
     -------
@@ -519,7 +523,7 @@ def reduced_pressure_solve(grid: PointGrid, h0: float, rx: float, ry: float,
         f = f - ops.value.T @ (ops.weights * squeeze_velocity)
     free = np.nonzero(~grid.boundary_mask())[0]
     return active_set_solve(a, f, np.where(grid.boundary_mask(), q_bc, 0.0), free,
-                            cavitation)
+                            cavitation, active=active)
 
 
 #: A rigid Barus point scene with Reynolds cavitation is refused before any Newton
@@ -1427,19 +1431,30 @@ class PointModel:
             return int(sink[0])
         return int(sum(pr.linear_iterations for pr in getattr(self, "_problems", ())))
 
-    def linear(self, level: PointLevel) -> tuple[str, Solution, str, int]:
+    def linear(self, level: PointLevel, start: Solution | None = None
+               ) -> tuple[str, Solution, str, int]:
         """Linear (reduced-pressure) solve on ``level``: status, solution, message and the
-        number of linear solves."""
+        number of linear solves. ``start``: a solution on another grid whose cavitated
+        nodes (p <= 0) make the first guess of the cavitated set."""
         scene = self.scene
         lub = scene.lubricant
-        alpha = lub.effective_piezo
+        law = reduced_law(lub)
         h0 = scene.load.gap
         grid = level.setup.grid
-        q_bc = reduced_from_barus(level.p_bc, alpha) if alpha > 0 else level.p_bc
+        q_bc = law.to_reduced(level.p_bc)
+        guess = None
+        if start is not None and start.y is not None:
+            from scipy.interpolate import RegularGridInterpolator
+
+            dry = RegularGridInterpolator(
+                (start.y, start.x), (np.asarray(start.pressure) <= 0.0).astype(float),
+                bounds_error=False, fill_value=0.0)
+            yy, xx = np.meshgrid(grid.y, grid.x, indexing="ij")
+            guess = dry(np.column_stack((yy.ravel(), xx.ravel()))) > 0.5
         q, solves, active = reduced_pressure_solve(
             grid, h0, scene.contact.rx, scene.contact.ry, scene.kinematics.mean_speed,
-            lub.viscosity, q_bc, scene.model.cavitation, self.squeeze)
-        status, field, msg = pressure_from_reduced(q, alpha, solves,
+            lub.viscosity, q_bc, scene.model.cavitation, self.squeeze, active=guess)
+        status, field, msg = pressure_from_reduced(q, law, solves,
                                                    f", {grid.x.size} x {grid.y.size} nodes")
         problem = self.problem(level)
         return status, self.solution(problem, field=field, h0=h0, post=status == "linear",

@@ -161,7 +161,8 @@ def solve_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = N
     ----------
     scene : Scene
         Rigid point scene with a prescribed gap (``load.gap`` = h0, the mean) and a
-        linear lubricant law (constant or Barus, incompressible).
+        linear lubricant law (incompressible; constant or Barus, or Roelands with
+        Reynolds cavitation).
     eps : float
         Relative amplitude [-], 0 <= eps < 1.
     omega : float, optional
@@ -183,7 +184,8 @@ def solve_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = N
                          f"{scene.contact.kind!r}")
     if not is_linear(scene):
         raise SceneError("solve_squeeze_series needs a rigid, incompressible scene with "
-                         "load.gap (m) and a constant or Barus viscosity law")
+                         "load.gap (m) and a constant or Barus viscosity law (or Roelands with "
+                         "Reynolds cavitation)")
     eps = float(eps)
     if not 0.0 <= eps < 1.0:
         raise ValueError(f"eps must lie in [0, 1) (dimensionless), got {eps!r}")
