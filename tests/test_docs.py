@@ -8,6 +8,7 @@ renamed or moved function then fails here instead of leaving a dead name in the 
 from __future__ import annotations
 
 import importlib
+import math
 import re
 from pathlib import Path
 
@@ -133,3 +134,190 @@ def test_section_links_resolve():
                 bad.append(f"{page.relative_to(ROOT)}: {m.group(0)}")
     assert checked >= 5, f"only {checked} section links found (pattern changed?)"
     assert not bad, "links to sections that do not exist:\n" + "\n".join(bad)
+
+
+# ---------------------------------------------------------------------------------------
+# Cross-references by section number or name, short module names, documented constants,
+# and the calls and signatures shown in code.
+# ---------------------------------------------------------------------------------------
+SOURCES = [*PAGES, *sorted((ROOT / "bearing_fem").rglob("*.py")),
+           *sorted((ROOT / "bearing_fem").rglob("*.toml")),
+           *sorted((ROOT / "studies").glob("*.py")), *sorted((ROOT / "tests").glob("*.py"))]
+
+
+def _headings(page: Path) -> list[str]:
+    """The heading texts of a Markdown page (code blocks skipped)."""
+    out, fenced = [], False
+    for line in page.read_text(encoding="utf-8").splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        heading = None if fenced else re.match(r"#{1,6}\s+(.*)", line)
+        if heading:
+            out.append(heading.group(1).strip())
+    return out
+
+
+def _numbers(page: Path) -> set[str]:
+    """Section numbers of a page's headings ("6.6", "4.2b", "14")."""
+    return {m.group(1) for h in _headings(page)
+            if (m := re.match(r"([0-9]+(?:\.[0-9]+)*[a-z]?)[.\s]", h + " "))}
+
+
+def test_numbered_section_references_resolve():
+    """A page and a section number (``bearing.md, section 5.3``) in the docs, the
+    package, the studies and the tests name a numbered heading of that page (speed.md and
+    line_contact.md cited a section "6.4b" of the theory page, which has none)."""
+    pattern = re.compile(r"\b([a-z_]+)\.md\)?,? (?:section |sections |sec\. )?"
+                         r"([0-9]+(?:\.[0-9]+)?[a-z]?)\b")
+    checked, bad = 0, []
+    for source in SOURCES:
+        text = source.read_text(encoding="utf-8")
+        for n, line in enumerate(text.splitlines(), 1):
+            for m in pattern.finditer(line):
+                page = ROOT / "docs" / f"{m.group(1)}.md"
+                if not page.is_file() or not _numbers(page):
+                    continue
+                checked += 1
+                if m.group(2) not in _numbers(page):
+                    bad.append(f"{source.relative_to(ROOT)}:{n}: {m.group(0)}")
+    assert checked > 100, f"only {checked} numbered section references found (pattern?)"
+    assert not bad, "references to section numbers that do not exist:\n" + "\n".join(bad)
+
+
+def test_named_section_references_resolve():
+    """``page.md, "Heading"`` names a heading of that page (or the label a paragraph of it
+    starts with)."""
+    pattern = re.compile(r"\b([a-z_]+)\.md\)?,? \(?\"([^\"]+)\"")
+    checked, bad = 0, []
+    for source in (s for s in SOURCES if s.resolve() != Path(__file__).resolve()):
+        text = " ".join(source.read_text(encoding="utf-8").split())
+        for m in pattern.finditer(text):
+            page = ROOT / "docs" / f"{m.group(1)}.md"
+            if not page.is_file():
+                continue
+            checked += 1
+            name = m.group(2).lower()
+            lines = [line.strip().lstrip("*").lower()
+                     for line in page.read_text(encoding="utf-8").splitlines()]
+            if not (any(name in h.lower() for h in _headings(page))
+                    or any(line.startswith(name) for line in lines)):
+                bad.append(f"{source.relative_to(ROOT)}: {m.group(0)}")
+    assert checked >= 10, f"only {checked} named section references found (pattern?)"
+    assert not bad, "references to sections that do not exist:\n" + "\n".join(bad)
+
+
+#: Short module names the docs use in code spans (`line.COARSEST_NODES`); names that are
+#: also scene sections (mesh, thermal, traction, kinematics) are not checked here.
+def _module(name: str):
+    return importlib.import_module(name)
+
+
+#: (page, pattern whose groups are numbers or words the page states, the code's values in
+#: the same order). A number written in the docs that is a constant of the code is
+#: checked here, so that changing the constant fails until the page says so.
+DOCUMENTED_CONSTANTS = [
+    # line solver: Newton steps with the dense Jacobian (theory.md 6.6)
+    ("theory.md", r"eta_k = max\(([0-9.e+-]+), EW_k\)\s+within ([0-9]+) iterations",
+     lambda: (_module("bearing_fem.contacts.line").REUSE_GMRES_RTOL,
+              _module("bearing_fem.contacts.line").REUSE_GMRES_ITERATIONS)),
+    ("theory.md", r"capped at ([0-9.e+-]+) \(`line\.REUSE_GMRES_FORCING`",
+     lambda: (_module("bearing_fem.contacts.line").REUSE_GMRES_FORCING_MAX
+              if _module("bearing_fem.contacts.line").REUSE_GMRES_FORCING else None,)),
+    ("theory.md", r"`line\.DENSE_LU_SINGLE`",
+     lambda: () if _module("bearing_fem.contacts.line").DENSE_LU_SINGLE else (None,)),
+    ("theory.md", r"by FFT from ([0-9]+) nodes",
+     lambda: (_module("bearing_fem.physics.elasticity").LINE_FFT_APPLY_MIN,)),
+    # point solver: inexact Newton-Krylov steps (point.md)
+    ("point.md", r"eta_k = min\(([0-9.e+-]+), max\(([0-9.e+-]+), EW_k, ([0-9.e+-]+) tol",
+     lambda: (_module("bearing_fem.contacts.point").GMRES_FORCING_MAX,
+              _module("bearing_fem.contacts.point").GMRES_RTOL,
+              _module("bearing_fem.contacts.point").GMRES_TOLERANCE_FRACTION)),
+    ("point.md", r"`GMRES_FORCING = \"([a-z-]+)\"`",
+     lambda: (_module("bearing_fem.contacts.point").GMRES_FORCING,)),
+    ("point.md", r"incomplete \(drop tolerance\s+([0-9.e+-]+), `PRECONDITIONER_DROP_TOL`",
+     lambda: (_module("bearing_fem.contacts.point").PRECONDITIONER_DROP_TOL,)),
+    ("point.md", r"at most ([0-9]+) iterations with it \(([0-9]+) from ([0-9]+) free nodes",
+     lambda: (_module("bearing_fem.contacts.point").PRECONDITIONER_KEEP_ITERATIONS,
+              _module("bearing_fem.contacts.point").PRECONDITIONER_KEEP_ITERATIONS_LARGE,
+              _module("bearing_fem.contacts.point").PRECONDITIONER_LARGE_UNKNOWNS)),
+    # Newton and continuation (theory.md 5.2, 6.1, 6.3, 6.4)
+    ("theory.md", r"mu = ([0-9.e+-]+) \(bearing_fem\.contacts\.problem\.FB_SMOOTHING\)",
+     lambda: (_module("bearing_fem.contacts.problem").FB_SMOOTHING,)),
+    ("theory.md", r"down to 2\^-([0-9]+) with the merit",
+     lambda: (round(-math.log2(_default("bearing_fem.numerics.newton", "damped_newton",
+                                         "min_step"))),)),
+    ("theory.md", r"max\(f over the last ([0-9]+) iterates\)",
+     lambda: (_default("bearing_fem.numerics.newton", "damped_newton", "memory"),)),
+    ("theory.md", r"The first increment is ([0-9.]+)\.",
+     lambda: (_module("bearing_fem.contacts.driver").DriverSettings().first_step,)),
+    ("theory.md", r"It gives up below an increment of ([0-9.e+-]+) or after ([0-9]+) steps",
+     lambda: (_default("bearing_fem.numerics.newton", "continuation", "min_increment"),
+              _default("bearing_fem.numerics.newton", "continuation", "max_steps"))),
+    ("theory.md", r"cap\): ([0-9]+) for lines, ([0-9]+) for a point level",
+     lambda: (_module("bearing_fem.contacts.line").ATTEMPT_ITERATIONS,
+              _module("bearing_fem.contacts.point").TRANSFER_DIRECT_ITERATIONS)),
+    ("theory.md", r"s = ([0-9.]+) with that solution itself \(`point\.WARM_START_ALPHA`\)",
+     lambda: (_module("bearing_fem.contacts.point").WARM_START_ALPHA,)),
+    ("theory.md", r"u_m\(s\) = u_m ([0-9]+)\^\(1 - s\)",
+     lambda: (_module("bearing_fem.contacts.line").CONTINUATION_SPEED_FACTOR,)),
+    ("theory.md", r"at least ([0-9]+) nodes, `line\.COARSEST_NODES`",
+     lambda: (_module("bearing_fem.contacts.line").COARSEST_NODES,)),
+    ("theory.md", r"at least ([0-9]+) per direction, `point\.COARSEST_NODES`",
+     lambda: (_module("bearing_fem.contacts.point").COARSEST_NODES,)),
+    ("theory.md", r"Newton tolerance of ([0-9.e+-]+) \(`point\.COARSE_TOLERANCE`\)",
+     lambda: (_module("bearing_fem.contacts.point").COARSE_TOLERANCE,)),
+    # default line grids (theory.md 6.7, scenes.md)
+    ("theory.md", r"\| ([0-9]+) per b, at least ([0-9]+), at most ([0-9]+) \|",
+     lambda: (_module("bearing_fem.contacts.line").NODES_PER_HALF_WIDTH, 801,
+              _module("bearing_fem.contacts.line").MAX_DEFAULT_ELASTIC_NODES)),
+    ("scenes.md", r"([0-9]+) nodes per b \(more above Moes M = ([0-9]+)\)",
+     lambda: (_module("bearing_fem.contacts.line").NODES_PER_HALF_WIDTH,
+              _module("bearing_fem.contacts.line").DENSE_MESH_MOES_M)),
+    ("scenes.md", r"([0-9]+) nodes per unit, at least 801 and at most ([0-9]+) nodes",
+     lambda: (_module("bearing_fem.contacts.line").NODES_PER_RIGID_LENGTH, 20001)),
+    ("scenes.md", r"a load above ([0-9.]+) times it\s+\(`RIGID_BARUS_LOAD_MARGIN`\)",
+     lambda: (_module("bearing_fem.contacts.line").RIGID_BARUS_LOAD_MARGIN,)),
+    ("theory.md", r"converged pressure peaks beyond alpha p = ([0-9.]+),",
+     lambda: (_module("bearing_fem.contacts.line").RIGID_BARUS_RESOLVABLE_ALPHA_P,)),
+    # default point grids (point.md)
+    ("point.md", r"Default rigid grid: ([0-9]+) x ([0-9]+) nodes, sinh-graded "
+     r"\(x = ([0-9.]+) L sinh\(s\)",
+     lambda: (_module("bearing_fem.contacts.point").RIGID_NODES,
+              _module("bearing_fem.contacts.point").RIGID_NODES, 1.5)),
+    ("point.md", r"above Moes M = ([0-9]+) \(`HIGH_LOAD_MOES_M`\)",
+     lambda: (_module("bearing_fem.contacts.point").HIGH_LOAD_MOES_M,)),
+    ("point.md", r"default ([0-9]+) x ([0-9]+) nodes on x in",
+     lambda: (_module("bearing_fem.contacts.transient").ELASTIC_GAP_NODES,) * 2),
+    # post-processing (theory.md 8)
+    ("theory.md", r"below ([0-9]+) nm \(`post\.MOLECULAR_FILM`",
+     lambda: (round(_module("bearing_fem.post").MOLECULAR_FILM * 1e9),)),
+    ("theory.md", r"A quantity estimated above ([0-9]+)% is\s+named in `warnings`",
+     lambda: (round(_module("bearing_fem.post").ERROR_WARNING_THRESHOLD * 100),)),
+]
+
+
+def _default(module: str, function: str, parameter: str):
+    """The default value of ``parameter`` of ``module.function``."""
+    import inspect
+
+    return inspect.signature(getattr(_module(module), function)).parameters[parameter].default
+
+
+@pytest.mark.parametrize("page, pattern, values", DOCUMENTED_CONSTANTS,
+                         ids=[f"{p}:{i}" for i, (p, _, _) in enumerate(DOCUMENTED_CONSTANTS)])
+def test_documented_constants_match_the_code(page, pattern, values):
+    """Numbers the docs state for solver constants are the constants' values (theory.md
+    described the line solver's GMRES steps as solved to 1e-10 and point.md the point
+    solver's forcing as min(1e-3, ...), after both had become Eisenstat-Walker terms)."""
+    text = " ".join((ROOT / "docs" / page).read_text(encoding="utf-8").split())
+    m = re.search(pattern, text)
+    assert m, f"{page} no longer states {pattern!r}: update the page or this table"
+    found = [g for g in m.groups() if g is not None]
+    expected = list(values())
+    assert len(found) == len(expected), (page, pattern, found, expected)
+    for text_value, code_value in zip(found, expected):
+        stated = text_value if isinstance(code_value, str) else float(text_value)
+        assert stated == code_value, (
+            f"{page} states {text_value} where the code has {code_value!r} ({pattern!r})")
+
+
