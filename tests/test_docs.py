@@ -240,6 +240,10 @@ DOCUMENTED_CONSTANTS = [
      lambda: (_module("bearing_fem.contacts.point").PRECONDITIONER_KEEP_ITERATIONS,
               _module("bearing_fem.contacts.point").PRECONDITIONER_KEEP_ITERATIONS_LARGE,
               _module("bearing_fem.contacts.point").PRECONDITIONER_LARGE_UNKNOWNS)),
+    ("elasticity.md", r"up to ([0-9]+) nodes, `LINE_DENSE_AUTO_CAP`\) builds it\s+at "
+     r"construction and applies it by a matrix-vector product below ([0-9]+) nodes",
+     lambda: (_module("bearing_fem.physics.elasticity").LINE_DENSE_AUTO_CAP,
+              _module("bearing_fem.physics.elasticity").LINE_FFT_APPLY_MIN)),
     # Newton and continuation (theory.md 5.2, 6.1, 6.3, 6.4)
     ("theory.md", r"mu = ([0-9.e+-]+) \(bearing_fem\.contacts\.problem\.FB_SMOOTHING\)",
      lambda: (_module("bearing_fem.contacts.problem").FB_SMOOTHING,)),
