@@ -208,6 +208,49 @@ def test_named_section_references_resolve():
 
 #: Short module names the docs use in code spans (`line.COARSEST_NODES`); names that are
 #: also scene sections (mesh, thermal, traction, kinematics) are not checked here.
+SHORT_MODULES = {
+    "line": "bearing_fem.contacts.line", "point": "bearing_fem.contacts.point",
+    "driver": "bearing_fem.contacts.driver", "dispatch": "bearing_fem.contacts.dispatch",
+    "transient": "bearing_fem.contacts.transient", "series": "bearing_fem.contacts.series",
+    "coupling": "bearing_fem.contacts.coupling", "kodnir": "bearing_fem.contacts.kodnir",
+    "newton": "bearing_fem.numerics.newton", "fe": "bearing_fem.numerics.fe",
+    "elasticity": "bearing_fem.physics.elasticity", "reynolds": "bearing_fem.physics.reynolds",
+    "rheology": "bearing_fem.physics.rheology", "post": "bearing_fem.post",
+    "units": "bearing_fem.units", "analytic": "bearing_fem.analytic",
+    "formulas": "bearing_fem.formulas", "checks": "bearing_fem.checks",
+}
+
+
+def test_short_module_references_resolve():
+    """`line.REDUCED_POISEUILLE_LINE`, `point.WARM_START_ALPHA`, ... name attributes of
+    those modules, and `solver.key` a key of the [solver] section (line_contact.md named a
+    `solver.REDUCED_POISEUILLE_LINE` that exists nowhere)."""
+    from dataclasses import fields
+
+    from bearing_fem.scene import SolverSpec
+
+    solver_keys = {f.name for f in fields(SolverSpec)}
+    pattern = re.compile(r"`([a-z_]+)\.([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*)`")
+    checked, bad = 0, []
+    for page in PAGES:
+        for n, line in enumerate(page.read_text(encoding="utf-8").splitlines(), 1):
+            for m in pattern.finditer(line):
+                prefix, rest = m.groups()
+                if rest == "py":
+                    continue
+                if prefix == "solver":
+                    ok = rest in solver_keys
+                elif prefix in SHORT_MODULES:
+                    ok = resolve(f"{SHORT_MODULES[prefix]}.{rest}")
+                else:
+                    continue
+                checked += 1
+                if not ok:
+                    bad.append(f"{page.name}:{n}: {m.group(0)}")
+    assert checked > 60, f"only {checked} short references found (pattern changed?)"
+    assert not bad, "short names in the docs that do not exist:\n" + "\n".join(bad)
+
+
 def _module(name: str):
     return importlib.import_module(name)
 
