@@ -368,3 +368,168 @@ def test_documented_constants_match_the_code(page, pattern, values):
             f"{page} states {text_value} where the code has {code_value!r} ({pattern!r})")
 
 
+FENCE = re.compile(r"^```(\w*)[^\n]*\n(.*?)^```", re.S | re.M)
+IMPORT = re.compile(r"^\s*from (bearing_fem[\w.]*) import ([\w, ]+)$", re.M)
+CALL = re.compile(r"(?<![\w.])((?:bf|bearing_fem)(?:\.\w+)+|\w+)\(")
+
+
+def _code_blocks(text: str) -> list[tuple[str, str]]:
+    """(language, body) of the fenced blocks and ("", body) of the 4-space indented blocks
+    of a Markdown page."""
+    blocks = [(tag, body) for tag, body in FENCE.findall(text)]
+    current: list[str] = []
+    fenced = previous_blank = False
+    for line in text.splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        elif not fenced and line.startswith("    ") and (current or previous_blank):
+            current.append(line[4:])
+        elif not fenced and not line.strip() and current:
+            current.append("")
+        elif current:
+            blocks.append(("", "\n".join(current)))
+            current = []
+        previous_blank = not line.strip()
+    if current:
+        blocks.append(("", "\n".join(current)))
+    return blocks
+
+
+def _callable(name: str, imported: dict):
+    """The function or class a call in the docs names (``bf.x``, ``bearing_fem.m.x`` or a
+    name the block imported), or None."""
+    import bearing_fem as bf
+
+    parts = name.split(".")
+    if parts[0] == "bf":
+        obj, parts = bf, parts[1:]
+    elif parts[0] == "bearing_fem":
+        for k in range(len(parts), 0, -1):
+            try:
+                obj, parts = importlib.import_module(".".join(parts[:k])), parts[k:]
+                break
+            except ModuleNotFoundError:
+                continue
+        else:
+            return None
+    elif parts[0] in imported:
+        obj, parts = imported[parts[0]], parts[1:]
+    else:
+        return None
+    for part in parts:
+        if not hasattr(obj, part):
+            return None
+        obj = getattr(obj, part)
+    return obj if callable(obj) else None
+
+
+def _arguments(text: str, start: int) -> str | None:
+    """The text between the bracket at ``start`` and its partner."""
+    depth = 0
+    for k in range(start, len(text)):
+        depth += text[k] in "([{"
+        depth -= text[k] in ")]}"
+        if depth == 0:
+            return text[start + 1:k]
+    return None
+
+
+def _call_problems(text: str, imported: dict) -> list[str]:
+    """Keywords of calls that the function does not take, and, for a signature shown
+    (``f(a, b=1, *, c=None)``), parameters it does not have, defaults that differ and
+    keyword-only markers that do not hold."""
+    import ast
+    import inspect
+
+    out = []
+    for m in CALL.finditer(text):
+        func = _callable(m.group(1), imported)
+        args = _arguments(text, m.end() - 1) if func is not None else None
+        if args is None:
+            continue
+        try:
+            params = inspect.signature(func).parameters
+        except (TypeError, ValueError):
+            continue
+        if any(p.kind is p.VAR_KEYWORD for p in params.values()):
+            continue
+        shown = f"{m.group(1)}({' '.join(args.split())})"
+        try:
+            call = ast.parse(f"f({args})", mode="eval").body
+        except SyntaxError:
+            call = None
+        if call is not None:
+            out += [f"{shown}: no parameter {kw.arg!r}" for kw in call.keywords
+                    if kw.arg and kw.arg not in params]
+            continue
+        try:
+            sig = ast.parse(f"def f({args}): pass").body[0].args
+        except SyntaxError:
+            continue
+        positional = sig.posonlyargs + sig.args
+        defaults = dict(zip([a.arg for a in sig.args][len(sig.args) - len(sig.defaults):],
+                            sig.defaults))
+        defaults |= {a.arg: d for a, d in zip(sig.kwonlyargs, sig.kw_defaults) if d is not None}
+        keyword_only = inspect.Parameter.KEYWORD_ONLY
+        for a in positional + sig.kwonlyargs:
+            if a.arg not in params:
+                out.append(f"{shown}: no parameter {a.arg!r}")
+            elif (a in sig.kwonlyargs) != (params[a.arg].kind is keyword_only):
+                out.append(f"{shown}: {a.arg!r} keyword-only in one of docs and code only")
+        for a in positional + sig.kwonlyargs:
+            if (a.arg in params and a.arg not in defaults
+                    and params[a.arg].default is not inspect.Parameter.empty):
+                out.append(f"{shown}: {a.arg!r} shown without its default "
+                           f"{params[a.arg].default!r}")
+        for name, node in defaults.items():
+            try:
+                value = ast.literal_eval(node)
+            except ValueError:
+                continue
+            if name in params and params[name].default != value:
+                out.append(f"{shown}: default {name}={value!r}, code "
+                           f"{params[name].default!r}")
+    return out
+
+
+def test_code_in_the_docs_calls_what_exists():
+    """Every ``from bearing_fem... import name`` of a code block in the docs imports, a
+    fenced Python block compiles, and the calls and signatures shown in code blocks and
+    code spans (``bf.x(...)``, ``bearing_fem.m.x(...)``, imported names, and the names of
+    the module a heading names, e.g. "## Scalings (`bearing_fem.units`)") use parameters
+    the code has, with its defaults and keyword-only markers (analytic.md showed rx,
+    e_prime and piezo of point_scene_parameters_from_moes as required; they default to
+    0.01 m, 2.2e11 Pa and 2e-8 1/Pa)."""
+    checked, bad = 0, []
+    for page in PAGES:
+        text = page.read_text(encoding="utf-8")
+        for tag, body in _code_blocks(text):
+            if tag == "python":
+                compile(body, f"{page.name} python block", "exec")
+            imported = {}
+            for module_name, names in IMPORT.findall(body):
+                module = importlib.import_module(module_name)
+                for name in (n.strip() for n in names.split(",")):
+                    checked += 1
+                    if hasattr(module, name):
+                        imported[name] = getattr(module, name)
+                    else:
+                        bad.append(f"{page.name}: {module_name} has no {name}")
+            problems = _call_problems(body, imported)
+            checked += len(CALL.findall(body))
+            bad += [f"{page.name} (code block): {p}" for p in problems]
+        module = None
+        for paragraph in re.split(r"\n\s*\n|\n(?=- )", text):
+            head = re.search(r"^#{2,3} .*?`(bearing_fem(?:\.\w+)*)", paragraph, re.M)
+            if paragraph.lstrip().startswith("#"):
+                module = None
+                if head:
+                    try:
+                        module = importlib.import_module(head.group(1))
+                    except ModuleNotFoundError:
+                        module = None
+            names = {} if module is None else vars(module)
+            for span in re.findall(r"`([^`]+)`", paragraph):
+                bad += [f"{page.name} (code span): {p}" for p in _call_problems(span, names)]
+    assert checked > 40, f"only {checked} imports and calls found in code blocks"
+    assert not bad, "code in the docs that does not match the code:\n" + "\n".join(bad)
