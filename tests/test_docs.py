@@ -533,3 +533,27 @@ def test_code_in_the_docs_calls_what_exists():
                 bad += [f"{page.name} (code span): {p}" for p in _call_problems(span, names)]
     assert checked > 40, f"only {checked} imports and calls found in code blocks"
     assert not bad, "code in the docs that does not match the code:\n" + "\n".join(bad)
+
+
+def test_line_map_table_is_on_the_current_default_grids():
+    """The EHL map of line_contact.md states it is on the solver's own default mesh and
+    one with half its spacing: each row's node counts are those the study computes now
+    (`default_nodes`, 2N - 1); rows from before the default grids had N - 1 divisible
+    by 4 (2943 nodes where the default is 2945) fail here until the study is rerun."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "studies"))
+    try:
+        import line_ehl_map
+    finally:
+        sys.path.remove(str(ROOT / "studies"))
+    text = (ROOT / "docs" / "line_contact.md").read_text(encoding="utf-8")
+    rows = re.findall(r"^\| ([0-9.]+) \| ([0-9.]+) \| [0-9.]+ \| ([0-9]+) / ([0-9]+) \|", text,
+                      re.M)
+    assert len(rows) >= 40, f"only {len(rows)} map rows found (table format changed?)"
+    bad = []
+    for m, l, n, fine in rows:
+        default = line_ehl_map.default_nodes(float(m), float(l))
+        if (int(n), int(fine)) != (default, 2 * default - 1):
+            bad.append(f"M = {m}, L = {l}: {n} / {fine}, default now {default}")
+    assert not bad, "map rows not on the current default grids:\n" + "\n".join(bad)
