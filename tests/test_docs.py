@@ -557,3 +557,54 @@ def test_line_map_table_is_on_the_current_default_grids():
         if (int(n), int(fine)) != (default, 2 * default - 1):
             bad.append(f"M = {m}, L = {l}: {n} / {fine}, default now {default}")
     assert not bad, "map rows not on the current default grids:\n" + "\n".join(bad)
+
+
+def _section(page: str, heading: str) -> str:
+    """The text of one section of a docs page, from its heading to the next heading."""
+    text = (ROOT / "docs" / page).read_text(encoding="utf-8")
+    start = text.index(heading)
+    end = re.search(r"^#{1,6} ", text[start + len(heading):], re.M)
+    return text[start:start + len(heading) + (end.start() if end else len(text))]
+
+
+def test_every_summary_key_and_result_attribute_is_documented():
+    """``Result.summary()`` says docs/api.md lists every key: each key of the summaries of
+    a rigid line, an elastic sliding roller with a length, a rigid ball and a thermal
+    roller is named in api.md's "Summary keys" (or, for the thermal loop's own keys, in
+    coupling.md section 1), and every field of ``Result`` in api.md's attribute table
+    (warnings, error_estimate, traction_model, h_outlet, gmres_iterations and the
+    Poiseuille diagnostics were missing)."""
+    from dataclasses import fields
+
+    import bearing_fem as bf
+    from bearing_fem.result import Result
+
+    base = {"lubricant": {"viscosity": 0.05, "piezo": 2e-8},
+            "kinematics": {"u1": 2.2, "u2": 1.8}}
+    scenes = [
+        {"contact": {"kind": "line", "rx": 0.01}, "model": {"elasticity": "rigid"},
+         "load": {"gap": 1e-6}, "mesh": {"nodes": 201}},
+        {"contact": {"kind": "line", "rx": 0.01, "length": 0.02},
+         "materials": {"reduced_modulus": 2.3e11}, "load": {"force": 2e5},
+         "mesh": {"nodes": 201}},
+        {"contact": {"kind": "point", "rx": 0.01, "ry": 0.02},
+         "model": {"elasticity": "rigid"}, "load": {"gap": 1e-6},
+         "mesh": {"nodes": [33, 33]}},
+        {"contact": {"kind": "line", "rx": 0.01}, "materials": {"reduced_modulus": 2.3e11},
+         "load": {"force": 2e5}, "mesh": {"nodes": 201}, "model": {"thermal": "patch"},
+         "thermal": {"oil_temperature": 60.0, "exponent": 3.0}},
+    ]
+    summary_keys = " ".join(re.findall(r"`([^`]+)`", _section("api.md", "### Summary keys")))
+    thermal_keys = _section("coupling.md", "## 1. The coupling loop")
+    documented = set(re.findall(r"[A-Za-z_0-9]+", summary_keys))
+    bad = []
+    for extra in scenes:
+        result = bf.solve(bf.Scene.from_dict(base | extra))
+        assert result.success, result.message
+        for key in result.summary():
+            if key not in documented and f"`{key}`" not in thermal_keys:
+                bad.append(f"summary key {key!r} ({extra['contact']['kind']}"
+                           f"{', thermal' if 'thermal' in extra else ''})")
+    table = _section("api.md", "## `Result` (`bearing_fem.result`)")
+    bad += [f"Result.{f.name}" for f in fields(Result) if f"`{f.name}`" not in table]
+    assert not bad, "not documented in docs/api.md:\n" + "\n".join(bad)
