@@ -569,8 +569,8 @@ def _section(page: str, heading: str) -> str:
 
 def test_every_summary_key_and_result_attribute_is_documented():
     """``Result.summary()`` says docs/api.md lists every key: each key of the summaries of
-    a rigid line, an elastic sliding roller with a length, a rigid ball and a thermal
-    roller is named in api.md's "Summary keys" (or, for the thermal loop's own keys, in
+    a rigid line, an elastic sliding roller with a length, a rigid and an elastic ball and
+    a thermal roller is named in api.md's "Summary keys" (or, for the thermal loop's own keys, in
     coupling.md section 1), and every field of ``Result`` in api.md's attribute table
     (warnings, error_estimate, traction_model, h_outlet, gmres_iterations and the
     Poiseuille diagnostics were missing)."""
@@ -590,6 +590,9 @@ def test_every_summary_key_and_result_attribute_is_documented():
         {"contact": {"kind": "point", "rx": 0.01, "ry": 0.02},
          "model": {"elasticity": "rigid"}, "load": {"gap": 1e-6},
          "mesh": {"nodes": [33, 33]}},
+        {"contact": {"kind": "point", "rx": 0.0127, "ry": 0.0127},
+         "materials": {"reduced_modulus": 2.3e11}, "load": {"force": 30.0},
+         "mesh": {"nodes": [65, 65]}},
         {"contact": {"kind": "line", "rx": 0.01}, "materials": {"reduced_modulus": 2.3e11},
          "load": {"force": 2e5}, "mesh": {"nodes": 201}, "model": {"thermal": "patch"},
          "thermal": {"oil_temperature": 60.0, "exponent": 3.0}},
