@@ -218,7 +218,10 @@ SHORT_MODULES = {
     "rheology": "bearing_fem.physics.rheology", "post": "bearing_fem.post",
     "units": "bearing_fem.units", "analytic": "bearing_fem.analytic",
     "formulas": "bearing_fem.formulas", "checks": "bearing_fem.checks",
+    "contacts": "bearing_fem.contacts", "numerics": "bearing_fem.numerics",
+    "physics": "bearing_fem.physics", "sweep": "bearing_fem.sweep",
 }
+FILE_SUFFIXES = {"py", "vtm", "vtu", "toml", "csv", "json", "png", "h5", "md", "sqlite"}
 
 
 def test_short_module_references_resolve():
@@ -236,7 +239,7 @@ def test_short_module_references_resolve():
         for n, line in enumerate(page.read_text(encoding="utf-8").splitlines(), 1):
             for m in pattern.finditer(line):
                 prefix, rest = m.groups()
-                if rest == "py":
+                if rest.rsplit(".", 1)[-1] in FILE_SUFFIXES:
                     continue
                 if prefix == "solver":
                     ok = rest in solver_keys
