@@ -14,8 +14,10 @@ Scenes (all isothermal, incompressible, Reynolds cavitation unless said)
   realised by :func:`bearing_fem.units.line_scene_from_moes` with alpha = 2e-8 1/Pa; where
   alpha p_h > 110, E' is raised to 40 p_h (else the Hertz contact would not be small
   against the radius and the scene would be refused); L = 0 is isoviscous. The solver's
-  default mesh. Barus scenes with alpha p_h > 700 are refused by the scene's own check
-  (exp(alpha p_h) beyond double precision): an explicit ``invalid_scene`` outcome.
+  default mesh. Barus half-space scenes with alpha p_h > 700 (exp(alpha p_h) beyond
+  double precision) are accepted: their film equation uses the reduced pressure
+  (docs/scenes.md, "Ranges"); a scene refused as input would be an explicit
+  ``invalid_scene`` outcome.
 * ``point_map``: elastic circular contacts (rx = ry = 10 mm, same materials), M in 12
   log-spaced values 5 .. 2000 x L in 8 values 0 .. 25
   (:func:`bearing_fem.units.point_scene_parameters_from_moes`, alpha and E' as above), Barus
@@ -27,7 +29,7 @@ Scenes (all isothermal, incompressible, Reynolds cavitation unless said)
 * ``near_rigid`` (M ~ 1) and ``light_load`` (M = 0.01 .. 0.3): line and circular.
 * ``low_speed``: a loaded steel cylinder (w = 1e5 N/m) and ball (F = 100 N), alpha =
   2e-8 1/Pa, eta0 = 0.01 Pa s, entrainment speed 1e-3 .. 1e-6 m/s (the smallest the
-  scene accepts): M from 1e3 to 1e6.
+  scene accepts): M from 477 to 1.5e4 (cylinder) and 1.5e5 to 2.7e7 (ball).
 * ``rigid_limit``: rigid piezo-viscous scenes with a prescribed gap on both sides of the
   existence limit alpha q_max = 1 of the closed forms (:mod:`bearing_fem.analytic`):
   Kapitsa's full-Sommerfeld cylinder and ball (:func:`~bearing_fem.analytic.kapitsa_existence_ratio`)
