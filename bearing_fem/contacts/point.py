@@ -552,9 +552,10 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     q_max grows as h0^(-3/2) as the gap closes, the load grows to its limit at the gap
     h0* where alpha q_max = 1, and there W* = 2 sqrt(rx ry) h0* int -ln(1 - Q/Q_max)/alpha
     dX dY (a logarithmic, integrable singularity at the peak). No load above W* has a
-    solution. Q comes from one reduced-pressure solve on the default rigid grid
-    (:data:`RIGID_RANGE_REYNOLDS`, sinh-graded); the integral is taken at the
-    quadrature points, where Q < Q_max. The line-contact counterpart in closed form is
+    solution. Q comes from one reduced-pressure solve on a sinh-graded grid of ``nodes``
+    per direction over the default rigid domain (:data:`RIGID_RANGE_REYNOLDS`); the
+    integral is taken at the quadrature points, where Q < Q_max. Measured for a ball:
+    0.5028 N on 81^2, 0.5093 N on 161^2, 0.5099 N on 321^2. The line-contact counterpart in closed form is
     :func:`bearing_fem.analytic.martin_barus_load_limit`.
 
     Parameters
