@@ -242,3 +242,39 @@ def test_point_contact_rejected():
     with pytest.raises(SceneError, match="line contacts only"):
         coupling.solve_thermal(replace(s, contact=Contact(kind="point", rx=0.01, ry=0.01),
                                        mesh=MeshSpec()))
+
+
+def test_peclet_number_does_not_depend_on_the_mesh_domain():
+    """The Peclet number is that of the band holding the heat, not of the mesh domain: a
+    slow contact (Hertz half-width b = 0.15 mm, u2 = 0.15 m/s, Pe ~ 1 with b) keeps its
+    Pe and its low-Peclet warning when the domain is widened from [-4.5, 1.5] b to
+    [-20, 5] b (the whole non-zero flux gave 2.7 and 11.2, and no warning on the wider
+    domain)."""
+    from bearing_fem import units
+    slow = _scene(u1=0.25, u2=0.15, nodes=601)
+    wide = replace(slow, mesh=MeshSpec(nodes=2001, x_range=(-20.0, 5.0)))
+    r1, r2 = bf.solve(slow), bf.solve(wide)
+    assert r1.success and r2.success, (r1.message, r2.message)
+    pe1, pe2 = r1.quantities["peclet_min"], r2.quantities["peclet_min"]
+    np.testing.assert_allclose(pe2, pe1, rtol=0.05,
+                               err_msg="same contact, same heated band: the domain's extent "
+                                       "must not set the Peclet number (5 %: the two grids "
+                                       "resolve the flux differently)")
+    b = units.hertz_line(2e5, 0.01, slow.e_prime)[0]
+    kappa = 46.0 / (7850.0 * 470.0)
+    pe_hertz = 0.15 * b / (2 * kappa)
+    assert 0.5 * pe_hertz < pe1 < 2.0 * pe_hertz, \
+        f"the heat sits in the Hertz zone: Pe {pe1:.3g} near the Hertz value {pe_hertz:.3g}"
+    for r in (r1, r2):
+        assert any("Peclet number" in w for w in r.warnings), r.warnings
+
+
+def test_heated_half_length_of_a_uniform_band_in_a_wide_domain():
+    x = np.linspace(-10.0, 10.0, 2001)
+    xm = 0.5 * (x[1:] + x[:-1])
+    q = np.where(np.abs(xm) < 1.0, 1.0, 0.0)
+    np.testing.assert_allclose(coupling.heated_half_length(x, q), 0.98, rtol=1e-9,
+                               err_msg="uniform band of half-length 1: the central 98 % of "
+                                       "its heat spans 0.98")
+    np.testing.assert_allclose(coupling.heated_half_length(x, np.zeros_like(xm)), 10.0,
+                               err_msg="no heat: half the domain")
