@@ -278,3 +278,11 @@ def test_heated_half_length_of_a_uniform_band_in_a_wide_domain():
                                        "its heat spans 0.98")
     np.testing.assert_allclose(coupling.heated_half_length(x, np.zeros_like(xm)), 10.0,
                                err_msg="no heat: half the domain")
+
+
+def test_every_number_of_a_thermal_summary_has_its_unit(eyring_result):
+    """thermal_residual |G(T) - T| [K] was written without a unit."""
+    s = eyring_result.summary()
+    missing = [k for k, v in s.items() if isinstance(v, float) and k not in s["units"]]
+    assert not missing, f"thermal summary numbers without a unit: {missing}"
+    assert s["units"]["thermal_residual"] == "K"
