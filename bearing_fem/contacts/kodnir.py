@@ -318,8 +318,9 @@ class KodnirResult:
     ----------
     success : bool
     status : str
-        ``converged`` or the reason of failure (``invalid``, ``no_convergence``,
-        ``outlet_outside_domain``).
+        ``converged`` or the reason of failure: ``no_convergence``, ``no_solution``
+        (C = 0 with B alpha q_max >= 1: no rigid piezo-viscous solution exists) or
+        ``outlet_outside_domain``.
     message : str
     C, b_alpha, z_b : float
         Parameters.
