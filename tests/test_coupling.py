@@ -286,3 +286,18 @@ def test_every_number_of_a_thermal_summary_has_its_unit(eyring_result):
     missing = [k for k, v in s.items() if isinstance(v, float) and k not in s["units"]]
     assert not missing, f"thermal summary numbers without a unit: {missing}"
     assert s["units"]["thermal_residual"] == "K"
+
+
+def test_unequal_surface_temperatures_are_reported():
+    """Blok's partition gives both surfaces the same flash temperature only in the
+    high-Peclet limit. With the FE moving source and an almost standing surface (u2 =
+    0.01 m/s, Pe 0.06) the surfaces' mean rises came out 74 K and 56 K and the contact
+    temperature, their mean, carried no word about it."""
+    slow = bf.solve(_scene(u1=2.2, u2=0.01, nodes=601, source_model="fe"))
+    assert slow.success, slow.message
+    found = [w for w in slow.warnings if "Blok's heat partition" in w]
+    assert found, slow.warnings
+    fast = bf.solve(_scene(u1=2.2, u2=1.8, nodes=601, source_model="fe"))
+    assert fast.success, fast.message
+    assert not [w for w in fast.warnings if "Blok's heat partition" in w], \
+        "Pe 13 on both surfaces: the partition holds (rises within 1 %), no warning"

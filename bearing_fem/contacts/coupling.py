@@ -53,6 +53,9 @@ __all__ = ["solve_thermal", "contact_viscosity", "contact_piezo", "jaeger_surfac
 HEATED_SHARE = 0.98
 #: Below this Peclet number the high-Peclet (Jaeger) flash temperature is not trusted.
 PECLET_MIN_JAEGER = 5.0
+#: Relative difference of the two surfaces' contact temperature rises above which the
+#: result says that Blok's partition (equal flash temperatures) does not hold.
+PARTITION_MISMATCH = 0.1
 
 
 def contact_viscosity(scene: Scene, temperature: float) -> float:
@@ -225,6 +228,7 @@ def solve_thermal(scene: Scene) -> Result:
     temps: list[np.ndarray] = []
     q_e = np.zeros(0)
     prev: tuple[float, float] | None = None     # (T, G(T) - T) of the previous iteration
+    body_rises = [0.0, 0.0]
     sol = scene.solver
     for it in range(1, th.max_iterations + 1):
         left_its = sol.iteration_budget - newton_its
@@ -275,9 +279,12 @@ def solve_thermal(scene: Scene) -> Result:
                  for i in range(2)]
         p_pos = np.maximum(res.pressure, 0.0)
         wts = np.gradient(xn) * p_pos
-        mean_rise = float(np.mean([wts @ T_i for T_i in temps]) / wts.sum())
-        max_rise = float(np.mean([np.max(T_i) for T_i in temps]))
+        body_means = [float(wts @ T_i / wts.sum()) for T_i in temps]
+        body_maxima = [float(np.max(T_i)) for T_i in temps]
+        mean_rise = float(np.mean(body_means))
+        max_rise = float(np.mean(body_maxima))
         rise = mean_rise if th.contact_temperature == "mean" else max_rise
+        body_rises = body_means if th.contact_temperature == "mean" else body_maxima
         G = t_oil + rise
         delta = G - T
         history.append(abs(delta))
@@ -351,6 +358,13 @@ def solve_thermal(scene: Scene) -> Result:
                          "the high-Peclet Jaeger formula is inaccurate here (it overestimates "
                          "the maximum flash temperature and misses the heat conducted "
                          "upstream of the source); use thermal.source_model = 'fe'")
+        hi, lo = max(body_rises), min(body_rises)
+        if hi - lo > PARTITION_MISMATCH * hi and hi - lo > th.tolerance:
+            notes.append(f"the surfaces' contact temperature rises differ ({body_rises[0]:.4g} K "
+                         f"body 1, {body_rises[1]:.4g} K body 2): Blok's heat partition "
+                         "assumes equal flash temperatures (both Peclet numbers >~ 5, minimum "
+                         f"here {info['peclet_min']:.3g}); the contact temperature is their "
+                         "mean and is uncertain by about half their difference")
     quantities = {k: v for k, v in res.quantities.items()}
     quantities.update({"contact_temperature": float(T),
                        "contact_temperature_rise": float(T - t_oil),
