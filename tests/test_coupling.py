@@ -301,3 +301,27 @@ def test_unequal_surface_temperatures_are_reported():
     assert fast.success, fast.message
     assert not [w for w in fast.warnings if "Blok's heat partition" in w], \
         "Pe 13 on both surfaces: the partition holds (rises within 1 %), no warning"
+
+
+def test_failed_isothermal_solve_reports_its_own_temperature():
+    """When the isothermal solve of thermal iteration 2 fails, the result holds that
+    solve's fields; its summary gave the temperature, viscosity, heat fluxes and count of
+    iteration 1 (contact_temperature 60 deg C beside fields solved at 64.8 deg C)."""
+    first = bf.solve(_scene(max_iterations=1))
+    n1 = first.newton_iterations
+    s = _scene()
+    s = replace(s, solver=replace(s.solver, iteration_budget=n1 + 1))
+    r = bf.solve(s)
+    q = r.quantities
+    assert r.status == "budget_exhausted" and "thermal iteration 2" in r.message, r.message
+    assert q["thermal_iterations"] == 2
+    assert q["contact_temperature"] > s.thermal.oil_temperature + 1.0, \
+        "iteration 2 runs at the temperature computed by iteration 1 (a rise of several K)"
+    assert f"contact temperature {q['contact_temperature']:.4g} deg C" in r.message
+    np.testing.assert_allclose(q["contact_viscosity"],
+                               prokofiev(q["contact_temperature"], 0.05, 40.0, 2.93),
+                               rtol=1e-12, err_msg="eta0 of the returned solve")
+    for key in ("heat_flux_body1", "heat_flux_body2", "contact_temperature_rise_mean",
+                "thermal_residual"):
+        assert key not in q, f"{key} belonged to iteration 1's fields"
+    assert all(np.isfinite(v) for v in q.values())

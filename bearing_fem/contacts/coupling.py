@@ -271,6 +271,12 @@ def solve_thermal(scene: Scene) -> Result:
             msg = (f"{res.status}: the isothermal EHL solve failed at thermal iteration {it} "
                    f"(contact temperature {T:.4g} deg C, eta0 = {eta0:.4g} Pa s, alpha = "
                    f"{alpha:.4g} 1/Pa): {res.message}")
+            # the returned fields are this solve's: describe it, not the previous
+            # iteration (whose flash temperatures and heat fluxes belong to other fields)
+            info = {"contact_temperature": float(T), "contact_temperature_rise": float(T - t_oil),
+                    "contact_viscosity": eta0, "contact_piezo": alpha,
+                    "thermal_iterations": int(it)}
+            temps = []
             break
         q_e, _ = model.heat_flux(res.pressure, res.h0)
         xn = res.x
