@@ -325,3 +325,13 @@ def test_failed_isothermal_solve_reports_its_own_temperature():
                 "thermal_residual"):
         assert key not in q, f"{key} belonged to iteration 1's fields"
     assert all(np.isfinite(v) for v in q.values())
+
+
+def test_rise_above_a_low_user_limit_is_not_called_unphysical():
+    """A rise of a few kelvin above a 1 K thermal.max_temperature_rise stops the loop;
+    the message said 'no physical fixed point' for it, although the rise is physical."""
+    r = bf.solve(_scene(max_temperature_rise=1.0))
+    assert r.status == "diverged", r.message
+    assert "no physical fixed point" not in r.message, r.message
+    assert "thermal.max_temperature_rise = 1 K" in r.message, r.message
+    assert "raise thermal.max_temperature_rise" in r.message, r.message

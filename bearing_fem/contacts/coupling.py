@@ -319,7 +319,8 @@ def solve_thermal(scene: Scene) -> Result:
                    f"thermal.max_temperature_rise = {th.max_temperature_rise:.4g} K at thermal "
                    f"iteration {it} (heat power {heat:.4g} W/m, of which Couette "
                    f"{res.quantities['heat_power_couette']:.4g} W/m, traction model "
-                   f"{model_name!r}); no physical fixed point"
+                   f"{model_name!r}); no fixed point below that limit (raise "
+                   "thermal.max_temperature_rise if such a rise is expected)"
                    + (" - Newtonian Barus traction is unphysical under sliding, use "
                       "traction.model = 'eyring-limiting'" if model_name == "newtonian"
                       else ""))
