@@ -335,3 +335,20 @@ def test_rise_above_a_low_user_limit_is_not_called_unphysical():
     assert "no physical fixed point" not in r.message, r.message
     assert "thermal.max_temperature_rise = 1 K" in r.message, r.message
     assert "raise thermal.max_temperature_rise" in r.message, r.message
+
+
+def test_nncf5040_contact_study_writes_the_direct_heat_power(tmp_path, load_study):
+    """The contact study read a summary key that no longer exists ('heat_power_direct'),
+    so results.json held null for the direct-quadrature heat power of every contact."""
+    import json
+    study = load_study("nncf5040_heat_power")
+    study.contact_study(tmp_path, models=("local",), temperatures=(100.0,), nodes=401)
+    row = json.loads((tmp_path / "results.json").read_text())["rows"][0]
+    for side in ("inner", "outer"):
+        c = row[side]
+        assert c["status"] == "converged", c["message"]
+        assert c["heat_power_direct_W_per_m"] is not None
+        np.testing.assert_allclose(c["heat_power_direct_W_per_m"], c["heat_power_W_per_m"],
+                                   rtol=2e-2, err_msg="local compliance: the direct and the "
+                                   "conservative Poiseuille heat agree (docs/coupling.md "
+                                   "section 3: 368.4 vs 368.4 W/m at 100 C, 1201 nodes)")
