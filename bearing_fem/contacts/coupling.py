@@ -18,8 +18,9 @@ Loop (``model.thermal = "patch"``, see ``docs/coupling.md``)::
 Why the rolling plane and not Korovchinsky's: the Korovchinsky strip (thermal.strip_source)
 is the steady conduction field across the track, where the source is stationary relative
 to the body; in a rolling bearing every surface point crosses the contact in b/u ~ 1e-4 s,
-the Peclet number u b/(2 kappa) is 10..100, and the surface temperature is set by the
-moving source (Jaeger/Blok), whose rise does not depend on a far-field datum. The
+the Peclet number u b/(2 kappa) is tens to hundreds (docs/coupling.md), and the surface
+temperature is set by the moving source (Jaeger/Blok), whose rise does not depend on a
+far-field datum. The
 Korovchinsky patch gives only temperature differences in 2D (its constant C needs a datum).
 
 Flash temperature (``thermal.source_model``): ``"jaeger"`` the high-Pe closed form
