@@ -352,3 +352,21 @@ def test_nncf5040_contact_study_writes_the_direct_heat_power(tmp_path, load_stud
                                    rtol=2e-2, err_msg="local compliance: the direct and the "
                                    "conservative Poiseuille heat agree (docs/coupling.md "
                                    "section 3: 368.4 vs 368.4 W/m at 100 C, 1201 nodes)")
+
+
+def test_lightly_loaded_local_compliance_roller_is_solved():
+    """A local-compliance (Kodnir) roller at 100 N/m: its dry contact (a = 4 um) falls
+    between the nodes of the default 801-node grid (spacing 20 um), the start pressure
+    was 0 everywhere and its load scaling NaN, and the solve ended 'diverged' with
+    'int p dA = nan'. At such a load the bodies barely deform: the film equals that of
+    the half-space model."""
+    base = _scene(nodes=801)
+    light = replace(base, model=Model(elasticity="local"), thermal=None,
+                    load=Load(force=100.0))
+    r_loc = bf.solve(light)
+    assert r_loc.success, r_loc.message
+    r_hs = bf.solve(replace(light, model=Model(elasticity="half-space")))
+    assert r_hs.success, r_hs.message
+    np.testing.assert_allclose(r_loc.quantities["h_central"], r_hs.quantities["h_central"],
+                               rtol=1e-3, err_msg="rigid-like contact: the compliance model "
+                               "does not matter (both deform by < 1e-4 of the film)")

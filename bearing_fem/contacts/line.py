@@ -845,16 +845,18 @@ class LineModel:
         lub = scene.lubricant
         if scene.load.force is not None and scene.model.elasticity != "rigid":
             w = scene.load.force
+            # at very light loads the dry contact may fall between the nodes of the
+            # (hydrodynamically long) default grid: the guess spans at least 1.5 cells,
+            # or its integral would be 0 and the load scaling NaN (M = 0.01 on 501 nodes;
+            # a local-compliance roller at 100 N/m on 801 nodes)
+            min_half_width = 1.5 * float(np.max(np.diff(x)))
             if scene.model.elasticity == "local":
                 c = level.stab_compliance
                 a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2-x^2)/(2Rc)
+                a = max(a, min_half_width)
                 p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
             else:
-                # at very light loads the Hertz zone may fall between the nodes of the
-                # (hydrodynamically long) default grid: the guess spans at least 1.5
-                # cells, or its integral would be 0 and the load scaling NaN (M = 0.01
-                # on 501 nodes)
-                b = max(level.x_unit, 1.5 * float(np.max(np.diff(x))))
+                b = max(level.x_unit, min_half_width)
                 p = level.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
             p = p * w / (problem.mass @ p)
             v0 = float(np.interp(0.0, x, problem.displacement(p)))
