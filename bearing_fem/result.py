@@ -50,6 +50,7 @@ _UNITS_POINT = {
     "contact_temperature_rise_max": "K", "heat_power_direct": "W",
     "heat_power_direct_poiseuille": "W", "heat_flux_body1": "W", "heat_flux_body2": "W",
     "heat_fraction_body1": "1", "peclet_min": "1", "thermal_iterations": "1",
+    "thermal_residual": "K",
     "contact_viscosity": "Pa s", "contact_piezo": "1/Pa", "gmres_iterations": "1",
     "wall_time_s": "s",
 }

@@ -330,7 +330,9 @@ def contact_study(outdir: str | Path = "out/nncf5040_contacts", quick: bool = Fa
                     "contact_temperature_rise_K": q.get("contact_temperature_rise"),
                     "contact_temperature_rise_max_K": q.get("contact_temperature_rise_max"),
                     "heat_power_W_per_m": q.get("heat_power"),
-                    "heat_power_direct_W_per_m": q.get("heat_power_direct"),
+                    "heat_power_direct_W_per_m": (
+                        q["heat_power_couette"] + q["heat_power_poiseuille_direct"]
+                        if "heat_power_poiseuille_direct" in q else None),
                     "heat_power_per_contact_W": (q["heat_power"] * ROLLER_L
                                                  if "heat_power" in q and r.success else None),
                     "friction_coefficient": q.get("friction_coefficient"),

@@ -242,3 +242,153 @@ def test_point_contact_rejected():
     with pytest.raises(SceneError, match="line contacts only"):
         coupling.solve_thermal(replace(s, contact=Contact(kind="point", rx=0.01, ry=0.01),
                                        mesh=MeshSpec()))
+
+
+def test_peclet_number_does_not_depend_on_the_mesh_domain():
+    """The Peclet number is that of the band holding the heat, not of the mesh domain: a
+    slow contact (Hertz half-width b = 0.15 mm, u2 = 0.15 m/s, Pe ~ 1 with b) keeps its
+    Pe and its low-Peclet warning when the domain is widened from [-4.5, 1.5] b to
+    [-20, 5] b (the whole non-zero flux gave 2.7 and 11.2, and no warning on the wider
+    domain)."""
+    from bearing_fem import units
+    slow = _scene(u1=0.25, u2=0.15, nodes=601)
+    wide = replace(slow, mesh=MeshSpec(nodes=2001, x_range=(-20.0, 5.0)))
+    r1, r2 = bf.solve(slow), bf.solve(wide)
+    assert r1.success and r2.success, (r1.message, r2.message)
+    pe1, pe2 = r1.quantities["peclet_min"], r2.quantities["peclet_min"]
+    np.testing.assert_allclose(pe2, pe1, rtol=0.05,
+                               err_msg="same contact, same heated band: the domain's extent "
+                                       "must not set the Peclet number (5 %: the two grids "
+                                       "resolve the flux differently)")
+    b = units.hertz_line(2e5, 0.01, slow.e_prime)[0]
+    kappa = 46.0 / (7850.0 * 470.0)
+    pe_hertz = 0.15 * b / (2 * kappa)
+    assert 0.5 * pe_hertz < pe1 < 2.0 * pe_hertz, \
+        f"the heat sits in the Hertz zone: Pe {pe1:.3g} near the Hertz value {pe_hertz:.3g}"
+    for r in (r1, r2):
+        assert any("Peclet number" in w for w in r.warnings), r.warnings
+
+
+def test_heated_half_length_of_a_uniform_band_in_a_wide_domain():
+    x = np.linspace(-10.0, 10.0, 2001)
+    xm = 0.5 * (x[1:] + x[:-1])
+    q = np.where(np.abs(xm) < 1.0, 1.0, 0.0)
+    np.testing.assert_allclose(coupling.heated_half_length(x, q), 0.98, rtol=1e-9,
+                               err_msg="uniform band of half-length 1: the central 98 % of "
+                                       "its heat spans 0.98")
+    np.testing.assert_allclose(coupling.heated_half_length(x, np.zeros_like(xm)), 10.0,
+                               err_msg="no heat: half the domain")
+
+
+def test_every_number_of_a_thermal_summary_has_its_unit(eyring_result):
+    """thermal_residual |G(T) - T| [K] was written without a unit."""
+    s = eyring_result.summary()
+    missing = [k for k, v in s.items() if isinstance(v, float) and k not in s["units"]]
+    assert not missing, f"thermal summary numbers without a unit: {missing}"
+    assert s["units"]["thermal_residual"] == "K"
+
+
+def test_unequal_surface_temperatures_are_reported():
+    """Blok's partition gives both surfaces the same flash temperature only in the
+    high-Peclet limit. With the FE moving source and an almost standing surface (u2 =
+    0.01 m/s, Pe 0.06) the surfaces' mean rises came out 74 K and 56 K and the contact
+    temperature, their mean, carried no word about it."""
+    slow = bf.solve(_scene(u1=2.2, u2=0.01, nodes=601, source_model="fe"))
+    assert slow.success, slow.message
+    found = [w for w in slow.warnings if "Blok's heat partition" in w]
+    assert found, slow.warnings
+    fast = bf.solve(_scene(u1=2.2, u2=1.8, nodes=601, source_model="fe"))
+    assert fast.success, fast.message
+    assert not [w for w in fast.warnings if "Blok's heat partition" in w], \
+        "Pe 13 on both surfaces: the partition holds (rises within 1 %), no warning"
+
+
+def test_failed_isothermal_solve_reports_its_own_temperature():
+    """When the isothermal solve of thermal iteration 2 fails, the result holds that
+    solve's fields; its summary gave the temperature, viscosity, heat fluxes and count of
+    iteration 1 (contact_temperature 60 deg C beside fields solved at 64.8 deg C)."""
+    first = bf.solve(_scene(max_iterations=1))
+    n1 = first.newton_iterations
+    s = _scene()
+    s = replace(s, solver=replace(s.solver, iteration_budget=n1 + 1))
+    r = bf.solve(s)
+    q = r.quantities
+    assert r.status == "budget_exhausted" and "thermal iteration 2" in r.message, r.message
+    assert q["thermal_iterations"] == 2
+    assert q["contact_temperature"] > s.thermal.oil_temperature + 1.0, \
+        "iteration 2 runs at the temperature computed by iteration 1 (a rise of several K)"
+    assert f"contact temperature {q['contact_temperature']:.4g} deg C" in r.message
+    np.testing.assert_allclose(q["contact_viscosity"],
+                               prokofiev(q["contact_temperature"], 0.05, 40.0, 2.93),
+                               rtol=1e-12, err_msg="eta0 of the returned solve")
+    for key in ("heat_flux_body1", "heat_flux_body2", "contact_temperature_rise_mean",
+                "thermal_residual"):
+        assert key not in q, f"{key} belonged to iteration 1's fields"
+    assert all(np.isfinite(v) for v in q.values())
+
+
+def test_rise_above_a_low_user_limit_is_not_called_unphysical():
+    """A rise of a few kelvin above a 1 K thermal.max_temperature_rise stops the loop;
+    the message said 'no physical fixed point' for it, although the rise is physical."""
+    r = bf.solve(_scene(max_temperature_rise=1.0))
+    assert r.status == "diverged", r.message
+    assert "no physical fixed point" not in r.message, r.message
+    assert "thermal.max_temperature_rise = 1 K" in r.message, r.message
+    assert "raise thermal.max_temperature_rise" in r.message, r.message
+
+
+def test_nncf5040_contact_study_writes_the_direct_heat_power(tmp_path, load_study):
+    """The contact study read a summary key that no longer exists ('heat_power_direct'),
+    so results.json held null for the direct-quadrature heat power of every contact."""
+    import json
+    study = load_study("nncf5040_heat_power")
+    study.contact_study(tmp_path, models=("local",), temperatures=(100.0,), nodes=401)
+    row = json.loads((tmp_path / "results.json").read_text())["rows"][0]
+    for side in ("inner", "outer"):
+        c = row[side]
+        assert c["status"] == "converged", c["message"]
+        assert c["heat_power_direct_W_per_m"] is not None
+        np.testing.assert_allclose(c["heat_power_direct_W_per_m"], c["heat_power_W_per_m"],
+                                   rtol=2e-2, err_msg="local compliance: the direct and the "
+                                   "conservative Poiseuille heat agree (docs/coupling.md "
+                                   "section 3: 368.4 vs 368.4 W/m at 100 C, 1201 nodes)")
+
+
+def test_lightly_loaded_local_compliance_roller_is_solved():
+    """A local-compliance (Kodnir) roller at 100 N/m: its dry contact (a = 4 um) falls
+    between the nodes of the default 801-node grid (spacing 20 um), the start pressure
+    was 0 everywhere and its load scaling NaN, and the solve ended 'diverged' with
+    'int p dA = nan'. At such a load the bodies barely deform: the film equals that of
+    the half-space model."""
+    base = _scene(nodes=801)
+    light = replace(base, model=Model(elasticity="local"), thermal=None,
+                    load=Load(force=100.0))
+    r_loc = bf.solve(light)
+    assert r_loc.success, r_loc.message
+    r_hs = bf.solve(replace(light, model=Model(elasticity="half-space")))
+    assert r_hs.success, r_hs.message
+    np.testing.assert_allclose(r_loc.quantities["h_central"], r_hs.quantities["h_central"],
+                               rtol=1e-3, err_msg="rigid-like contact: the compliance model "
+                               "does not matter (both deform by < 1e-4 of the film)")
+
+
+@pytest.mark.parametrize("elasticity", ["half-space", "local"])
+def test_lightly_loaded_elastic_line_keeps_its_outlet_in_the_domain(elasticity):
+    """At 300 N/m on a 10 mm steel roller (Moes M ~ 0.05) the film is that of a rigid
+    cylinder, whose Martin outlet lies 40 Hertz half-widths downstream; the default
+    domain ended at 1.5 b, cut the pressure zone there and gave h_central 1.20e-5 m,
+    17 % below the rigid 1.46e-5 m."""
+    from bearing_fem.contacts.line import default_x_range
+    base = _scene(nodes=801)
+    light = replace(base, model=Model(elasticity=elasticity), thermal=None,
+                    load=Load(force=300.0), mesh=MeshSpec())
+    r = bf.solve(light)
+    assert r.success, r.message
+    rigid = bf.solve(replace(light, model=Model(elasticity="rigid"), materials=None))
+    assert rigid.success, rigid.message
+    np.testing.assert_allclose(r.quantities["h_central"], rigid.quantities["h_central"],
+                               rtol=2e-2, err_msg="rigid-like contact (deformation < 1e-3 "
+                               "of the film); 2 %: the two solvers' grids and domains")
+    b = bf.units.hertz_line(300.0, 0.01, light.e_prime)[0]
+    assert r.quantities["outlet_position"] < 0.9 * default_x_range(light)[1] * b, \
+        "the free outlet lies inside the domain, not at its end"

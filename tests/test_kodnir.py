@@ -209,3 +209,33 @@ def test_graded_grid_bands_refine_with_nodes():
     plain = K.graded_grid(-7.36, 9.23, 20.0, 2001)
     np.testing.assert_allclose(np.diff(plain[:1601]), (9.23 + 7.36) / 1600, rtol=1e-9,
                                err_msg="no bands: uniform zone")
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"h_star": math.inf}, r"h_star must be finite.*m"),
+    ({"piezo": math.inf}, r"piezo must be finite.*1/Pa"),
+    ({"piezo": -1e-8}, r"piezo must be >= 0 1/Pa"),
+    ({"viscosity": math.nan}, r"viscosity must be finite.*Pa s"),
+])
+def test_scales_refuse_non_finite_numbers(kwargs, match):
+    """inf for h* or alpha gave B1 = inf or B alpha = inf (then NaN downstream)."""
+    args = dict(h_star=1e-6, radius=0.02, viscosity=0.1, sum_speed=10.0,
+                youngs_modulus=2.1e11, load_per_length=1e6, piezo=2e-8)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=match):
+        K.kodnir_scales(**args)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"sliding_speed": math.nan}, r"sliding_speed must be finite.*m/s"),
+    ({"sliding_speed": math.inf}, r"sliding_speed must be finite.*m/s"),
+    ({"q_H": -1e6}, r"q_H must be > 0 N/m"),
+    ({"B": 0.0}, r"B must be > 0 Pa"),
+])
+def test_friction_heat_refuses_bad_numbers_with_units(elastic, kwargs, match):
+    """A NaN sliding speed gave heat_power = NaN, an infinite one inf; the other messages
+    named no unit."""
+    args = dict(h_star=1e-6, B=1e8, q_H=1e6, sum_speed=10.0, sliding_speed=1.0)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=match):
+        K.kodnir_friction_heat(elastic, **args)

@@ -96,3 +96,21 @@ def test_solve_refuses_a_series_scene_instead_of_ignoring_its_transient_section(
         bf.solve(scene)
     steady = bf.solve(scene.replace(transient=None))
     assert steady.success, "without the section: the steady solve at the mean gap"
+
+
+def test_rigid_series_honours_the_time_limit_of_the_whole_series(tmp_path):
+    """solver.time_limit bounds the whole series; a rigid series ran every instant
+    whatever the limit (201 instants, 36 s, with time_limit = 0.5 s)."""
+    data = json.loads(json.dumps(RIGID))
+    data["transient"] = {"amplitude": 0.3, "steps": 64}
+    data["solver"] = {"time_limit": 0.05}
+    series = bf.solve_series(bf.Scene.from_dict(data))
+    assert series.status == "time_limit" and not series.success, series.message
+    assert 1 <= len(series.results) < 65, len(series.results)
+    assert "whole series" in series.message, series.message
+    s = series.summary()
+    assert len(s["times"]) == len(s["p_max"]) == s["instants"] == len(series.results)
+    out = tmp_path / "out"
+    assert cli.main(["solve", str(_write(tmp_path, data, "limited")), "--out", str(out),
+                     "-q"]) == 3, "an unfinished series is not a success"
+    assert json.loads((out / "summary.json").read_text())["status"] == "time_limit"

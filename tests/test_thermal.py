@@ -378,3 +378,18 @@ def test_studies_quick(tmp_path, load_study):
     assert (tmp_path / "ms" / "moving_source.png").exists()
     assert all(abs(e) < 3.0 for e in ms["uniform"]["error_vs_jaeger_pct"]), "Pe >= 10: 3 %"
     assert abs(ms["semi_elliptic"]["x_max_error_vs_blok_b"][-1]) < 0.03, "Pe = 50: 0.03 b"
+
+
+def test_messages_show_plain_numbers(fe_default):
+    """Values in messages read as numbers, not as numpy reprs ('got np.float64(-1e-05)')."""
+    calls = [lambda: th.reconstruct_two_point(A_HALF, (0, -1e-5, 1.0), (0, 0, 2.0), LAM),
+             lambda: th.reconstruct_two_point(A_HALF, (0, 2 * A_HALF, 12.0),
+                                              (1.5 * A_HALF, 0, 10.0), LAM),
+             lambda: fe_default.temperature(0.0, -1e-5),
+             lambda: fe_default.temperature(60 * A_HALF, 0.0),
+             lambda: th.strip_source(A_HALF, Q_MAX, LAM, radius=A_HALF)]
+    for call in calls:
+        with pytest.raises(ValueError) as exc:
+            call()
+        msg = str(exc.value)
+        assert "np.float64" not in msg and "00000000" not in msg, msg

@@ -373,3 +373,22 @@ def test_solve_routes_elastic_gap_scenes_to_the_elastic_solver():
     rigid = bf.solve(scene(elasticity="rigid"))
     assert np.max(via_solve.pressure) < 0.99 * np.max(rigid.pressure), \
         "elastic bodies flatten the pressure peak of the rigid solution"
+
+
+def test_iteration_budget_applies_to_each_instant_time_limit_to_the_series():
+    """A long series is not cut by the default budget of one solve: 3 periods of 64
+    BDF2 steps (193 instants, about 550 Newton iterations in all) stopped with
+    budget_exhausted after 141 instants when the 400 iterations of solver.iteration_budget
+    were shared by the whole series. The wall-clock limit still bounds the whole series."""
+    from dataclasses import replace
+    from bearing_fem.scene import SolverSpec
+    sc = scene(nodes=25, cavitation="reynolds")
+    series = solve_elastic_squeeze_series(sc, eps=0.3, n_steps=64, periods=3)
+    assert series.status == "converged" and len(series.results) == 193, series.message
+    assert series.newton_iterations.sum() > sc.solver.iteration_budget, \
+        "the series as a whole needs more than one solve's budget (else the test is void)"
+    assert series.newton_iterations.max() <= sc.solver.iteration_budget
+    tight = replace(sc, solver=SolverSpec(time_limit=0.05))
+    short = solve_elastic_squeeze_series(tight, eps=0.3, n_steps=64, periods=3)
+    assert short.status == "time_limit" and len(short.results) < 193, short.message
+    assert "whole series" in short.message, short.message

@@ -18,8 +18,9 @@ Loop (``model.thermal = "patch"``, see ``docs/coupling.md``)::
 Why the rolling plane and not Korovchinsky's: the Korovchinsky strip (thermal.strip_source)
 is the steady conduction field across the track, where the source is stationary relative
 to the body; in a rolling bearing every surface point crosses the contact in b/u ~ 1e-4 s,
-the Peclet number u b/(2 kappa) is 10..100, and the surface temperature is set by the
-moving source (Jaeger/Blok), whose rise does not depend on a far-field datum. The
+the Peclet number u b/(2 kappa) is tens to hundreds (docs/coupling.md), and the surface
+temperature is set by the moving source (Jaeger/Blok), whose rise does not depend on a
+far-field datum. The
 Korovchinsky patch gives only temperature differences in 2D (its constant C needs a datum).
 
 Flash temperature (``thermal.source_model``): ``"jaeger"`` the high-Pe closed form
@@ -46,7 +47,16 @@ from .driver import finish, solve_newton_model
 from .line import LineModel
 
 __all__ = ["solve_thermal", "contact_viscosity", "contact_piezo", "jaeger_surface_temperature",
-           "flash_temperature"]
+           "flash_temperature", "heated_half_length"]
+
+#: Share of the film's heat inside the band whose half-length enters the Peclet number
+#: (the rest, beyond the band's ends, is split equally between them).
+HEATED_SHARE = 0.98
+#: Below this Peclet number the high-Peclet (Jaeger) flash temperature is not trusted.
+PECLET_MIN_JAEGER = 5.0
+#: Relative difference of the two surfaces' contact temperature rises above which the
+#: result says that Blok's partition (equal flash temperatures) does not hold.
+PARTITION_MISMATCH = 0.1
 
 
 def contact_viscosity(scene: Scene, temperature: float) -> float:
@@ -136,6 +146,39 @@ def flash_temperature(x_nodes: np.ndarray, q_elements: np.ndarray, x_eval: np.nd
     return np.interp(np.asarray(x_eval, dtype=float) - centre, ms.x, ms.surface_temperature)
 
 
+def heated_half_length(x_nodes: np.ndarray, q_elements: np.ndarray,
+                       share: float = HEATED_SHARE) -> float:
+    """Half-length [m] of the band that holds the central ``share`` of the heat.
+
+    The ends are where the cumulative heat int |q| dx reaches (1 - share)/2 and
+    (1 + share)/2 of its total, so the thin tails of the Couette and Poiseuille heat in
+    the inlet and outlet (which reach the ends of any mesh domain) do not set the
+    length: the result does not depend on how far the domain extends.
+
+    Parameters
+    ----------
+    x_nodes : ndarray
+        Ascending nodes [m].
+    q_elements : ndarray
+        Heat flux [W/m^2] on each element between them.
+    share : float
+        Share of the heat inside the band [-], in (0, 1].
+
+    Returns
+    -------
+    float
+        Half-length [m]; half the domain when the flux is zero everywhere.
+    """
+    xn = np.asarray(x_nodes, dtype=float)
+    w = np.abs(np.asarray(q_elements, dtype=float)) * np.diff(xn)
+    total = float(w.sum())
+    if not total > 0.0:
+        return 0.5 * float(xn[-1] - xn[0])
+    cum = np.concatenate([[0.0], np.cumsum(w)]) / total
+    lo, hi = np.interp([0.5 * (1.0 - share), 0.5 * (1.0 + share)], cum, xn)
+    return 0.5 * float(hi - lo)
+
+
 def solve_thermal(scene: Scene) -> Result:
     """Thermally coupled steady line-contact solve (see module docstring).
 
@@ -186,6 +229,7 @@ def solve_thermal(scene: Scene) -> Result:
     temps: list[np.ndarray] = []
     q_e = np.zeros(0)
     prev: tuple[float, float] | None = None     # (T, G(T) - T) of the previous iteration
+    body_rises = [0.0, 0.0]
     sol = scene.solver
     for it in range(1, th.max_iterations + 1):
         left_its = sol.iteration_budget - newton_its
@@ -228,6 +272,12 @@ def solve_thermal(scene: Scene) -> Result:
             msg = (f"{res.status}: the isothermal EHL solve failed at thermal iteration {it} "
                    f"(contact temperature {T:.4g} deg C, eta0 = {eta0:.4g} Pa s, alpha = "
                    f"{alpha:.4g} 1/Pa): {res.message}")
+            # the returned fields are this solve's: describe it, not the previous
+            # iteration (whose flash temperatures and heat fluxes belong to other fields)
+            info = {"contact_temperature": float(T), "contact_temperature_rise": float(T - t_oil),
+                    "contact_viscosity": eta0, "contact_piezo": alpha,
+                    "thermal_iterations": int(it)}
+            temps = []
             break
         q_e, _ = model.heat_flux(res.pressure, res.h0)
         xn = res.x
@@ -236,14 +286,16 @@ def solve_thermal(scene: Scene) -> Result:
                  for i in range(2)]
         p_pos = np.maximum(res.pressure, 0.0)
         wts = np.gradient(xn) * p_pos
-        mean_rise = float(np.mean([wts @ T_i for T_i in temps]) / wts.sum())
-        max_rise = float(np.mean([np.max(T_i) for T_i in temps]))
+        body_means = [float(wts @ T_i / wts.sum()) for T_i in temps]
+        body_maxima = [float(np.max(T_i)) for T_i in temps]
+        mean_rise = float(np.mean(body_means))
+        max_rise = float(np.mean(body_maxima))
         rise = mean_rise if th.contact_temperature == "mean" else max_rise
+        body_rises = body_means if th.contact_temperature == "mean" else body_maxima
         G = t_oil + rise
         delta = G - T
         history.append(abs(delta))
-        q_nz = np.nonzero(q_e != 0)[0]
-        band = 0.5 * (xn[q_nz[-1] + 1] - xn[q_nz[0]]) if q_nz.size else float(np.ptp(xn)) / 2
+        band = heated_half_length(xn, q_e)
         peclet = min(speeds[i] * band * rho[i] * cap[i] / (2 * lam[i]) for i in range(2))
         total = float(np.diff(xn) @ q_e)
         info = {
@@ -268,7 +320,8 @@ def solve_thermal(scene: Scene) -> Result:
                    f"thermal.max_temperature_rise = {th.max_temperature_rise:.4g} K at thermal "
                    f"iteration {it} (heat power {heat:.4g} W/m, of which Couette "
                    f"{res.quantities['heat_power_couette']:.4g} W/m, traction model "
-                   f"{model_name!r}); no physical fixed point"
+                   f"{model_name!r}); no fixed point below that limit (raise "
+                   "thermal.max_temperature_rise if such a rise is expected)"
                    + (" - Newtonian Barus traction is unphysical under sliding, use "
                       "traction.model = 'eyring-limiting'" if model_name == "newtonian"
                       else ""))
@@ -308,10 +361,18 @@ def solve_thermal(scene: Scene) -> Result:
                    f"thermal iterations (|G(T) - T| = {history[-1]:.3g} K > tol "
                    f"{th.tolerance:.2e} K, relaxation {th.relaxation}); fields of the last "
                    "iterate")
-        if info.get("peclet_min", np.inf) < 5.0 and th.source_model == "jaeger":
-            notes.append(f"Peclet number {info['peclet_min']:.3g} < 5: the high-Peclet "
-                         "Jaeger formula overestimates the flash temperature; use "
-                         "thermal.source_model = 'fe'")
+        if info.get("peclet_min", np.inf) < PECLET_MIN_JAEGER and th.source_model == "jaeger":
+            notes.append(f"Peclet number {info['peclet_min']:.3g} < {PECLET_MIN_JAEGER:g}: "
+                         "the high-Peclet Jaeger formula is inaccurate here (it overestimates "
+                         "the maximum flash temperature and misses the heat conducted "
+                         "upstream of the source); use thermal.source_model = 'fe'")
+        hi, lo = max(body_rises), min(body_rises)
+        if hi - lo > PARTITION_MISMATCH * hi and hi - lo > th.tolerance:
+            notes.append(f"the surfaces' contact temperature rises differ ({body_rises[0]:.4g} K "
+                         f"body 1, {body_rises[1]:.4g} K body 2): Blok's heat partition "
+                         "assumes equal flash temperatures (both Peclet numbers >~ 5, minimum "
+                         f"here {info['peclet_min']:.3g}); the contact temperature is their "
+                         "mean and is uncertain by about half their difference")
     quantities = {k: v for k, v in res.quantities.items()}
     quantities.update({"contact_temperature": float(T),
                        "contact_temperature_rise": float(T - t_oil),

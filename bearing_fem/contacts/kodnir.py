@@ -77,7 +77,7 @@ from .problem import fischer_burmeister
 from ..numerics.newton import NewtonOutcome, damped_newton
 from ..post import parabola_vertex
 from ..physics.reynolds import upwind_factor
-from ..validation import require_finite, require_int, require_positive
+from ..validation import require_finite, require_int, require_nonnegative, require_positive
 
 log = logging.getLogger(__name__)
 
@@ -318,8 +318,9 @@ class KodnirResult:
     ----------
     success : bool
     status : str
-        ``converged`` or the reason of failure (``invalid``, ``no_convergence``,
-        ``outlet_outside_domain``).
+        ``converged`` or the reason of failure: ``no_convergence``, ``no_solution``
+        (C = 0 with B alpha q_max >= 1: no rigid piezo-viscous solution exists) or
+        ``outlet_outside_domain``.
     message : str
     C, b_alpha, z_b : float
         Parameters.
@@ -778,12 +779,11 @@ def kodnir_scales(h_star: float, radius: float, viscosity: float, sum_speed: flo
     """
     from ..physics.elasticity import kodnir_local_coefficient
 
-    for name, val, unit in (("h_star", h_star, "m"), ("radius", radius, "m"),
-                            ("viscosity", viscosity, "Pa s"), ("sum_speed", sum_speed, "m/s")):
-        if not val > 0:
-            raise ValueError(f"{name} must be > 0 {unit}, got {val}")
-    if not piezo >= 0:
-        raise ValueError(f"piezo must be >= 0 1/Pa, got {piezo}")
+    h_star = require_positive("h_star", h_star, "m")
+    radius = require_positive("radius", radius, "m")
+    viscosity = require_positive("viscosity", viscosity, "Pa s")
+    sum_speed = require_positive("sum_speed", sum_speed, "m/s")
+    piezo = require_nonnegative("piezo", piezo, "1/Pa")
     c = kodnir_local_coefficient(load_per_length, radius, youngs_modulus)
     b1 = math.sqrt(2.0 * h_star * radius)
     b = 6.0 * viscosity * sum_speed * b1 / h_star**2
@@ -826,9 +826,11 @@ def kodnir_friction_heat(result: KodnirResult, h_star: float, B: float, q_H: flo
     """
     if not result.success:
         raise ValueError(f"result is not a converged solution: {result.message}")
-    for name, val in (("h_star", h_star), ("B", B), ("q_H", q_H), ("sum_speed", sum_speed)):
-        if not val > 0:
-            raise ValueError(f"{name} must be > 0, got {val}")
+    h_star = require_positive("h_star", h_star, "m")
+    B = require_positive("B", B, "Pa")
+    q_H = require_positive("q_H", q_H, "N/m")
+    sum_speed = require_positive("sum_speed", sum_speed, "m/s")
+    sliding_speed = require_finite("sliding_speed", sliding_speed, "m/s")
     wk = 0.5 * B * h_star * result.friction_integral
     q_roll = sum_speed * wk
     q_slide = sum_speed * (sliding_speed / sum_speed) ** 2 * B * h_star / 6.0 * result.couette_integral

@@ -463,6 +463,13 @@ MAX_DEFAULT_ELASTIC_NODES = 4001
 #: L = 3.57 the narrow domain stalled on its coarsest level where the wide one converges.
 ISOVISCOUS_CAPPED_INLET = 1.5
 ISOVISCOUS_CAPPED_OUTLET = 1.2
+#: Outlet end of the default elastic line domain at light load, in hydrodynamic lengths
+#: sqrt(2 R h) of the estimated central film: Martin's rigid outlet lies at
+#: 0.475 sqrt(2 R h0) = 0.43 sqrt(2 R h*), so one length keeps the outlet inside the domain
+#: where it lies beyond the 1.5 b of an EHL contact (Moes M below ~1; at 300 N/m on a
+#: 10 mm steel roller the outlet at 1.5 b cut the pressure zone and h_central came out
+#: 17 % thin).
+OUTLET_HYDRO_LENGTHS = 1.0
 #: Default rigid-scene grid: nodes per sqrt(2 R h0).
 NODES_PER_RIGID_LENGTH = 40
 #: Stabilisation of half-space line contacts: "upwind" (first-order upwinded wedge term,
@@ -588,7 +595,8 @@ def default_x_range(scene: Scene) -> tuple[float, float]:
     -------
     (float, float)
         In Hertz half-widths b [-]: the fully flooded inlet, 4.5 b or 15 hydrodynamic
-        lengths sqrt(2 R h) at low load, to the outlet at 1.5 b; an isoviscous half-space
+        lengths sqrt(2 R h) at low load, to the outlet at 1.5 b or, at low load,
+        :data:`OUTLET_HYDRO_LENGTHS` hydrodynamic lengths; an isoviscous half-space
         scene whose default grid would exceed :data:`MAX_DEFAULT_ELASTIC_NODES` takes the
         shorter [-max(:data:`ISOVISCOUS_CAPPED_INLET`, 1 + 15 sqrt(2 R h)/b),
         :data:`ISOVISCOUS_CAPPED_OUTLET`].
@@ -597,9 +605,11 @@ def default_x_range(scene: Scene) -> tuple[float, float]:
     b, _ = units.hertz_line(w, R, scene.e_prime)
     h_est = line_central_film_moes(w, R, scene.e_prime, lub.viscosity,
                                    scene.kinematics.mean_speed, lub.effective_piezo)
-    # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load
-    hydro = 15.0 * math.sqrt(2 * R * h_est) / b
-    x_range = (-max(4.5, hydro), 1.5)
+    # fully flooded inlet: 4.5 b, or 15 hydrodynamic lengths sqrt(2 R h) at low load;
+    # the outlet at 1.5 b, or beyond the rigid (Martin) outlet at low load
+    length = math.sqrt(2 * R * h_est) / b
+    hydro = 15.0 * length
+    x_range = (-max(4.5, hydro), max(1.5, OUTLET_HYDRO_LENGTHS * length))
     capped = (x_range[1] - x_range[0]) * _elastic_density(scene) > MAX_DEFAULT_ELASTIC_NODES - 1
     if capped and lub.effective_piezo == 0.0 and scene.model.elasticity == "half-space":
         x_range = (-max(ISOVISCOUS_CAPPED_INLET, 1.0 + hydro), ISOVISCOUS_CAPPED_OUTLET)
@@ -845,16 +855,18 @@ class LineModel:
         lub = scene.lubricant
         if scene.load.force is not None and scene.model.elasticity != "rigid":
             w = scene.load.force
+            # at very light loads the dry contact may fall between the nodes of the
+            # (hydrodynamically long) default grid: the guess spans at least 1.5 cells,
+            # or its integral would be 0 and the load scaling NaN (M = 0.01 on 501 nodes;
+            # a local-compliance roller at 100 N/m on 801 nodes)
+            min_half_width = 1.5 * float(np.max(np.diff(x)))
             if scene.model.elasticity == "local":
                 c = level.stab_compliance
                 a = (1.5 * R * c * w) ** (1.0 / 3.0)  # dry local contact: p = (a^2-x^2)/(2Rc)
+                a = max(a, min_half_width)
                 p = np.maximum(a**2 - x**2, 0.0) / (2 * R * c)
             else:
-                # at very light loads the Hertz zone may fall between the nodes of the
-                # (hydrodynamically long) default grid: the guess spans at least 1.5
-                # cells, or its integral would be 0 and the load scaling NaN (M = 0.01
-                # on 501 nodes)
-                b = max(level.x_unit, 1.5 * float(np.max(np.diff(x))))
+                b = max(level.x_unit, min_half_width)
                 p = level.p_ref * np.sqrt(np.maximum(1.0 - (x / b) ** 2, 0.0))
             p = p * w / (problem.mass @ p)
             v0 = float(np.interp(0.0, x, problem.displacement(p)))

@@ -44,6 +44,9 @@ class SqueezeSeries:
         One quasi-steady solve per step, all on the same grid.
     scene : Scene or None
         The scene of the series (``load.gap`` = the mean offset h0).
+    stop : (str, str) or None
+        (status, message) when the series stopped before its last instant
+        (``solver.time_limit`` reached); the arrays cover the solved instants.
     """
 
     times: np.ndarray
@@ -52,6 +55,7 @@ class SqueezeSeries:
     p_max: np.ndarray
     results: list
     scene: Any = None
+    stop: tuple[str, str] | None = None
 
     #: A warning of the whole series when its instants carry no error estimate (each
     #: rigid instant has its own; the elastic series overrides this).
@@ -63,8 +67,12 @@ class SqueezeSeries:
 
     @property
     def status(self) -> str:
-        """``linear`` when every instant was solved, else the first failed instant's."""
-        return next((st for st in self.statuses if st not in SUCCESS_STATUSES), "linear")
+        """``linear`` when every instant was solved, else the first failed instant's, or
+        ``time_limit`` when the series stopped early."""
+        failed = next((st for st in self.statuses if st not in SUCCESS_STATUSES), None)
+        if failed is not None:
+            return failed
+        return self.stop[0] if self.stop is not None else "linear"
 
     @property
     def success(self) -> bool:
@@ -74,6 +82,8 @@ class SqueezeSeries:
     def message(self) -> str:
         failed = [k for k, r in enumerate(self.results) if not r.success]
         if not failed:
+            if self.stop is not None:
+                return self.stop[1]
             return (f"{len(self.results)} instants of the rigid squeeze solved on the linear "
                     "path (no memory: each instant on its own)")
         r = self.results[failed[0]]
@@ -203,7 +213,17 @@ def solve_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = N
     gaps = h0 * (1.0 + eps * np.cos(omega * times))
     rates = -h0 * eps * omega * np.sin(omega * times)
     results = []
-    for t, g, r in zip(times, gaps, rates):
+    limit = scene.solver.time_limit          # for the whole series [s]
+    start = time.perf_counter()
+    stop = None
+    for k, (t, g, r) in enumerate(zip(times, gaps, rates)):
+        elapsed = time.perf_counter() - start
+        if k > 0 and limit is not None and elapsed >= limit:
+            stop = ("time_limit", f"time_limit: the series stopped after {k} of {times.size} "
+                                  f"instants, {elapsed:.3g} s of a time limit of {limit:.3g} s "
+                                  "(solver.time_limit applies to the whole series)")
+            times, gaps, rates = times[:k], gaps[:k], rates[:k]
+            break
         sc = dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
         bp = None if boundary_pressure is None else (
             lambda x, y, _t=t: boundary_pressure(x, y, _t))
@@ -213,5 +233,5 @@ def solve_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | None = N
         results.append(res)
     p_max = np.array([r.quantities.get("p_max", np.inf) if r.success else np.inf
                       for r in results])
-    return SqueezeSeries(times, gaps, rates, p_max, results, scene)
+    return SqueezeSeries(times, gaps, rates, p_max, results, scene, stop)
 

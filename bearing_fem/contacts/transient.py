@@ -70,12 +70,11 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..errors import SceneError
-from ..numerics.newton import BUDGET_STATUSES, damped_newton, outcome_message
+from ..numerics.newton import BUDGET_STATUSES, Budget, damped_newton, outcome_message
 from ..physics.elasticity import HalfSpacePoint
 from ..result import Result
 from ..scene import Scene
-from .driver import (DriverSettings, Progress, finish, make_budget, solve_levels,
-                     solve_newton_model)
+from .driver import (DriverSettings, Progress, finish, solve_levels, solve_newton_model)
 from .point import (PointLevel, PointModel, PointProblem, PointSetup, boundary_values,
                     flux_model, rigid_start)
 from .point_grid import PointGrid
@@ -565,7 +564,9 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
     def step_scene(g: float):
         return dc_replace(scene, load=dc_replace(scene.load, gap=float(g)))
 
-    budget = make_budget(scene.solver)
+    # solver.iteration_budget applies to each instant (each is one solve),
+    # solver.time_limit to the whole series (a wall clock)
+    series_start = time.perf_counter()
     results: list[Result] = []
     masses: list[np.ndarray] = []   # (rho h) at the quadrature points, latest first
     zs: list[np.ndarray] = []
@@ -574,6 +575,9 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
     for n, (t, g, rate) in enumerate(zip(times, gaps, rates)):
         clock = time.perf_counter()
         what = f"step {n} (t = {t:.6g} s)"
+        limit = scene.solver.time_limit
+        budget = Budget(iterations=scene.solver.iteration_budget,
+                        seconds=None if limit is None else limit - (clock - series_start))
         sc = step_scene(g)
         model = ElasticGapModel(sc, setup, float(g), p_bc_at(t), float(rate))
         level = model.levels()[0]
@@ -598,7 +602,9 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
         if not res.success:
             failure = res
             status = st
-            spent = f"; spent {budget.describe()}" if st in BUDGET_STATUSES else ""
+            spent = (f"; this instant spent {budget.describe()}; solver.iteration_budget "
+                     "applies to each instant, solver.time_limit to the whole series"
+                     if st in BUDGET_STATUSES else "")
             message = (f"{what} {st}: series stopped after {n} of {n_total + 1} instants "
                        f"({res.message}{spent})")
             break

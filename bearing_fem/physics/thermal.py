@@ -149,7 +149,7 @@ def strip_mesh(half_width: float, radius: float, n_across: int = 48):
     a = require_positive("half_width", half_width, "m")
     R = require_positive("radius", radius, "m")
     if R <= 1.5 * a:
-        raise ValueError(f"radius must be > 1.5 * half_width = {1.5 * a} m, got {radius!r}")
+        raise ValueError(f"radius must be > 1.5 * half_width = {1.5 * a:.6g} m, got {radius!r}")
     n_nu = require_int("n_across", n_across, 4)
     n_nu += n_nu % 2
     M = float(np.arccosh(R / a))
@@ -297,12 +297,12 @@ class StripSourceResult:
         """
         xs, ys = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         if np.any(ys < -1e-12 * self.half_width):
-            raise ValueError(f"y must be >= 0 m (into the body), got min {ys.min()!r}")
+            raise ValueError(f"y must be >= 0 m (into the body), got min {float(ys.min())!r}")
         r = np.hypot(xs, ys)
         rmax = self.probe_radius
         if np.any(r > rmax):
             raise ValueError(f"points must lie inside the patch r < {rmax:.6g} m, "
-                             f"got r = {r.max()!r} m")
+                             f"got r = {float(r.max())!r} m")
         pts = np.vstack([xs.ravel(), np.maximum(ys.ravel(), 0.0)])
         return (self.basis.probes(pts) @ self.field).reshape(xs.shape)
 
@@ -557,7 +557,7 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
         if arr.shape != (3,) or not np.all(np.isfinite(arr)):
             raise ValueError(f"{name} must be (x [m], y [m], T [K]) finite, got {p!r}")
         if arr[1] < 0:
-            raise ValueError(f"{name} y must be >= 0 m (into the body), got {arr[1]!r}")
+            raise ValueError(f"{name} y must be >= 0 m (into the body), got {float(arr[1])!r}")
         pts.append(arr)
     f1, f2 = (float(shape(p[0] / a, p[1] / a)) for p in pts)
     if abs(f1 - f2) < 1e-9:
@@ -567,7 +567,7 @@ def reconstruct_two_point(half_width: float, p1: Sequence[float], p2: Sequence[f
     Tn = (T1 - T2) / (f1 - f2)
     if Tn <= 0:
         raise ValueError(f"reconstructed T_n = {Tn:.6g} K <= 0: the temperatures "
-                         f"T1 = {T1!r} K, T2 = {T2!r} K do not fit a heat source")
+                         f"T1 = {float(T1)!r} K, T2 = {float(T2)!r} K do not fit a heat source")
     C = T1 / Tn - f1
     return TwoPointReconstruction(half_width=a, conductivity=lam, C=float(C), T_n=float(Tn),
                                   source_power=float(np.pi * lam * Tn / 2.0),
