@@ -327,6 +327,7 @@ def contact_study(outdir: str | Path = "out/nncf5040_contacts", quick: bool = Fa
                 row[side] = {
                     "status": r.status, "wall_time_s": round(time.perf_counter() - t0, 1),
                     "thermal_iterations": q.get("thermal_iterations"),
+                    "peclet_min": q.get("peclet_min"),
                     "contact_temperature_rise_K": q.get("contact_temperature_rise"),
                     "contact_temperature_rise_max_K": q.get("contact_temperature_rise_max"),
                     "heat_power_W_per_m": q.get("heat_power"),

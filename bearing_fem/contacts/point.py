@@ -91,6 +91,13 @@ COARSEST_NODES = 65
 #: Largest grid (nodes per direction) the driver solves first when the requested grid
 #: fails alone (``PointModel.refine``): requested grids up to 129^2 (257^2 costs ~2 s).
 REFINE_MAX_NODES = 257
+#: Outlet end of the default elastic point domain at light load, in hydrodynamic lengths
+#: sqrt(2 rx h) of the estimated central film (the line contacts' rule,
+#: :data:`bearing_fem.contacts.line.OUTLET_HYDRO_LENGTHS`): where the film's pressure zone
+#: reaches beyond the 1.5 a_x of an EHL contact, the outlet stays inside the domain (a
+#: 12.7 mm steel ball at 0.3 N, 2 m/s, 0.05 Pa s: the outlet at 1.5 a_x cut the pressure
+#: zone, h_central 2.405e-6 m against 2.558e-6 m with the outlet at 1, 2 or 4 lengths).
+OUTLET_HYDRO_LENGTHS = 1.0
 #: Moes M above which isoviscous scenes take a narrower default domain (below).
 HIGH_LOAD_MOES_M = 1000.0
 #: Default domain of isoviscous elastic scenes above HIGH_LOAD_MOES_M, in Hertz
@@ -326,7 +333,8 @@ def default_ranges(scene) -> tuple[tuple[float, float], tuple[float, float]]:
     -------
     x_range, y_range : (float, float)
         In Hertz semi-axes a_x, a_y [-]: the fully flooded inlet, 4.5 a_x or 8
-        hydrodynamic lengths sqrt(2 rx h) at low load, to the outlet at 1.5 a_x, and
+        hydrodynamic lengths sqrt(2 rx h) at low load, to the outlet at 1.5 a_x or, at
+        low load, :data:`OUTLET_HYDRO_LENGTHS` hydrodynamic lengths, and
         y in +-max(3, inlet/2); an isoviscous scene above :data:`HIGH_LOAD_MOES_M` takes
         the shorter inlet max(:data:`ISOVISCOUS_HIGH_LOAD_INLET`, 1 + 8 sqrt(2 rx h)/a_x),
         the outlet :data:`ISOVISCOUS_HIGH_LOAD_OUTLET` and y in
@@ -338,10 +346,12 @@ def default_ranges(scene) -> tuple[tuple[float, float], tuple[float, float]]:
     h_est = point_central_film_nvm(F, rx, ry, scene.e_prime, lub.viscosity,
                                    scene.kinematics.mean_speed, lub.effective_piezo)
     # fully flooded inlet: 4.5 a, or 8 hydrodynamic lengths sqrt(2 rx h) at low load
-    hydro = 8.0 * math.sqrt(2 * rx * h_est) / hz.a_x
+    length = math.sqrt(2 * rx * h_est) / hz.a_x
+    hydro = 8.0 * length
     inlet = max(4.5, hydro)
     side = max(3.0, 0.5 * inlet)
-    outlet = 1.5
+    # the outlet at 1.5 a_x, or beyond the rigid (Kapitsa) outlet at low load
+    outlet = max(1.5, OUTLET_HYDRO_LENGTHS * length)
     if lub.effective_piezo == 0.0 and _moes_point_m(scene) > HIGH_LOAD_MOES_M:
         inlet = max(ISOVISCOUS_HIGH_LOAD_INLET, 1.0 + hydro)
         outlet, side = ISOVISCOUS_HIGH_LOAD_OUTLET, ISOVISCOUS_HIGH_LOAD_SIDE
