@@ -71,6 +71,56 @@ def test_6209_summary_contract(r6209):
             assert e["inner"]["status"] == "excluded" and "no load" in e["inner"]["message"]
 
 
+def _unitless_numbers(summary: dict, units: dict) -> list[str]:
+    """Paths of the numbers of a bearing summary that ``units`` gives no unit for (the
+    patterns of BEARING_UNITS: ``elements.inner/outer.key``, ``empirical.*.key``,
+    ``film_formulas.inner/outer.*.key``, ``elements.inner/outer.error_estimate.*``)."""
+    missing = []
+
+    def walk(obj, path):
+        if isinstance(obj, dict):
+            for k, v in obj.items():
+                if not path and k in ("bearing", "units", "version"):
+                    continue
+                walk(v, path + [k])
+        elif isinstance(obj, list):
+            for v in obj:
+                walk(v, path)
+        elif isinstance(obj, (int, float)) and not isinstance(obj, bool):
+            cands = {".".join(path)}
+            if path[0] == "elements" and len(path) > 2 and path[1] in ("inner", "outer"):
+                cands.add("elements.inner/outer." + ".".join(path[2:]))
+                if path[2] == "error_estimate":
+                    cands.add("elements.inner/outer.error_estimate.*")
+            if path[0] == "empirical" and len(path) > 2:
+                cands.add("empirical.*." + ".".join(path[2:]))
+            if path[0] == "film_formulas" and len(path) == 4:
+                cands.add("film_formulas.inner/outer.*." + path[3])
+            if not cands & set(units):
+                missing.append(".".join(path))
+
+    walk(summary, [])
+    return sorted(set(missing))
+
+
+def test_every_number_of_the_bearing_summary_has_a_unit(r6209):
+    """docs/bearing.md: ``units`` gives the unit of every number, also inside the tables.
+    It named 53 keys; 66 number paths of the 6209 summary had none: the approach, the
+    contacts' loads, h_central, rx, ry, friction and sliding forces, the empirical torque
+    parts and parameters, the film formulas, the counts."""
+    from bearing_fem.bearing.empirical import empirical_models
+
+    s = r6209.summary()
+    units = s["units"]
+    assert _unitless_numbers(s, units) == []
+    roller = solve_bearing(small_roller(bearing={"profile": "crowned", "crown_drop": 4e-6,
+                                                 "slices": 3}, mesh={"line_nodes": 101}))
+    assert _unitless_numbers(roller.summary(), units) == [], "a sliced roller bearing"
+    for name in ("7010-steel", "nncf5040"):
+        emp = {"empirical": empirical_models(load_example(name), 15.0)}
+        assert _unitless_numbers(emp, units) == [], f"{name}: Nikitin, Palmgren bore form"
+
+
 def test_6209_films_against_nijenbanning(r6209):
     """Most loaded contacts within 10% of Nijenbanning-Venner-Moes (81^2 grid here; the
     default 129^2 grid gives 0.5%, see the benchmark)."""
