@@ -10,7 +10,7 @@ import pytest
 from bearing_fem import analytic
 from bearing_fem.bearing import Bearing, distribute_loads, load_example
 from bearing_fem.bearing.geometry import groove_centre_distance, roller_compliance
-from bearing_fem.bearing.loads import profile_drop, series_ball_stiffness
+from bearing_fem.bearing.loads import centrifugal_force, profile_drop, series_ball_stiffness
 
 
 def _ball(z: int = 9, clearance: float = 0.0, psi0: float = 0.0, **op) -> Bearing:
@@ -144,6 +144,21 @@ def test_centrifugal_force_loads_outer_contacts():
                                    err_msg="ball radial equilibrium with F_c")
     np.testing.assert_allclose([db.radial_sum, db.axial_sum], [4000.0, 1000.0], rtol=1e-9,
                                err_msg="ring equilibrium")
+
+
+def test_tapered_centrifugal_force_is_reported_whole_and_loads_the_cup_normally():
+    """load_distribution.centrifugal_force of a tapered bearing was the cup's normal
+    component F_c cos(beta) (0.892 N for the 30205 at 3000 rpm) under the name of the
+    element's centrifugal force F_c = m (d_m/2) omega_c^2 (0.919 N)."""
+    b = load_example("30205")
+    b = replace(b, model=replace(b.model, centrifugal=True))
+    d = distribute_loads(b)
+    fc = centrifugal_force(b)
+    np.testing.assert_allclose(d.centrifugal_force, fc, rtol=1e-14,
+                               err_msg="the element's whole centrifugal force")
+    beta = math.radians(b.geometry.contact_angle)
+    np.testing.assert_allclose(d.load_outer - d.load_inner, fc * math.cos(beta), rtol=1e-9,
+                               err_msg="the cup carries its normal component")
 
 
 def test_sliced_roller_profile():

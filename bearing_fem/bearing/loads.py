@@ -416,7 +416,7 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
         radial_displacement=float(dr), axial_displacement=float(da), axial_offset=0.0,
         load_zone_half_angle=float(half),
         radial_sum=radial_sum, axial_sum=axial_sum if da != 0.0 else 0.0,
-        centrifugal_force=fc,
+        centrifugal_force=fc / cb,
         slice_positions=y, slice_widths=widths, slice_loads=sl,
         exponent=LOAD_EXPONENT_LINE, stiffness=float(k_n), clearance=cr)
 
