@@ -280,6 +280,35 @@ class BearingResult:
         return json_safe(out)
 
 
+def _energy_balance_warning(difference: float, elements: list[dict[str, Any]],
+                            dist: LoadDistribution) -> str:
+    """The warning of an open energy balance (torque x omega vs the contacts' heat), naming
+    its cause: contacts whose heat power departs from Q = 2 u_m F_P, or, when every contact
+    satisfies it, the unequal inner and outer contact angles of the balls (centrifugal
+    force), for which the element torque's moment arms do not hold (docs/bearing.md 5.1)."""
+    head = (f"friction torque x omega differs from the contacts' heat power by "
+            f"{100 * difference:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): ")
+    worst = 0.0
+    for e in elements:
+        for race in ("inner", "outer"):
+            c = e[race]
+            if c["status"] == "excluded" or not c["heat_power"]:
+                continue
+            rolling = 2.0 * c["entrainment_speed"] * c["rolling_resistance"]
+            worst = max(worst, abs(c["heat_power"] - rolling) / abs(c["heat_power"]))
+    split = dist.alpha_inner[dist.in_load_zone] - dist.alpha_outer[dist.in_load_zone]
+    split = float(np.max(np.abs(split))) if split.size else 0.0
+    if worst > 0.1 * ENERGY_BALANCE_RTOL or split == 0.0:
+        return head + ("the contact heat powers do not satisfy Q = 2 u_m F_P (contact "
+                       f"solver's heat form; up to {100 * worst:.2g} % off)")
+    return head + ("every contact's heat power satisfies Q = 2 u_m F_P, but the inner and "
+                   f"outer contact angles of the balls differ by up to "
+                   f"{math.degrees(split):.3g} deg (centrifugal force) and the element "
+                   "torque's moment arms hold for equal angles (ball spin and gyroscopic "
+                   "motion are not modelled): the friction torque is uncertain by about "
+                   "this difference")
+
+
 def solve_bearing(bearing: Bearing, *,
                   progress: Callable[[int, int, str], None] | None = None,
                   blas_threads: int | None = 1) -> BearingResult:
@@ -370,9 +399,7 @@ def solve_bearing(bearing: Bearing, *,
                         + f" (finer contact grids: [mesh] {_nodes_key(bearing)})")
     eb = totals["energy_balance"]["relative_difference"]
     if eb is not None and abs(eb) > ENERGY_BALANCE_RTOL:
-        warnings.append(f"friction torque x omega differs from the contacts' heat power by "
-                        f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
-                        "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
+        warnings.append(_energy_balance_warning(eb, elements, dist))
     warnings.extend(_contact_warnings(bearing, specs, results,
                                       drop_missing_estimate=bool(unknown)))
     n_solved = len(results)
