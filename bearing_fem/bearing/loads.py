@@ -142,7 +142,8 @@ def element_azimuths(bearing: Bearing) -> tuple[np.ndarray, np.ndarray]:
 
 def centrifugal_force(bearing: Bearing) -> float:
     """F_c = m (d_m/2) omega_c^2 [N] of one element orbiting at the pure-rolling cage speed
-    omega_c = omega_i (1 - gamma)/2 at the nominal contact angle (0 unless
+    omega_c = omega_i (1 - gamma)/2 at the nominal contact angle ``bearing.contact_angle``
+    (0 for deep-groove balls, whose radially loaded balls run at 0 deg) (0 unless
     ``model.centrifugal``)."""
     if not bearing.model.centrifugal:
         return 0.0
@@ -153,7 +154,7 @@ def centrifugal_force(bearing: Bearing) -> float:
         mass = rho * math.pi * dw**3 / 6.0
     else:
         mass = rho * math.pi * dw**2 / 4.0 * g.effective_length
-    gamma = dw * math.cos(free_contact_angle(bearing)) / dm
+    gamma = dw * math.cos(math.radians(g.contact_angle)) / dm
     omega_c = bearing.operation.inner_speed * (1.0 - gamma) / 2.0
     return float(mass * 0.5 * dm * omega_c**2)
 
