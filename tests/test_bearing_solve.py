@@ -187,6 +187,26 @@ def test_open_energy_balance_of_split_ball_angles_names_its_cause():
         in text[0] and "do not satisfy" not in text[0], text
 
 
+def test_angular_contact_bearing_drawn_back_below_its_nominal_angle_warns():
+    """Fa = 0 is refused ('it cannot carry a radial load without an axial reaction'), but
+    Fa = 10 N with Fr = 400 N was solved without a word with the 7010's balls at 1.4 deg
+    instead of 15 deg (a deep-groove bearing with clearance): the induced axial force of
+    the radial load, about 1.2 Fr tan(15 deg) = 130 N, exceeds the given axial load."""
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, radial_load=400.0, axial_load=10.0),
+                mesh=replace(b.mesh, point_nodes=(17, 17)))
+    r = solve_bearing(b)
+    assert r.distribution.axial_displacement < 0.0, "the ring is drawn back"
+    text = [w for w in r.warnings if "drawn back" in w]
+    assert len(text) == 1 and "operation.axial_load = 10 N" in text[0] and \
+        "run at 1.35 to 1.37 deg instead of 15 deg" in text[0] and "net axial load" in text[0], \
+        text
+    ok = replace(b, operation=replace(b.operation, radial_load=500.0, axial_load=2000.0))
+    from bearing_fem.bearing import distribute_loads
+    assert distribute_loads(ok).axial_displacement > 0.0, \
+        "the example's operating point is not drawn back (no warning)"
+
+
 def test_energy_balance_piezoviscous(r6209):
     """The acceptance: torque x omega = heat power within 0.1% for the 6209 example (the
     contact solver reports the conservative Poiseuille heat u_m int h dp/dx)."""

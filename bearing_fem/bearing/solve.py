@@ -280,6 +280,23 @@ class BearingResult:
         return json_safe(out)
 
 
+def _drawn_back_warning(bearing: Bearing, dist: LoadDistribution) -> str:
+    """The warning of a single angular-contact ball bearing whose axial load is below the
+    axial force its radial load induces: the inner ring is drawn back from the nominal
+    contact position and the balls run below the nominal contact angle, towards the
+    deep-groove state of a radial load alone (refused at 0 N)."""
+    op, g = bearing.operation, bearing.geometry
+    a = np.degrees(dist.alpha_inner[dist.in_load_zone])
+    return (f"operation.axial_load = {float(op.axial_load):g} N is below the axial force "
+            f"that operation.radial_load = {float(op.radial_load):g} N induces at the "
+            f"nominal contact angle: the inner ring is drawn back "
+            f"{-1e3 * dist.axial_displacement:.3g} mm from the nominal contact position and "
+            f"the loaded balls run at {float(a.min()):.3g} to {float(a.max()):.3g} deg "
+            f"instead of {g.contact_angle:g} deg, as in a deep-groove bearing with "
+            "clearance; a single angular-contact bearing is mounted against an opposed one: "
+            "give its net axial load, the external load plus the opposed bearing's reaction")
+
+
 def _energy_balance_warning(difference: float, elements: list[dict[str, Any]],
                             dist: LoadDistribution) -> str:
     """The warning of an open energy balance (torque x omega vs the contacts' heat), naming
@@ -354,6 +371,8 @@ def solve_bearing(bearing: Bearing, *,
             f"{float(op.axial_load)!r} N displace the rings so far that element {j}'s contact "
             f"angle is {math.degrees(float(dist.alpha_inner[j])):.4g} deg (>= 90 deg): no "
             "rolling bearing carries that load; check the loads' unit (N)")
+    if g.type == "angular-contact-ball" and dist.axial_displacement < 0.0:
+        warnings.append(_drawn_back_warning(bearing, dist))
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
                              dist.alpha_inner, dist.alpha_outer)
     specs = contact_specs(bearing, dist, kin)
