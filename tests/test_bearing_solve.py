@@ -207,6 +207,26 @@ def test_angular_contact_bearing_drawn_back_below_its_nominal_angle_warns():
         "the example's operating point is not drawn back (no warning)"
 
 
+def test_unmodelled_large_centrifugal_force_warns():
+    """model.centrifugal is off by default; a 7010 at 20000 rpm under Fa = 2 kN (balls'
+    F_c = 73.8 N, 24.4 % of the ball load 302 N) was solved without a word, its outer
+    contacts short of that load and its contact angles unsplit (docs/bearing.md 8.4:
+    22/17 deg with the force)."""
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, inner_rpm=20000.0, radial_load=0.0),
+                mesh=replace(b.mesh, point_nodes=(17, 17)))
+    r = solve_bearing(b)
+    text = [w for w in r.warnings if "model.centrifugal is off" in w]
+    assert len(text) == 1 and "= 73.84 N is 24.4 % of the largest element load 302.1 N" \
+        in text[0] and "contact angles would split; set model.centrifugal = true" in text[0], \
+        text
+    on = solve_bearing(replace(b, model=replace(b.model, centrifugal=True)))
+    assert not [w for w in on.warnings if "centrifugal" in w], on.warnings
+    slow = replace(b, operation=replace(b.operation, inner_rpm=10000.0))
+    assert not [w for w in solve_bearing(slow).warnings if "centrifugal" in w], \
+        "the shipped example's 10000 rpm: F_c = 18.5 N, 5.2 % (no warning)"
+
+
 def test_energy_balance_piezoviscous(r6209):
     """The acceptance: torque x omega = heat power within 0.1% for the 6209 example (the
     contact solver reports the conservative Poiseuille heat u_m int h dp/dx)."""

@@ -140,12 +140,24 @@ def element_azimuths(bearing: Bearing) -> tuple[np.ndarray, np.ndarray]:
     return np.tile(psi, g.rows), np.repeat(np.arange(g.rows), z)
 
 
-def centrifugal_force(bearing: Bearing) -> float:
+def centrifugal_force(bearing: Bearing, *, modelled: bool = True) -> float:
     """F_c = m (d_m/2) omega_c^2 [N] of one element orbiting at the pure-rolling cage speed
     omega_c = omega_i (1 - gamma)/2 at the nominal contact angle ``bearing.contact_angle``
-    (0 for deep-groove balls, whose radially loaded balls run at 0 deg) (0 unless
-    ``model.centrifugal``)."""
-    if not bearing.model.centrifugal:
+    (0 for deep-groove balls, whose radially loaded balls run at 0 deg).
+
+    Parameters
+    ----------
+    bearing : Bearing
+    modelled : bool
+        True: the force of the load distribution, 0 unless ``model.centrifugal``; False:
+        the force the elements have whether or not it is modelled.
+
+    Returns
+    -------
+    float
+        [N].
+    """
+    if modelled and not bearing.model.centrifugal:
         return 0.0
     g = bearing.geometry
     dw, dm = g.element_diameter, g.mean_diameter

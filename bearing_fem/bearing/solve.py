@@ -31,7 +31,7 @@ from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing, input_warnings, kelvin_like_temperatures
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
-from .loads import LoadDistribution, distribute_loads, row_axial_force
+from .loads import LoadDistribution, centrifugal_force, distribute_loads, row_axial_force
 from .totals import bearing_totals, contact_summary, slice_label
 
 __all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
@@ -40,6 +40,9 @@ log = logging.getLogger(__name__)
 
 #: Relative tolerance of the reported energy balance check (torque x omega vs heat).
 ENERGY_BALANCE_RTOL = 1e-3
+#: With ``model.centrifugal`` off, the bearing's warnings name an element centrifugal force
+#: above this fraction of the largest element load (the outer contacts' extra load).
+CENTRIFUGAL_WARNING_FRACTION = 0.1
 
 #: Units of the dimensional keys of :meth:`BearingResult.summary`.
 BEARING_UNITS = {
@@ -371,6 +374,21 @@ def solve_bearing(bearing: Bearing, *,
             f"{float(op.axial_load)!r} N displace the rings so far that element {j}'s contact "
             f"angle is {math.degrees(float(dist.alpha_inner[j])):.4g} deg (>= 90 deg): no "
             "rolling bearing carries that load; check the loads' unit (N)")
+    if not bearing.model.centrifugal:
+        fc = centrifugal_force(bearing, modelled=False)
+        if fc > CENTRIFUGAL_WARNING_FRACTION * dist.max_load:
+            warnings.append(
+                f"model.centrifugal is off, but at operation.inner_rpm = "
+                f"{float(op.inner_rpm):g} 1/min each element's centrifugal force "
+                f"m (d_m/2) omega_c^2 = {fc:.4g} N is {100 * fc / dist.max_load:.3g} % of the "
+                f"largest element load {dist.max_load:.4g} N (above "
+                f"{100 * CENTRIFUGAL_WARNING_FRACTION:g} %): the outer contacts would carry "
+                "up to F_c more than the inner ones"
+                + (" and the balls' contact angles would split" if g.is_ball
+                   and op.axial_load > 0.0 else "")
+                + ("; model.centrifugal is not modelled for profiled rollers"
+                   if not g.is_ball and g.profile != "straight"
+                   else "; set model.centrifugal = true"))
     if g.type == "angular-contact-ball" and dist.axial_displacement < 0.0:
         warnings.append(_drawn_back_warning(bearing, dist))
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
