@@ -181,6 +181,39 @@ def test_deep_groove_centrifugal_force_at_the_cage_speed_of_its_radially_loaded_
                                err_msg="the balls' own orbital speed")
 
 
+@pytest.mark.parametrize("rpm, fa", [(30000.0, 50.0), (30000.0, 200.0), (20000.0, 5.0)])
+def test_light_axial_load_at_high_speed_balances_with_centrifugal_force(rpm, fa):
+    """A 7010 under a light axial load at high speed: the ball equilibrium's Newton
+    stalled for a small inner load against a large F_c, the ball was taken for one without
+    inner contact, and Brent settled on the jump: axial sums of 0 N for Fa = 50 N at
+    30000 rpm and 5 N at 20000 rpm, 206.8 N for 200 N, without an error."""
+    b = load_example("7010-steel")
+    b = replace(b, model=replace(b.model, centrifugal=True),
+                operation=replace(b.operation, inner_rpm=rpm, axial_load=fa, radial_load=0.0))
+    d = distribute_loads(b)
+    np.testing.assert_allclose(d.axial_sum, fa, rtol=1e-9, err_msg="axial balance")
+    assert np.all(d.load_inner > 0.0), "every ball keeps its inner contact"
+    np.testing.assert_allclose(d.load_outer * np.cos(d.alpha_outer),
+                               d.load_inner * np.cos(d.alpha_inner) + d.centrifugal_force,
+                               rtol=1e-7, err_msg="ball radial equilibrium with F_c")
+
+
+def test_a_jump_of_the_element_loads_is_no_balance(monkeypatch):
+    """Brent brackets the sign change of a jump as well as a root: the loads it returns
+    are checked against the applied ones (RuntimeError, reported as
+    load_distribution_failed), not passed on unbalanced."""
+    from bearing_fem.bearing import loads as loads_module
+
+    def jumpy(self, dr, za):  # the axial sum jumps from 0 to 10 kN at z_a = 0.1 mm
+        return 0.0, (1e4 if za > 1e-4 else 0.0)
+
+    monkeypatch.setattr(loads_module._BallModel, "sums", jumpy)
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, radial_load=0.0))
+    with pytest.raises(RuntimeError, match="axial force of .* instead of 2000 N"):
+        distribute_loads(b)
+
+
 def test_sliced_roller_profile():
     b = _roller(28, 0.0, profile="crowned", crown_drop=15e-6, slices=11)
     d = distribute_loads(b)

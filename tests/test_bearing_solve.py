@@ -227,6 +227,21 @@ def test_unmodelled_large_centrifugal_force_warns():
         "the shipped example's 10000 rpm: F_c = 18.5 N, 5.2 % (no warning)"
 
 
+def test_inner_contact_angle_beyond_90_deg_from_centrifugal_force_names_it():
+    """A 60 deg ball bearing at 30000 rpm under Fa = 50 N: F_c = 191 N pushes the balls
+    out until the inner contact angle is 106 deg; the refusal blamed the loads ('no
+    rolling bearing carries that load; check the loads' unit') and now names the
+    centrifugal force."""
+    b = load_example("7010-steel")
+    b = replace(b, geometry=replace(b.geometry, contact_angle=60.0),
+                model=replace(b.model, centrifugal=True),
+                operation=replace(b.operation, inner_rpm=30000.0, axial_load=50.0,
+                                  radial_load=0.0))
+    with pytest.raises(SceneError, match=r"model\.centrifugal: .* centrifugal force 190\.9 N "
+                                         r".* contact angle is 105\.8 deg \(>= 90 deg\)"):
+        solve_bearing(b)
+
+
 def test_energy_balance_piezoviscous(r6209):
     """The acceptance: torque x omega = heat power within 0.1% for the 6209 example (the
     contact solver reports the conservative Poiseuille heat u_m int h dp/dx)."""

@@ -286,8 +286,8 @@ class BearingResult:
 def _drawn_back_warning(bearing: Bearing, dist: LoadDistribution) -> str:
     """The warning of a single angular-contact ball bearing whose axial load is below the
     axial force its radial load induces: the inner ring is drawn back from the nominal
-    contact position and the balls run below the nominal contact angle, towards the
-    deep-groove state of a radial load alone (refused at 0 N)."""
+    contact position and every loaded ball runs below the nominal contact angle, towards
+    the deep-groove state of a radial load alone (refused at 0 N)."""
     op, g = bearing.operation, bearing.geometry
     a = np.degrees(dist.alpha_inner[dist.in_load_zone])
     return (f"operation.axial_load = {float(op.axial_load):g} N is below the axial force "
@@ -369,10 +369,20 @@ def solve_bearing(bearing: Bearing, *,
                              >= 0.5 * math.pi)
     if flipped.size:
         j = int(flipped[0])
+        angle = max(abs(float(dist.alpha_inner[j])), abs(float(dist.alpha_outer[j])))
+        if dist.centrifugal_force > 0.0:
+            raise SceneError(
+                f"model.centrifugal: at operation.inner_rpm = {float(op.inner_rpm)!r} 1/min "
+                f"the elements' centrifugal force {dist.centrifugal_force:.4g} N pushes them "
+                f"out so far, against operation.radial_load = {float(op.radial_load)!r} N and "
+                f"operation.axial_load = {float(op.axial_load)!r} N, that element {j}'s "
+                f"contact angle is {math.degrees(angle):.4g} deg (>= 90 deg): the inner "
+                "contact runs off its raceway; give a larger axial load (preload) or a "
+                "lower speed")
         raise SceneError(
             f"operation.radial_load = {float(op.radial_load)!r} N and operation.axial_load = "
             f"{float(op.axial_load)!r} N displace the rings so far that element {j}'s contact "
-            f"angle is {math.degrees(float(dist.alpha_inner[j])):.4g} deg (>= 90 deg): no "
+            f"angle is {math.degrees(angle):.4g} deg (>= 90 deg): no "
             "rolling bearing carries that load; check the loads' unit (N)")
     if not bearing.model.centrifugal:
         fc = centrifugal_force(bearing, modelled=False)
@@ -389,7 +399,9 @@ def solve_bearing(bearing: Bearing, *,
                 + ("; model.centrifugal is not modelled for profiled rollers"
                    if not g.is_ball and g.profile != "straight"
                    else "; set model.centrifugal = true"))
-    if g.type == "angular-contact-ball" and dist.axial_displacement < 0.0:
+    if (g.type == "angular-contact-ball" and op.radial_load > 0.0
+            and np.any(dist.in_load_zone) and dist.axial_displacement < 0.0
+            and np.max(dist.alpha_inner[dist.in_load_zone]) < math.radians(g.contact_angle)):
         warnings.append(_drawn_back_warning(bearing, dist))
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
                              dist.alpha_inner, dist.alpha_outer)
