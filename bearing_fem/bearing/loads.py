@@ -273,8 +273,8 @@ class _BallModel:
         out of reach of the inner groove has lost its inner contact; every other ball is
         solved from the line of the groove centres, and where that Newton stalls (a small
         inner load against a large F_c) from the bottom of the outer groove. A ball that
-        converges from neither raises RuntimeError (it used to be taken for a ball without
-        inner contact, and the ring's load balance jumped).
+        converges from neither raises RuntimeError (taking it for a ball without inner
+        contact would make the ring's load balance jump).
         """
         fc, lo, li = self.fc, self.lo, self.li
         s = np.hypot(za, rad)
