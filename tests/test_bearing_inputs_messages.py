@@ -12,7 +12,7 @@ import pytest
 
 from bearing_fem import cli, io
 from bearing_fem.bearing import Bearing, load_example, solve_bearing
-from bearing_fem.bearing.description import input_warnings
+from bearing_fem.bearing.description import input_warnings, iso76_static_load_rating
 from bearing_fem.bearing.contacts import contact_specs
 from bearing_fem.bearing.empirical import empirical_models
 from bearing_fem.bearing.kinematics import element_kinematics
@@ -516,3 +516,29 @@ def test_load_above_the_largest_contact_load_is_refused_naming_it(name, key):
     data["operation"][key] = 1e20
     with pytest.raises(SceneError, match=rf"operation\.{key} = 1e\+20 N exceeds 1e\+12 N"):
         Bearing.from_dict(data)
+
+
+@pytest.mark.parametrize("name, c0", [("6209", 21.6), ("30205", 33.5), ("nncf5040", 3900.0)])
+def test_static_load_rating_in_kn_is_refused_against_the_iso76_rating(name, c0):
+    """A catalogue C0 written in kN (21.6 for the 6209's 21600 N) lay inside [10, 1e9] N
+    and was accepted: Palmgren's f1 = z (P0/C0)^y then put the 6209's torque at 2.41 N m
+    instead of 0.161 N m, with no warning."""
+    data = _example(name)
+    data["bearing"]["static_load_rating"] = c0
+    with pytest.raises(SceneError, match=r"bearing\.static_load_rating = .* N is below 1% "
+                                         r"of the static load rating .* ISO 76.* kN is "):
+        Bearing.from_dict(data)
+
+
+@pytest.mark.parametrize("name, c0", [("6209", 21600.0), ("7010-steel", 16000.0),
+                                      ("30205", 33500.0), ("nncf5040", 3.9e6)])
+def test_static_load_ratings_in_n_are_accepted(name, c0):
+    """Ratings of the examples' sizes in N (the 6209 file's catalogue 21600 N, the others
+    of their catalogue sizes' order) lie within 30% of the ISO 76 estimate and pass
+    (6209: 21600 N against 17400 N)."""
+    data = _example(name)
+    data["bearing"]["static_load_rating"] = c0
+    geometry = Bearing.from_dict(data).geometry
+    assert geometry.static_load_rating == c0
+    ratio = c0 / iso76_static_load_rating(geometry)
+    assert 0.7 < ratio < 1.3, f"{name}: C0/ISO 76 = {ratio} (a C0 in N is of its order)"

@@ -10,7 +10,8 @@ import pytest
 from bearing_fem import analytic
 from bearing_fem.bearing import Bearing, distribute_loads, load_example
 from bearing_fem.bearing.geometry import groove_centre_distance, roller_compliance
-from bearing_fem.bearing.loads import profile_drop, series_ball_stiffness
+from bearing_fem.bearing.kinematics import element_kinematics
+from bearing_fem.bearing.loads import centrifugal_force, profile_drop, series_ball_stiffness
 
 
 def _ball(z: int = 9, clearance: float = 0.0, psi0: float = 0.0, **op) -> Bearing:
@@ -144,6 +145,73 @@ def test_centrifugal_force_loads_outer_contacts():
                                    err_msg="ball radial equilibrium with F_c")
     np.testing.assert_allclose([db.radial_sum, db.axial_sum], [4000.0, 1000.0], rtol=1e-9,
                                err_msg="ring equilibrium")
+
+
+def test_tapered_centrifugal_force_is_reported_whole_and_loads_the_cup_normally():
+    """load_distribution.centrifugal_force of a tapered bearing was the cup's normal
+    component F_c cos(beta) (0.892 N for the 30205 at 3000 rpm) under the name of the
+    element's centrifugal force F_c = m (d_m/2) omega_c^2 (0.919 N)."""
+    b = load_example("30205")
+    b = replace(b, model=replace(b.model, centrifugal=True))
+    d = distribute_loads(b)
+    fc = centrifugal_force(b)
+    np.testing.assert_allclose(d.centrifugal_force, fc, rtol=1e-14,
+                               err_msg="the element's whole centrifugal force")
+    beta = math.radians(b.geometry.contact_angle)
+    np.testing.assert_allclose(d.load_outer - d.load_inner, fc * math.cos(beta), rtol=1e-9,
+                               err_msg="the cup carries its normal component")
+
+
+def test_deep_groove_centrifugal_force_at_the_cage_speed_of_its_radially_loaded_balls():
+    """docs/bearing.md 2.1: F_c at the cage speed of the nominal angle. A deep-groove
+    bearing's F_c took the free contact angle of its clearance (9.9 deg for the 6209) and
+    was 0.72 % above m (d_m/2) omega_c^2 of its balls, which run at 0 deg under a radial
+    load (195.7 N instead of 194.3 N at 20000 rpm)."""
+    b = load_example("6209")
+    b = replace(b, model=replace(b.model, centrifugal=True),
+                operation=replace(b.operation, inner_rpm=20000.0))
+    d = distribute_loads(b)
+    assert np.all(d.alpha_inner == 0.0) and np.all(d.alpha_outer == 0.0), "radial load"
+    g = b.geometry
+    kin = element_kinematics(b.operation.inner_speed, g.mean_diameter, g.element_diameter,
+                             d.alpha_inner, d.alpha_outer)
+    mass = b.materials.density * math.pi * g.element_diameter**3 / 6.0
+    np.testing.assert_allclose(d.centrifugal_force,
+                               mass * 0.5 * g.mean_diameter * kin.cage_speed**2, rtol=1e-12,
+                               err_msg="the balls' own orbital speed")
+
+
+@pytest.mark.parametrize("rpm, fa", [(30000.0, 50.0), (30000.0, 200.0), (20000.0, 5.0)])
+def test_light_axial_load_at_high_speed_balances_with_centrifugal_force(rpm, fa):
+    """A 7010 under a light axial load at high speed: the ball equilibrium's Newton
+    stalled for a small inner load against a large F_c, the ball was taken for one without
+    inner contact, and Brent settled on the jump: axial sums of 0 N for Fa = 50 N at
+    30000 rpm and 5 N at 20000 rpm, 206.8 N for 200 N, without an error."""
+    b = load_example("7010-steel")
+    b = replace(b, model=replace(b.model, centrifugal=True),
+                operation=replace(b.operation, inner_rpm=rpm, axial_load=fa, radial_load=0.0))
+    d = distribute_loads(b)
+    np.testing.assert_allclose(d.axial_sum, fa, rtol=1e-9, err_msg="axial balance")
+    assert np.all(d.load_inner > 0.0), "every ball keeps its inner contact"
+    np.testing.assert_allclose(d.load_outer * np.cos(d.alpha_outer),
+                               d.load_inner * np.cos(d.alpha_inner) + d.centrifugal_force,
+                               rtol=1e-7, err_msg="ball radial equilibrium with F_c")
+
+
+def test_a_jump_of_the_element_loads_is_no_balance(monkeypatch):
+    """Brent brackets the sign change of a jump as well as a root: the loads it returns
+    are checked against the applied ones (RuntimeError, reported as
+    load_distribution_failed), not passed on unbalanced."""
+    from bearing_fem.bearing import loads as loads_module
+
+    def jumpy(self, dr, za):  # the axial sum jumps from 0 to 10 kN at z_a = 0.1 mm
+        return 0.0, (1e4 if za > 1e-4 else 0.0)
+
+    monkeypatch.setattr(loads_module._BallModel, "sums", jumpy)
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, radial_load=0.0))
+    with pytest.raises(RuntimeError, match="axial force of .* instead of 2000 N"):
+        distribute_loads(b)
 
 
 def test_sliced_roller_profile():

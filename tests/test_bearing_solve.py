@@ -71,6 +71,56 @@ def test_6209_summary_contract(r6209):
             assert e["inner"]["status"] == "excluded" and "no load" in e["inner"]["message"]
 
 
+def _unitless_numbers(summary: dict, units: dict) -> list[str]:
+    """Paths of the numbers of a bearing summary that ``units`` gives no unit for (the
+    patterns of BEARING_UNITS: ``elements.inner/outer.key``, ``empirical.*.key``,
+    ``film_formulas.inner/outer.*.key``, ``elements.inner/outer.error_estimate.*``)."""
+    missing = []
+
+    def walk(obj, path):
+        if isinstance(obj, dict):
+            for k, v in obj.items():
+                if not path and k in ("bearing", "units", "version"):
+                    continue
+                walk(v, path + [k])
+        elif isinstance(obj, list):
+            for v in obj:
+                walk(v, path)
+        elif isinstance(obj, (int, float)) and not isinstance(obj, bool):
+            cands = {".".join(path)}
+            if path[0] == "elements" and len(path) > 2 and path[1] in ("inner", "outer"):
+                cands.add("elements.inner/outer." + ".".join(path[2:]))
+                if path[2] == "error_estimate":
+                    cands.add("elements.inner/outer.error_estimate.*")
+            if path[0] == "empirical" and len(path) > 2:
+                cands.add("empirical.*." + ".".join(path[2:]))
+            if path[0] == "film_formulas" and len(path) == 4:
+                cands.add("film_formulas.inner/outer.*." + path[3])
+            if not cands & set(units):
+                missing.append(".".join(path))
+
+    walk(summary, [])
+    return sorted(set(missing))
+
+
+def test_every_number_of_the_bearing_summary_has_a_unit(r6209):
+    """docs/bearing.md: ``units`` gives the unit of every number, also inside the tables.
+    It named 53 keys; 66 number paths of the 6209 summary had none: the approach, the
+    contacts' loads, h_central, rx, ry, friction and sliding forces, the empirical torque
+    parts and parameters, the film formulas, the counts."""
+    from bearing_fem.bearing.empirical import empirical_models
+
+    s = r6209.summary()
+    units = s["units"]
+    assert _unitless_numbers(s, units) == []
+    roller = solve_bearing(small_roller(bearing={"profile": "crowned", "crown_drop": 4e-6,
+                                                 "slices": 3}, mesh={"line_nodes": 101}))
+    assert _unitless_numbers(roller.summary(), units) == [], "a sliced roller bearing"
+    for name in ("7010-steel", "nncf5040"):
+        emp = {"empirical": empirical_models(load_example(name), 15.0)}
+        assert _unitless_numbers(emp, units) == [], f"{name}: Nikitin, Palmgren bore form"
+
+
 def test_6209_films_against_nijenbanning(r6209):
     """Most loaded contacts within 10% of Nijenbanning-Venner-Moes (81^2 grid here; the
     default 129^2 grid gives 0.5%, see the benchmark)."""
@@ -109,6 +159,87 @@ def test_energy_balance_isoviscous():
     eb = r.totals["energy_balance"]
     assert abs(eb["relative_difference"]) < 1e-3, \
         f"energy balance {eb}: torque from forces vs dissipated heat"
+
+
+def test_open_energy_balance_of_split_ball_angles_names_its_cause():
+    """With centrifugal force the angular-contact balls' contact angles split (26.8 / 6.6
+    deg at 30000 rpm, Fa = 500 N) and torque x omega exceeds the contacts' heat by 0.16 %;
+    the warning blamed the contacts ('the contact heat powers do not satisfy
+    Q = 2 u_m F_P'), which satisfy it to rounding: the moment arms of the element torque
+    are those of equal angles (docs/bearing.md 5.2)."""
+    b = load_example("7010-steel")
+    b = replace(b, model=replace(b.model, centrifugal=True),
+                operation=replace(b.operation, inner_rpm=30000.0, axial_load=500.0,
+                                  radial_load=0.0),
+                mesh=replace(b.mesh, point_nodes=(17, 17)))
+    r = solve_bearing(b)
+    assert r.success, r.message
+    for e in r.elements:
+        for race in ("inner", "outer"):
+            c = e[race]
+            np.testing.assert_allclose(c["heat_power"], 2.0 * c["entrainment_speed"]
+                                       * c["rolling_resistance"], rtol=1e-10,
+                                       err_msg="each contact's heat is 2 u_m F_P")
+    eb = r.totals["energy_balance"]["relative_difference"]
+    assert eb > 1e-3, f"the split angles open the balance ({eb})"
+    text = [w for w in r.warnings if "friction torque x omega" in w]
+    assert len(text) == 1 and "contact angles of the balls differ by up to 20.2 deg" \
+        in text[0] and "do not satisfy" not in text[0], text
+
+
+def test_angular_contact_bearing_drawn_back_below_its_nominal_angle_warns():
+    """Fa = 0 is refused ('it cannot carry a radial load without an axial reaction'), but
+    Fa = 10 N with Fr = 400 N was solved without a word with the 7010's balls at 1.4 deg
+    instead of 15 deg (a deep-groove bearing with clearance): the induced axial force of
+    the radial load, about 1.2 Fr tan(15 deg) = 130 N, exceeds the given axial load."""
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, radial_load=400.0, axial_load=10.0),
+                mesh=replace(b.mesh, point_nodes=(17, 17)))
+    r = solve_bearing(b)
+    assert r.distribution.axial_displacement < 0.0, "the ring is drawn back"
+    text = [w for w in r.warnings if "drawn back" in w]
+    assert len(text) == 1 and "operation.axial_load = 10 N" in text[0] and \
+        "run at 1.35 to 1.37 deg instead of 15 deg" in text[0] and "net axial load" in text[0], \
+        text
+    ok = replace(b, operation=replace(b.operation, radial_load=500.0, axial_load=2000.0))
+    from bearing_fem.bearing import distribute_loads
+    assert distribute_loads(ok).axial_displacement > 0.0, \
+        "the example's operating point is not drawn back (no warning)"
+
+
+def test_unmodelled_large_centrifugal_force_warns():
+    """model.centrifugal is off by default; a 7010 at 20000 rpm under Fa = 2 kN (balls'
+    F_c = 73.8 N, 24.4 % of the ball load 302 N) was solved without a word, its outer
+    contacts short of that load and its contact angles unsplit (docs/bearing.md 8.4:
+    22/17 deg with the force)."""
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, inner_rpm=20000.0, radial_load=0.0),
+                mesh=replace(b.mesh, point_nodes=(17, 17)))
+    r = solve_bearing(b)
+    text = [w for w in r.warnings if "model.centrifugal is off" in w]
+    assert len(text) == 1 and "= 73.84 N is 24.4 % of the largest element load 302.1 N" \
+        in text[0] and "contact angles would split; set model.centrifugal = true" in text[0], \
+        text
+    on = solve_bearing(replace(b, model=replace(b.model, centrifugal=True)))
+    assert not [w for w in on.warnings if "centrifugal" in w], on.warnings
+    slow = replace(b, operation=replace(b.operation, inner_rpm=10000.0))
+    assert not [w for w in solve_bearing(slow).warnings if "centrifugal" in w], \
+        "the shipped example's 10000 rpm: F_c = 18.5 N, 5.2 % (no warning)"
+
+
+def test_inner_contact_angle_beyond_90_deg_from_centrifugal_force_names_it():
+    """A 60 deg ball bearing at 30000 rpm under Fa = 50 N: F_c = 191 N pushes the balls
+    out until the inner contact angle is 106 deg; the refusal blamed the loads ('no
+    rolling bearing carries that load; check the loads' unit') and now names the
+    centrifugal force."""
+    b = load_example("7010-steel")
+    b = replace(b, geometry=replace(b.geometry, contact_angle=60.0),
+                model=replace(b.model, centrifugal=True),
+                operation=replace(b.operation, inner_rpm=30000.0, axial_load=50.0,
+                                  radial_load=0.0))
+    with pytest.raises(SceneError, match=r"model\.centrifugal: .* centrifugal force 190\.9 N "
+                                         r".* contact angle is 105\.8 deg \(>= 90 deg\)"):
+        solve_bearing(b)
 
 
 def test_energy_balance_piezoviscous(r6209):

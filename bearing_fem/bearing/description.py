@@ -29,7 +29,7 @@ from ..scene import (FORCE_RANGE, GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
            "BEARING_TYPES", "MATERIAL_PRESETS", "load_example", "example_names",
-           "input_warnings", "kelvin_like_temperatures"]
+           "input_warnings", "kelvin_like_temperatures", "iso76_static_load_rating"]
 
 #: Bearing types: radial deep-groove and angular-contact ball bearings (one row),
 #: cylindrical roller bearings (any number of rows) and tapered roller bearings
@@ -148,6 +148,15 @@ FIRST_ELEMENT_AZIMUTH_RANGE = (-360.0, 360.0)
 #: bearings (1e7..1e8 N); outside it Palmgren's f1 = z (P0/C0)^y overflows or the value is
 #: a unit slip.
 STATIC_LOAD_RATING_RANGE = (10.0, 1e9)
+#: ``bearing.static_load_rating`` below this fraction of the geometry's ISO 76 static load
+#: rating (:func:`iso76_static_load_rating`) is refused as a unit slip: a catalogue C0
+#: written in kN (21.6 for the 6209's 21600 N) is 1/1000 of it, while real ratings lie
+#: within a few tens of per cent of it.
+MIN_STATIC_LOAD_RATING_FRACTION = 0.01
+#: ISO 76 factor f0 of C0 = f0 i Z D_w^2 cos(alpha) for radial ball bearings, taken at the
+#: low end of its tabulated values (about 12 to 16 for deep groove and angular-contact
+#: bearings of usual proportions; the 6209's catalogue 21600 N gives 14.9).
+ISO76_BALL_FACTOR = 12.0
 
 #: ``materials.element_density`` range [kg/m^3]: polymer balls (about 900..1400) to
 #: tungsten carbide (15600); 7.85 is g/cm^3.
@@ -309,7 +318,8 @@ class Geometry:
         (:data:`FIRST_ELEMENT_AZIMUTH_RANGE`).
     static_load_rating : float or None
         C0 [N] (SKF model of a deep-groove bearing under axial load; Palmgren's f1), in
-        :data:`STATIC_LOAD_RATING_RANGE`.
+        :data:`STATIC_LOAD_RATING_RANGE` and at least
+        :data:`MIN_STATIC_LOAD_RATING_FRACTION` of :func:`iso76_static_load_rating`.
     """
 
     _section = "bearing"
@@ -383,6 +393,20 @@ class Geometry:
             self._check_ball()
         else:
             self._check_roller()
+        if self.static_load_rating is not None:
+            self._check_static_load_rating()
+
+    def _check_static_load_rating(self) -> None:
+        """C0 against the ISO 76 rating of the geometry: below
+        :data:`MIN_STATIC_LOAD_RATING_FRACTION` of it the value is a unit slip (kN)."""
+        c0 = float(self.static_load_rating)
+        iso = iso76_static_load_rating(self)
+        if c0 < MIN_STATIC_LOAD_RATING_FRACTION * iso:
+            raise SceneError(
+                f"bearing.static_load_rating = {c0!r} N is below "
+                f"{MIN_STATIC_LOAD_RATING_FRACTION:.0%} of the static load rating of this "
+                f"geometry, about {iso:.3g} N by ISO 76; C0 is in N, not kN "
+                f"({c0:g} kN is {c0 * 1e3:g} N)")
 
     def _contact_angle(self) -> float:
         """The nominal contact angle [deg]: required (and at least
@@ -1236,6 +1260,33 @@ def input_warnings(bearing: Bearing) -> list[str]:
                    "(docs/bearing.md 2.3); for a single row under a combined load give "
                    "operation.axial_load (N), the bearing's net axial load")
     return out
+
+
+def iso76_static_load_rating(geometry: Geometry) -> float:
+    """Basic static radial load rating C0 [N] of the geometry by ISO 76.
+
+    Ball bearings: C0 = f0 i Z D_w^2 cos(alpha) with f0 = :data:`ISO76_BALL_FACTOR`;
+    roller bearings: C0 = 44 (1 - D_w cos(alpha)/d_m) i Z l_we D_w cos(alpha)
+    (i rows, Z elements per row, lengths in mm, C0 in N). An order of magnitude for
+    checking ``bearing.static_load_rating``, not a rating.
+
+    Parameters
+    ----------
+    geometry : Geometry
+
+    Returns
+    -------
+    float
+        C0 [N].
+    """
+    g = geometry
+    cos_a = math.cos(math.radians(g.contact_angle or 0.0))
+    dw_mm = 1e3 * g.element_diameter
+    if g.is_ball:
+        return ISO76_BALL_FACTOR * g.rows * g.elements * dw_mm**2 * cos_a
+    gamma = g.element_diameter * cos_a / g.mean_diameter
+    return 44.0 * (1.0 - gamma) * g.rows * g.elements * 1e3 * g.effective_length \
+        * dw_mm * cos_a
 
 
 def single_row_min_axial_load(geometry: Geometry, radial_load: float) -> float:

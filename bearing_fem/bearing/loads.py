@@ -140,11 +140,24 @@ def element_azimuths(bearing: Bearing) -> tuple[np.ndarray, np.ndarray]:
     return np.tile(psi, g.rows), np.repeat(np.arange(g.rows), z)
 
 
-def centrifugal_force(bearing: Bearing) -> float:
+def centrifugal_force(bearing: Bearing, *, modelled: bool = True) -> float:
     """F_c = m (d_m/2) omega_c^2 [N] of one element orbiting at the pure-rolling cage speed
-    omega_c = omega_i (1 - gamma)/2 at the nominal contact angle (0 unless
-    ``model.centrifugal``)."""
-    if not bearing.model.centrifugal:
+    omega_c = omega_i (1 - gamma)/2 at the nominal contact angle ``bearing.contact_angle``
+    (0 for deep-groove balls, whose radially loaded balls run at 0 deg).
+
+    Parameters
+    ----------
+    bearing : Bearing
+    modelled : bool
+        True: the force of the load distribution, 0 unless ``model.centrifugal``; False:
+        the force the elements have whether or not it is modelled.
+
+    Returns
+    -------
+    float
+        [N].
+    """
+    if modelled and not bearing.model.centrifugal:
         return 0.0
     g = bearing.geometry
     dw, dm = g.element_diameter, g.mean_diameter
@@ -153,7 +166,7 @@ def centrifugal_force(bearing: Bearing) -> float:
         mass = rho * math.pi * dw**3 / 6.0
     else:
         mass = rho * math.pi * dw**2 / 4.0 * g.effective_length
-    gamma = dw * math.cos(free_contact_angle(bearing)) / dm
+    gamma = dw * math.cos(math.radians(g.contact_angle)) / dm
     omega_c = bearing.operation.inner_speed * (1.0 - gamma) / 2.0
     return float(mass * 0.5 * dm * omega_c**2)
 
@@ -203,6 +216,23 @@ def _bracket_root(fun, lo: float, hi: float, what: str) -> float:
     return brentq(fun, lo, hi, xtol=1e-22, rtol=BALANCE_RTOL * 1e-2, maxiter=500)
 
 
+#: Relative load imbalance above which a ring displacement is no solution: Brent
+#: brackets a sign change, and a jump of the element loads (an equilibrium that did not
+#: converge) is one too.
+BALANCE_CHECK_RTOL = 1e-6
+
+
+def _check_balance(sum_r: float, fr: float, sum_a: float, fa: float) -> None:
+    """RuntimeError when the element loads miss F_r or F_a by more than
+    :data:`BALANCE_CHECK_RTOL` of the larger load."""
+    scale = max(fr, fa)
+    for name, got, want in (("radial", sum_r, fr), ("axial", sum_a, fa)):
+        if abs(got - want) > BALANCE_CHECK_RTOL * scale:
+            raise RuntimeError(f"the element loads sum to a {name} force of {got:.6g} N "
+                               f"instead of {want:.6g} N (no ring displacement balances the "
+                               "loads)")
+
+
 # ---------------------------------------------------------------------------------------
 # ball bearings
 # ---------------------------------------------------------------------------------------
@@ -239,12 +269,17 @@ class _BallModel:
 
         Unknowns: ball centre (X1 axial, X2 radial) from the outer groove curvature centre.
         Residuals: Q_i sin a_i - Q_o sin a_o = 0 and Q_i cos a_i - Q_o cos a_o + F_c = 0.
+        A ball that F_c alone pushes to the bottom of the outer groove (a_o = 0, Q_o = F_c)
+        out of reach of the inner groove has lost its inner contact; every other ball is
+        solved from the line of the groove centres, and where that Newton stalls (a small
+        inner load against a large F_c) from the bottom of the outer groove. A ball that
+        converges from neither raises RuntimeError (taking it for a ball without inner
+        contact would make the ring's load balance jump).
         """
         fc, lo, li = self.fc, self.lo, self.li
         s = np.hypot(za, rad)
-        # start: the ball on the line of the groove centres, outer contact loaded by F_c
-        x1 = za / s * lo
-        x2 = rad / s * lo
+        do_fc = (fc / self.ko(0.0)) ** (2.0 / 3.0)   # outer approach under F_c alone
+        lost = np.hypot(za, rad - (lo + do_fc)) - li <= 0.0
 
         def forces(x1, x2):
             do = np.hypot(x1, x2) - lo
@@ -257,6 +292,39 @@ class _BallModel:
             r2 = qi * np.cos(ai) - qo * np.cos(ao) + fc
             return r1, r2, qi, qo, ai, ao, di, do
 
+        # starts: the ball on the line of the groove centres, outer contact unloaded; the
+        # ball at the bottom of the outer groove, outer contact loaded by F_c
+        starts = ((za / s * lo, rad / s * lo),
+                  (np.zeros_like(rad), np.full_like(rad, lo + do_fc)))
+        x1, x2 = starts[0]
+        done = lost.copy()
+        for y1, y2 in starts:
+            if np.all(done):
+                break
+            y1, y2, converged = self._newton(forces, y1, y2)
+            take = converged & ~done
+            x1, x2 = np.where(take, y1, x1), np.where(take, y2, x2)
+            done |= take
+        if not np.all(done):
+            j = int(np.flatnonzero(~done)[0])
+            raise RuntimeError(
+                f"the equilibrium of ball {j} under its centrifugal force F_c = {fc:.4g} N "
+                f"did not converge (axial offset of the grooves {za:.4g} m)")
+        r1, r2, qi, qo, ai, ao, di, do = forces(x1, x2)
+        if np.any(lost):
+            qi = np.where(lost, 0.0, qi)
+            qo = np.where(lost, fc, qo)
+            ao = np.where(lost, 0.0, ao)
+            ai = np.where(lost, np.arctan2(za, rad), ai)
+            di = np.where(lost, np.hypot(za, rad - (lo + do_fc)) - li, di)
+            do = np.where(lost, do_fc, do)
+        return {"qi": qi, "qo": qo, "ai": ai, "ao": ao, "delta": di + do}
+
+    def _newton(self, forces, x1: np.ndarray, x2: np.ndarray
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Newton iterations of the ball equilibrium from (x1, x2) [m]: the end point and
+        which balls converged (residual below 1e-8 (F_c + Q_o))."""
+        fc, lo = self.fc, self.lo
         scale = max(fc, 1e-3)
         h = 1e-9 * self.A
         for _ in range(100):
@@ -276,16 +344,9 @@ class _BallModel:
             fac = np.where(step > cap, cap / np.maximum(step, 1e-300), 1.0)
             x1 = x1 + fac * d1
             x2 = x2 + fac * d2
-        r1, r2, qi, qo, ai, ao, di, do = forces(x1, x2)
-        # a ball that has lost its inner contact rides on the outer race with Q_o = F_c
-        lost = di <= 0.0
-        if np.any(lost):
-            qi = np.where(lost, 0.0, qi)
-            qo = np.where(lost, fc, qo)
-            ao = np.where(lost, 0.0, ao)
-            ai = np.where(lost, np.arctan2(za, rad), ai)
-            do = np.where(lost, (fc / self.ko(0.0)) ** (2.0 / 3.0), do)
-        return {"qi": qi, "qo": qo, "ai": ai, "ao": ao, "delta": di + do}
+        r1, r2, qi, qo, *_ = forces(x1, x2)
+        converged = np.maximum(np.abs(r1), np.abs(r2)) <= 1e-8 * (fc + qo)
+        return x1, x2, converged
 
     def sums(self, dr: float, za: float) -> tuple[float, float]:
         st = self.state(dr, za)
@@ -324,6 +385,7 @@ def _ball_distribution(bearing: Bearing) -> LoadDistribution:
     dr = solve_dr(za)
     st = m.state(dr, za)
     sum_r, sum_a = m.sums(dr, za)
+    _check_balance(sum_r, fr, sum_a, fa)
     # continuous load-zone boundary: s(psi) = A  ->  r0 + dr cos psi = sqrt(A^2 - za^2)
     if za >= m.A:
         half = math.pi
@@ -408,6 +470,8 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
     half = _roller_load_zone(dr, da, cr, cb, sb, g.rows)
     qi, qo, delta, sl = loads(dr, da)
     radial_sum, axial_sum = row_sums(qi)
+    _check_balance(radial_sum, bearing.operation.radial_load,
+                   axial_sum if da != 0.0 else 0.0, fa)
     alpha = np.full(psi.shape, beta)
     k_n = (2.0 * c) ** (-1.0 / 0.9)
     return LoadDistribution(
@@ -416,7 +480,7 @@ def _roller_distribution(bearing: Bearing) -> LoadDistribution:
         radial_displacement=float(dr), axial_displacement=float(da), axial_offset=0.0,
         load_zone_half_angle=float(half),
         radial_sum=radial_sum, axial_sum=axial_sum if da != 0.0 else 0.0,
-        centrifugal_force=fc,
+        centrifugal_force=fc / cb,
         slice_positions=y, slice_widths=widths, slice_loads=sl,
         exponent=LOAD_EXPONENT_LINE, stiffness=float(k_n), clearance=cr)
 

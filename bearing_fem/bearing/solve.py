@@ -31,7 +31,7 @@ from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing, input_warnings, kelvin_like_temperatures
 from .empirical import empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
-from .loads import LoadDistribution, distribute_loads, row_axial_force
+from .loads import LoadDistribution, centrifugal_force, distribute_loads, row_axial_force
 from .totals import bearing_totals, contact_summary, slice_label
 
 __all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
@@ -40,6 +40,9 @@ log = logging.getLogger(__name__)
 
 #: Relative tolerance of the reported energy balance check (torque x omega vs heat).
 ENERGY_BALANCE_RTOL = 1e-3
+#: With ``model.centrifugal`` off, the bearing's warnings name an element centrifugal force
+#: above this fraction of the largest element load (the outer contacts' extra load).
+CENTRIFUGAL_WARNING_FRACTION = 0.1
 
 #: Units of the dimensional keys of :meth:`BearingResult.summary`.
 BEARING_UNITS = {
@@ -69,6 +72,42 @@ BEARING_UNITS = {
     "error_estimate.friction_torque": "1", "error_estimate.heat_power": "1",
     "error_estimate.h_min": "1", "error_estimate.p_max": "1",
     "elements.inner/outer.error_estimate.*": "1",
+    # the rest of the per-element and per-contact numbers (counts are "1")
+    "elements.index": "1", "elements.row": "1", "elements.approach": "m",
+    "elements.contact_angle_outer_deg": "deg",
+    "elements.inner/outer.load": "N", "elements.inner/outer.load_solved": "N",
+    "elements.inner/outer.contact_angle_deg": "deg",
+    "elements.inner/outer.slide_to_roll": "1", "elements.inner/outer.rx": "m",
+    "elements.inner/outer.ry": "m", "elements.inner/outer.h_central": "m",
+    "elements.inner/outer.h_central_formula": "m",
+    "elements.inner/outer.sliding_friction": "N",
+    "elements.inner/outer.friction_force": "N", "elements.inner/outer.film_parameter": "1",
+    "elements.inner/outer.heat_power_poiseuille_direct": "W",
+    "elements.inner/outer.heat_power_stabilisation": "W",
+    "elements.inner/outer.newton_iterations": "1", "elements.inner/outer.slices": "1",
+    "elements.inner/outer.wall_time_s": "s",
+    "h_min_location.element": "1", "p_max_location.element": "1",
+    "load_distribution.elements_loaded": "1", "contact_solves.scenes": "1",
+    "contact_solves.distinct_solved": "1", "contact_solves.reused": "1",
+    # the empirical models' parts and parameters
+    "empirical.*.torque_viscous": "N m", "empirical.*.torque_load": "N m",
+    "empirical.*.torque_rolling": "N m", "empirical.*.torque_sliding": "N m",
+    "empirical.*.torque_seal": "N m", "empirical.*.torque_drag": "N m",
+    "empirical.*.friction_heat_power": "W", "empirical.*.churning_heat_power": "W",
+    "empirical.*.friction_coefficient": "1",
+    "empirical.*.parameters.f0": "1", "empirical.*.parameters.f1": "1",
+    "empirical.*.parameters.f_pr": "1", "empirical.*.parameters.P1_N": "N",
+    "empirical.*.parameters.kinematic_viscosity_mm2_s": "mm^2/s",
+    "empirical.*.parameters.R1": "SKF catalogue units (d_m in mm, loads in N, N mm)",
+    "empirical.*.parameters.R2": "SKF catalogue units (d_m in mm, loads in N, N mm)",
+    "empirical.*.parameters.S1": "SKF catalogue units (d_m in mm, loads in N, N mm)",
+    "empirical.*.parameters.S2": "SKF catalogue units (d_m in mm, loads in N, N mm)",
+    "empirical.*.parameters.phi_ish": "1", "empirical.*.parameters.phi_rs": "1",
+    "empirical.*.parameters.mu_sl": "1", "empirical.*.parameters.flow_ratio": "1",
+    "empirical.*.parameters.Re": "1", "empirical.*.parameters.Pr": "1",
+    "empirical.*.parameters.Eu": "1", "empirical.*.parameters.cage_speed_m_s": "m/s",
+    "film_formulas.element": "1", "film_formulas.inner/outer.*.h_min": "m",
+    "film_formulas.inner/outer.*.h_central": "m",
 }
 
 
@@ -244,6 +283,52 @@ class BearingResult:
         return json_safe(out)
 
 
+def _drawn_back_warning(bearing: Bearing, dist: LoadDistribution) -> str:
+    """The warning of a single angular-contact ball bearing whose axial load is below the
+    axial force its radial load induces: the inner ring is drawn back from the nominal
+    contact position and every loaded ball runs below the nominal contact angle, towards
+    the deep-groove state of a radial load alone (refused at 0 N)."""
+    op, g = bearing.operation, bearing.geometry
+    a = np.degrees(dist.alpha_inner[dist.in_load_zone])
+    return (f"operation.axial_load = {float(op.axial_load):g} N is below the axial force "
+            f"that operation.radial_load = {float(op.radial_load):g} N induces at the "
+            f"nominal contact angle: the inner ring is drawn back "
+            f"{-1e3 * dist.axial_displacement:.3g} mm from the nominal contact position and "
+            f"the loaded balls run at {float(a.min()):.3g} to {float(a.max()):.3g} deg "
+            f"instead of {g.contact_angle:g} deg, as in a deep-groove bearing with "
+            "clearance; a single angular-contact bearing is mounted against an opposed one: "
+            "give its net axial load, the external load plus the opposed bearing's reaction")
+
+
+def _energy_balance_warning(difference: float, elements: list[dict[str, Any]],
+                            dist: LoadDistribution) -> str:
+    """The warning of an open energy balance (torque x omega vs the contacts' heat), naming
+    its cause: contacts whose heat power departs from Q = 2 u_m F_P, or, when every contact
+    satisfies it, the unequal inner and outer contact angles of the balls (centrifugal
+    force), for which the element torque's moment arms do not hold (docs/bearing.md 5.1)."""
+    head = (f"friction torque x omega differs from the contacts' heat power by "
+            f"{100 * difference:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): ")
+    worst = 0.0
+    for e in elements:
+        for race in ("inner", "outer"):
+            c = e[race]
+            if c["status"] == "excluded" or not c["heat_power"]:
+                continue
+            rolling = 2.0 * c["entrainment_speed"] * c["rolling_resistance"]
+            worst = max(worst, abs(c["heat_power"] - rolling) / abs(c["heat_power"]))
+    split = dist.alpha_inner[dist.in_load_zone] - dist.alpha_outer[dist.in_load_zone]
+    split = float(np.max(np.abs(split))) if split.size else 0.0
+    if worst > 0.1 * ENERGY_BALANCE_RTOL or split == 0.0:
+        return head + ("the contact heat powers do not satisfy Q = 2 u_m F_P (contact "
+                       f"solver's heat form; up to {100 * worst:.2g} % off)")
+    return head + ("every contact's heat power satisfies Q = 2 u_m F_P, but the inner and "
+                   f"outer contact angles of the balls differ by up to "
+                   f"{math.degrees(split):.3g} deg (centrifugal force) and the element "
+                   "torque's moment arms hold for equal angles (ball spin and gyroscopic "
+                   "motion are not modelled): the friction torque is uncertain by about "
+                   "this difference")
+
+
 def solve_bearing(bearing: Bearing, *,
                   progress: Callable[[int, int, str], None] | None = None,
                   blas_threads: int | None = 1) -> BearingResult:
@@ -284,11 +369,40 @@ def solve_bearing(bearing: Bearing, *,
                              >= 0.5 * math.pi)
     if flipped.size:
         j = int(flipped[0])
+        angle = max(abs(float(dist.alpha_inner[j])), abs(float(dist.alpha_outer[j])))
+        if dist.centrifugal_force > 0.0:
+            raise SceneError(
+                f"model.centrifugal: at operation.inner_rpm = {float(op.inner_rpm)!r} 1/min "
+                f"the elements' centrifugal force {dist.centrifugal_force:.4g} N pushes them "
+                f"out so far, against operation.radial_load = {float(op.radial_load)!r} N and "
+                f"operation.axial_load = {float(op.axial_load)!r} N, that element {j}'s "
+                f"contact angle is {math.degrees(angle):.4g} deg (>= 90 deg): the inner "
+                "contact runs off its raceway; give a larger axial load (preload) or a "
+                "lower speed")
         raise SceneError(
             f"operation.radial_load = {float(op.radial_load)!r} N and operation.axial_load = "
             f"{float(op.axial_load)!r} N displace the rings so far that element {j}'s contact "
-            f"angle is {math.degrees(float(dist.alpha_inner[j])):.4g} deg (>= 90 deg): no "
+            f"angle is {math.degrees(angle):.4g} deg (>= 90 deg): no "
             "rolling bearing carries that load; check the loads' unit (N)")
+    if not bearing.model.centrifugal:
+        fc = centrifugal_force(bearing, modelled=False)
+        if fc > CENTRIFUGAL_WARNING_FRACTION * dist.max_load:
+            warnings.append(
+                f"model.centrifugal is off, but at operation.inner_rpm = "
+                f"{float(op.inner_rpm):g} 1/min each element's centrifugal force "
+                f"m (d_m/2) omega_c^2 = {fc:.4g} N is {100 * fc / dist.max_load:.3g} % of the "
+                f"largest element load {dist.max_load:.4g} N (above "
+                f"{100 * CENTRIFUGAL_WARNING_FRACTION:g} %): the outer contacts would carry "
+                "up to F_c more than the inner ones"
+                + (" and the balls' contact angles would split" if g.is_ball
+                   and op.axial_load > 0.0 else "")
+                + ("; model.centrifugal is not modelled for profiled rollers"
+                   if not g.is_ball and g.profile != "straight"
+                   else "; set model.centrifugal = true"))
+    if (g.type == "angular-contact-ball" and op.radial_load > 0.0
+            and np.any(dist.in_load_zone) and dist.axial_displacement < 0.0
+            and np.max(dist.alpha_inner[dist.in_load_zone]) < math.radians(g.contact_angle)):
+        warnings.append(_drawn_back_warning(bearing, dist))
     kin = element_kinematics(op.inner_speed, g.mean_diameter, g.element_diameter,
                              dist.alpha_inner, dist.alpha_outer)
     specs = contact_specs(bearing, dist, kin)
@@ -334,9 +448,7 @@ def solve_bearing(bearing: Bearing, *,
                         + f" (finer contact grids: [mesh] {_nodes_key(bearing)})")
     eb = totals["energy_balance"]["relative_difference"]
     if eb is not None and abs(eb) > ENERGY_BALANCE_RTOL:
-        warnings.append(f"friction torque x omega differs from the contacts' heat power by "
-                        f"{100 * eb:+.2f} % (> {100 * ENERGY_BALANCE_RTOL:g} %): the contact "
-                        "heat powers do not satisfy Q = 2 u_m F_P (contact solver's heat form)")
+        warnings.append(_energy_balance_warning(eb, elements, dist))
     warnings.extend(_contact_warnings(bearing, specs, results,
                                       drop_missing_estimate=bool(unknown)))
     n_solved = len(results)
