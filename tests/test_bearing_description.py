@@ -382,3 +382,15 @@ def test_prokofiev_viscosity_outside_the_scenes_range_names_the_law(t_ref):
     with pytest.raises(SceneError, match=r"lubricant\.temperature_law = 'prokofiev' gives "
                                          r".* Pa s at operation\.oil_temperature = 40 deg C"):
         Bearing.from_dict(d)
+
+
+def test_oil_temperature_far_outside_the_piezo_table_warns():
+    """The NNCF 5040 table spans [30, 150] deg C: 40 deg C is inside, 10 deg C is more
+    than 10 K below it (ln alpha extrapolated) and is named with the alpha it gives."""
+    d = load_example("nncf5040").to_dict()
+    assert not any("piezo_temperatures" in w for w in input_warnings(Bearing.from_dict(d)))
+    d["operation"]["oil_temperature"] = 10.0
+    notes = [w for w in input_warnings(Bearing.from_dict(d)) if "piezo_temperatures" in w]
+    assert len(notes) == 1 and notes[0].startswith("operation.oil_temperature = 10 deg C "
+                                                   "lies outside the piezo_temperatures "
+                                                   "table [30, 150] deg C"), notes

@@ -71,6 +71,25 @@ def test_piezo_table_is_log_linear():
     assert coupling.contact_piezo(s, 20.0) > 1.6e-8, "extrapolates below the table"
 
 
+def test_far_extrapolation_of_the_piezo_table_is_warned():
+    """A table over [40, 41] deg C extrapolated to 60 deg C gives alpha = 2e-14 1/Pa
+    without a word before; within 10 K of the table nothing is said."""
+    th = Thermal(oil_temperature=60.0, exponent=2.93, piezo_temperatures=[40.0, 41.0],
+                 piezo_values=[2.0e-8, 1.2e-8])
+    note = coupling.piezo_table_warning(th, 60.0)
+    alpha = coupling.contact_piezo(_scene(piezo_temperatures=[40.0, 41.0],
+                                          piezo_values=[2.0e-8, 1.2e-8]), 60.0)
+    assert note is not None and "[40, 41] deg C" in note and f"{alpha:.3g} 1/Pa" in note, note
+    assert coupling.piezo_table_warning(th, 50.9) is None
+    assert coupling.piezo_table_warning(th, 29.0) is not None
+    assert coupling.piezo_table_warning(Thermal(oil_temperature=60.0, exponent=2.9), 500.0) \
+        is None, "no table, no warning"
+    r = coupling.solve_thermal(_scene(piezo_temperatures=[20.0, 30.0],
+                                      piezo_values=[2.2e-8, 2.0e-8]))
+    assert any("outside the piezo_temperatures table [20, 30]" in w for w in r.warnings), \
+        r.warnings
+
+
 # ------------------------------------------------------------------ flash temperature
 def test_jaeger_uniform_band_maximum():
     lam, rho, c, V, b, q = 46.0, 7850.0, 470.0, 3.0, 2e-4, 1e8

@@ -1232,6 +1232,9 @@ def input_warnings(bearing: Bearing) -> list[str]:
       own warning about a hot oil);
     * a profiled roller with fewer than :data:`MIN_RECOMMENDED_SLICES` slices: the error
       bars exclude the slicing error, which is then of several per cent;
+    * ``operation.oil_temperature`` more than
+      :data:`bearing_fem.contacts.coupling.PIEZO_TABLE_EXTRAPOLATION_K` outside the
+      ``piezo_temperatures`` table: alpha is extrapolated there;
     * a tapered roller bearing with an odd number of rows and no axial load: the model
       takes its rows in opposed pairs (docs/bearing.md 2.3), so a single row is treated as
       one row of such a pair, its induced axial force reacted by the opposed bearing.
@@ -1253,6 +1256,14 @@ def input_warnings(bearing: Bearing) -> list[str]:
                    "are the grid discretisation errors of each slice's contact and exclude "
                    "the slicing error along the roller, which with so few slices is several "
                    "per cent (docs/bearing.md, \"Slicing error\")")
+    lub = bearing.lubricant
+    if lub.temperature_law != "none":
+        from ..contacts.coupling import piezo_table_warning
+
+        note = piezo_table_warning(lub, bearing.operation.oil_temperature,
+                                   "operation.oil_temperature =")
+        if note is not None:
+            out.append(note)
     if g.type == "tapered-roller" and g.rows % 2 and bearing.operation.axial_load == 0.0:
         out.append(f"bearing.rows = {g.rows} for a tapered-roller bearing without axial load: "
                    "each row is taken as one row of an opposed pair (face-to-face or "

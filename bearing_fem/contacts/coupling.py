@@ -46,7 +46,8 @@ from ..scene import Scene
 from .driver import finish, solve_newton_model
 from .line import LineModel
 
-__all__ = ["solve_thermal", "contact_viscosity", "contact_piezo", "jaeger_surface_temperature",
+__all__ = ["solve_thermal", "contact_viscosity", "contact_piezo", "piezo_table_warning",
+           "jaeger_surface_temperature",
            "flash_temperature", "heated_half_length"]
 
 #: Share of the film's heat inside the band whose half-length enters the Peclet number
@@ -82,6 +83,50 @@ def contact_piezo(scene: Scene, temperature: float) -> float:
     i = int(np.clip(np.searchsorted(ts, t) - 1, 0, ts.size - 2))
     s = (la[i + 1] - la[i]) / (ts[i + 1] - ts[i])
     return float(np.exp(la[i] + s * (t - ts[i])))
+
+
+#: A temperature more than this [K] outside the range of a ``piezo_temperatures`` table
+#: is named in the result's warnings: alpha is extrapolated there (ln alpha linear), and
+#: a short table can put it far off (a table over [40, 41] deg C gave 2e-14 1/Pa at
+#: 60 deg C).
+PIEZO_TABLE_EXTRAPOLATION_K = 10.0
+
+
+def piezo_table_warning(thermal, temperature: float, what: str = "the contact temperature"
+                        ) -> str | None:
+    """The warning sentence when ``temperature`` [deg C] lies more than
+    :data:`PIEZO_TABLE_EXTRAPOLATION_K` outside a ``[thermal]`` (or bearing
+    ``[lubricant]``) section's ``piezo_temperatures`` table, else None.
+
+    Parameters
+    ----------
+    thermal : Thermal
+        The section with ``piezo_temperatures`` [deg C] and ``piezo_values`` [1/Pa].
+    temperature : float
+        Where alpha is evaluated [deg C].
+    what : str
+        What that temperature is, for the sentence.
+    """
+    ts = getattr(thermal, "piezo_temperatures", None)
+    if ts is None or len(ts) == 0:
+        return None
+    lo, hi = float(min(ts)), float(max(ts))
+    t = float(temperature)
+    if lo - PIEZO_TABLE_EXTRAPOLATION_K <= t <= hi + PIEZO_TABLE_EXTRAPOLATION_K:
+        return None
+    values = np.asarray(thermal.piezo_values, dtype=float)
+    if len(ts) == 1:
+        alpha = float(values[0])
+        how = "the table's single value is used"
+    else:
+        t_i = np.asarray(ts, dtype=float)
+        la = np.log(values)
+        i = 0 if t < lo else t_i.size - 2
+        alpha = float(np.exp(la[i] + (la[i + 1] - la[i]) / (t_i[i + 1] - t_i[i]) * (t - t_i[i])))
+        how = "ln alpha is extrapolated linearly"
+    return (f"{what} {t:.4g} deg C lies outside the piezo_temperatures table "
+            f"[{lo:g}, {hi:g}] deg C by more than {PIEZO_TABLE_EXTRAPOLATION_K:g} K: {how}, "
+            f"giving alpha = {alpha:.3g} 1/Pa; extend the table to that temperature")
 
 
 def jaeger_surface_temperature(x_nodes: np.ndarray, q_elements: np.ndarray,
@@ -373,6 +418,9 @@ def solve_thermal(scene: Scene) -> Result:
                          "assumes equal flash temperatures (both Peclet numbers >~ 5, minimum "
                          f"here {info['peclet_min']:.3g}); the contact temperature is their "
                          "mean and is uncertain by about half their difference")
+    table_note = piezo_table_warning(th, T)
+    if table_note is not None:
+        notes.append(table_note)
     quantities = {k: v for k, v in res.quantities.items()}
     quantities.update({"contact_temperature": float(T),
                        "contact_temperature_rise": float(T - t_oil),
