@@ -394,3 +394,14 @@ def test_oil_temperature_far_outside_the_piezo_table_warns():
     assert len(notes) == 1 and notes[0].startswith("operation.oil_temperature = 10 deg C "
                                                    "lies outside the piezo_temperatures "
                                                    "table [30, 150] deg C"), notes
+
+
+def test_ball_bearing_narrower_than_its_balls_is_refused():
+    """A width of 0.001 m for the 6209 (D_w = 12.7 mm, B = 19 mm) was accepted unused."""
+    d = load_example("6209").to_dict()
+    d["bearing"]["width"] = 0.019
+    assert Bearing.from_dict(d).geometry.width == 0.019
+    d["bearing"]["width"] = 0.001
+    with pytest.raises(SceneError, match=r"bearing\.width = 0\.001 m is narrower than the "
+                                         r"balls \(bearing\.element_diameter = 0\.0127"):
+        Bearing.from_dict(d)

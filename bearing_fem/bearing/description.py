@@ -287,7 +287,7 @@ class Geometry:
         equally (rigid rings, no tilt).
     width : float or None
         Bearing width B [m]; when given, the rows of rollers must fit in it
-        (rows l_we cos(beta) <= B).
+        (rows l_we cos(beta) <= B), and a ball bearing is at least as wide as its balls.
     contact_angle : float or None
         Nominal (unloaded) contact angle [deg]: required for angular-contact ball and
         tapered roller bearings, in [:data:`MIN_NOMINAL_CONTACT_ANGLE`,
@@ -456,6 +456,11 @@ class Geometry:
         if self.profile != "straight" or self.flat_length != 0.0:
             raise SceneError("bearing.profile and bearing.flat_length apply to roller "
                              f"bearings only, got {self.profile!r}, {self.flat_length!r} m")
+        if self.width is not None and self.element_diameter > self.width * (1.0 + 1e-9):
+            raise SceneError(f"bearing.width = {self.width!r} m is narrower than the balls "
+                             f"(bearing.element_diameter = {self.element_diameter!r} m): a ball "
+                             "bearing is at least as wide as its balls; "
+                             f"{_metres_hint('width', self.width)}")
         if self.type == "angular-contact-ball" and self.radial_clearance != 0.0:
             raise SceneError("bearing.radial_clearance of an angular-contact ball bearing "
                              "follows from bearing.contact_angle (deg); give only the angle, "
