@@ -532,3 +532,24 @@ def test_contacts_estimate_warnings_merge_into_one_sentence_per_quantity():
     (text,) = _merge_estimate_warnings({a: ["0 inner"], sentence(0.2, "grids 951, 1901, 3801"):
                                         ["5 inner"]})
     assert "error 20% (level difference, each contact's grid" in text, text
+
+
+def test_palmgren_f1_of_angular_contact_uses_the_iso76_static_load():
+    """ISO 76: P0 = max(Fr, X0 Fr + Y0 Fa) with X0 = 0.5, Y0 = 0.46 at 15 deg for single-row
+    angular-contact ball bearings (the deep-groove 0.6 and 0.5 gave P0 9 % high for the
+    7010's Fr = 0.5 kN, Fa = 2 kN: 1300 N against 1170 N)."""
+    from bearing_fem.bearing.empirical import empirical_models, static_equivalent_load
+
+    assert static_equivalent_load("angular-contact-ball", 500.0, 2000.0, 15.0) == \
+        pytest.approx(0.5 * 500.0 + 0.46 * 2000.0, rel=1e-12)
+    assert static_equivalent_load("angular-contact-ball", 500.0, 2000.0, 40.0) == \
+        pytest.approx(0.5 * 500.0 + 0.26 * 2000.0, rel=1e-12)
+    assert static_equivalent_load("deep-groove-ball", 500.0, 2000.0) == \
+        pytest.approx(0.6 * 500.0 + 0.5 * 2000.0, rel=1e-12)
+    assert static_equivalent_load("angular-contact-ball", 5000.0, 100.0, 15.0) == 5000.0
+    d = load_example("7010-steel").to_dict()
+    d["bearing"]["static_load_rating"] = 12000.0
+    b = Bearing.from_dict(d)
+    f1 = empirical_models(b)["palmgren"]["parameters"]["f1"]
+    np.testing.assert_allclose(f1, 0.001 * (1170.0 / 12000.0) ** 0.33, rtol=1e-12,
+                               err_msg="f1 = z (P0/C0)^y with the ISO 76 angular-contact P0")

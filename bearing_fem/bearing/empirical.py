@@ -23,6 +23,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from .. import formulas
 from ..validation import require_nonnegative, require_positive
 from .description import SKF_CONSTANTS_USED, SKF_GEOMETRY_CONSTANTS
@@ -143,6 +145,38 @@ def palmgren_f1(bearing_type: str, static_equivalent_load: float | None = None,
     if bearing_type == "tapered-roller":
         return 0.0004
     raise ValueError(f"unknown bearing type {bearing_type!r}")
+
+
+#: ISO 76 static axial load factor Y0 of single-row angular-contact ball bearings by
+#: nominal contact angle [deg] (X0 = 0.5); linear between the tabulated angles, the end
+#: values beyond them.
+ISO76_ANGULAR_Y0 = ((15.0, 0.46), (20.0, 0.42), (25.0, 0.38), (30.0, 0.33), (35.0, 0.29),
+                    (40.0, 0.26), (45.0, 0.22))
+
+
+def static_equivalent_load(bearing_type: str, radial_load: float, axial_load: float,
+                           contact_angle_deg: float = 0.0) -> float:
+    """ISO 76 static equivalent load P0 = max(Fr, X0 Fr + Y0 Fa) [N] of a ball bearing.
+
+    Deep groove: X0 = 0.6, Y0 = 0.5; single-row angular contact: X0 = 0.5 and Y0 from
+    :data:`ISO76_ANGULAR_Y0` at the nominal contact angle (0.46 at 15 deg to 0.22 at
+    45 deg). Palmgren's f1 of ball bearings takes P0/C0.
+
+    Parameters
+    ----------
+    bearing_type : str
+        "deep-groove-ball" or "angular-contact-ball".
+    radial_load, axial_load : float
+        Fr, Fa [N], >= 0.
+    contact_angle_deg : float
+        Nominal contact angle [deg] (angular contact).
+    """
+    fr = require_nonnegative("radial_load", radial_load, "N")
+    fa = require_nonnegative("axial_load", axial_load, "N")
+    if bearing_type == "angular-contact-ball":
+        angles, y0 = zip(*ISO76_ANGULAR_Y0)
+        return max(fr, 0.5 * fr + float(np.interp(contact_angle_deg, angles, y0)) * fa)
+    return max(fr, 0.6 * fr + 0.5 * fa)
 
 
 def palmgren_equivalent_load(bearing_type: str, radial_load: float, axial_load: float,
@@ -505,7 +539,7 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
     key = "cylindrical-roller-full-complement" if (full and g.type == "cylindrical-roller") \
         else g.type
     f0 = opts.palmgren_f0 if opts.palmgren_f0 is not None else PALMGREN_F0[key]
-    p0 = max(fr, 0.6 * fr + 0.5 * fa)   # static equivalent load (ISO 76 radial ball)
+    p0 = static_equivalent_load(g.type, fr, fa, g.contact_angle or 0.0) if g.is_ball else fr
     f1 = opts.palmgren_f1 if opts.palmgren_f1 is not None else palmgren_f1(
         g.type, p0 if g.static_load_rating else None, g.static_load_rating, full)
     p1 = palmgren_equivalent_load(g.type, fr, fa, loaded_contact_angle_deg)
