@@ -536,7 +536,7 @@ def test_contacts_estimate_warnings_merge_into_one_sentence_per_quantity():
 
 def test_palmgren_f1_of_angular_contact_uses_the_iso76_static_load():
     """ISO 76: P0 = max(Fr, X0 Fr + Y0 Fa) with X0 = 0.5, Y0 = 0.46 at 15 deg for single-row
-    angular-contact ball bearings (the deep-groove 0.6 and 0.5 gave P0 9 % high for the
+    angular-contact ball bearings (the deep-groove 0.6 and 0.5 gave P0 11 % high for the
     7010's Fr = 0.5 kN, Fa = 2 kN: 1300 N against 1170 N)."""
     from bearing_fem.bearing.empirical import empirical_models, static_equivalent_load
 
