@@ -59,6 +59,21 @@ class PlotData:
     status: str = "converged"
     success: bool = True
     semi_axes: tuple[float, float] | None = None   # Hertz a_x, a_y [m] (point), if known
+    #: surface temperature rises of bodies 1 and 2 [K] at the nodes (thermal line results)
+    surface_rise: tuple[np.ndarray, np.ndarray] | None = None
+
+
+#: Nodal fields of a thermal result drawn by the line plot (``model.thermal = "patch"``).
+SURFACE_RISE_FIELDS = ("surface_temperature_rise_body1_K", "surface_temperature_rise_body2_K")
+
+
+def _surface_rise(fields: dict, n: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """Both surface temperature rises [K] if ``fields`` holds them with ``n`` nodes each."""
+    arrs = [fields.get(k) for k in SURFACE_RISE_FIELDS]
+    if any(a is None for a in arrs):
+        return None
+    arrs = [np.asarray(a, dtype=float).ravel() for a in arrs]
+    return (arrs[0], arrs[1]) if all(a.size == n for a in arrs) else None
 
 
 def _hertz_of(scene: Any) -> tuple[float | None, tuple[float, float] | None]:
@@ -102,6 +117,7 @@ def _from_h5(path: Path) -> PlotData:
         y = find("y", "y_m")
         p = find("pressure_Pa", "pressure")
         h = find("film_m", "film")
+        rise = {k: find(k) for k in SURFACE_RISE_FIELDS}
         kind = _decode(f.attrs.get("kind", "point" if y is not None and y.size > 1 else "line"))
         title = _decode(f.attrs.get("title", ""))
         status = _decode(f.attrs.get("status", "converged"))
@@ -119,7 +135,8 @@ def _from_h5(path: Path) -> PlotData:
             p = p.reshape(shape) if p.size == x.size * y.size else p.reshape(shape[::-1]).T
             h = h.reshape(p.shape)
     return PlotData(kind, x.ravel(), None if y is None else y.ravel(), p, h, title,
-                    x_unit=b, status=status, success=success, semi_axes=axes)
+                    x_unit=b, status=status, success=success, semi_axes=axes,
+                    surface_rise=_surface_rise(rise, x.size) if kind == "line" else None)
 
 
 def _scene_or_none(text: str | None) -> Any:
@@ -150,7 +167,9 @@ def _from_result(res) -> PlotData:
     return PlotData(kind, np.asarray(res.x, float),
                     None if res.y is None else np.asarray(res.y, float), p, h, title, b,
                     status=str(getattr(res, "status", "converged")),
-                    success=bool(getattr(res, "success", True)), semi_axes=axes)
+                    success=bool(getattr(res, "success", True)), semi_axes=axes,
+                    surface_rise=(_surface_rise(getattr(res, "extra_fields", None) or {},
+                                                np.size(res.x)) if kind == "line" else None))
 
 
 def load_plot_data(result_or_path: Result | str | os.PathLike) -> PlotData:
@@ -453,7 +472,8 @@ def _pyvista_surface(d: PlotData, out: Path, window_size) -> None:
 
 def _matplotlib_line(d: PlotData, out: Path) -> None:
     """Pressure and film along x (the centre line y = 0 of a point contact), zoomed on the
-    contact: :data:`LINE_WINDOW` Hertz half-widths, or the pressurised region."""
+    contact: :data:`LINE_WINDOW` Hertz half-widths, or the pressurised region; a thermal
+    line result adds its two surface temperature rises in a panel below."""
     import matplotlib
 
     matplotlib.use("Agg", force=False)
@@ -475,7 +495,16 @@ def _matplotlib_line(d: PlotData, out: Path) -> None:
         lim = (x0 / scale, x1 / scale)
     else:
         xs, xlabel, lim = d.x * 1e3, "x [mm]", (x0 * 1e3, x1 * 1e3)
-    fig, ax = plt.subplots(figsize=(8, 5), layout="constrained")
+    if d.surface_rise is not None:  # thermal result: the surface temperatures below
+        fig, (ax, axt) = plt.subplots(2, 1, figsize=(8, 7), layout="constrained",
+                                      sharex=True, height_ratios=(3, 2))
+        axt.plot(xs, d.surface_rise[0], color="tab:orange", label="surface 1")
+        axt.plot(xs, d.surface_rise[1], color="tab:green", linestyle="--", label="surface 2")
+        axt.set_ylabel("temperature rise [K]")
+        axt.set_xlabel(xlabel)
+        axt.legend(loc="upper left", fontsize=8)
+    else:
+        fig, ax = plt.subplots(figsize=(8, 5), layout="constrained")
     ax.plot(xs, p / 1e6, color="tab:blue", label="pressure")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(field_label(d), color="tab:blue")

@@ -282,3 +282,31 @@ def test_line_plot_of_an_even_grid_names_the_row_it_draws(point_result, tmp_path
     assert "centre line y = 0" not in text and "no node row at y = 0" in text, text
     dy = float(np.min(np.abs(even.y))) * 1e3
     assert f"y = {dy:.3g} mm" in text or f"y = {-dy:.3g} mm" in text, text
+
+
+def test_thermal_line_plot_draws_the_surface_temperatures(tmp_path, figures):
+    """A thermal line result's figure shows both surface temperature rises under the
+    pressure and film (from the Result and from its exported result.h5)."""
+    import bearing_fem as bf
+    from bearing_fem.scene import Materials, Thermal, Traction
+
+    scene = Scene(contact=Contact(kind="line", rx=0.01, length=0.02),
+                  materials=Materials(e1=2.1e11, nu1=0.3, e2=2.1e11, nu2=0.3),
+                  lubricant=Lubricant(viscosity=0.05, piezo=2e-8),
+                  kinematics=Kinematics(u1=2.2, u2=1.8), load=Load(force=2e5),
+                  model=Model(elasticity="local", thermal="patch"), mesh=MeshSpec(nodes=401),
+                  thermal=Thermal(oil_temperature=60.0, exponent=2.93),
+                  traction=Traction(model="eyring"))
+    res = solve(scene)
+    assert res.success, res.message
+    d = plot.load_plot_data(res)
+    assert d.surface_rise is not None and float(np.max(d.surface_rise[0])) > 0.0
+    out = plot_result(res, tmp_path / "thermal.png")
+    assert _pixel_std(out) > 0.02
+    assert len(figures.saved[-1].axes) == 3, "pressure, film (twin) and temperature axes"
+    bf.export(res, tmp_path / "run")
+    d5 = plot.load_plot_data(tmp_path / "run")
+    np.testing.assert_allclose(d5.surface_rise[1], d.surface_rise[1], rtol=1e-12,
+                               err_msg="the same rises from result.h5")
+    assert plot.load_plot_data(solve(replace(scene, model=Model(elasticity="local"),
+                                             thermal=None))).surface_rise is None
