@@ -434,3 +434,30 @@ def test_roelands_reduced_limit_is_near_one_over_alpha_for_a_mineral_oil():
         roelands_reduced_limit(5e-5, 2e-8)
     with pytest.raises(ValueError, match="Z = 2.94e-05"):
         roelands_reduced_limit(0.05, 1e-12)
+
+
+@pytest.mark.parametrize("eta0,alpha", ROELANDS_OILS + ROELANDS_SMALL_INDEX)
+def test_roelands_reduced_pressure_of_a_negative_pressure(eta0, alpha):
+    """An end pressure below ambient (down to -p0, where the law's base 1 + p/p0 is 0)
+    has a negative reduced pressure, and back."""
+    from scipy.integrate import quad
+
+    from bearing_fem.analytic import reduced_from_roelands, roelands_from_reduced
+    from bearing_fem.physics.rheology import roelands
+
+    ps = np.array([-1e8, -1e6, -1e4, -1e3])
+    q = reduced_from_roelands(ps, eta0, alpha)
+    ref = [-quad(lambda s: eta0 / float(roelands(s, eta0, alpha)), p, 0.0, limit=400,
+                 epsabs=0.0, epsrel=1e-12)[0] for p in ps]
+    np.testing.assert_allclose(q, ref, rtol=2e-8,
+                               err_msg="closed form against quadrature below ambient")
+    # dp = eta/eta0 dq with eta <= eta0 below ambient: p as well conditioned as q
+    np.testing.assert_allclose(roelands_from_reduced(q, eta0, alpha), ps, rtol=1e-9,
+                               err_msg="round trip of negative pressures")
+    floor = float(reduced_from_roelands(-1.96e8, eta0, alpha))
+    np.testing.assert_allclose(roelands_from_reduced(floor, eta0, alpha), -1.96e8,
+                               rtol=1e-9, err_msg="q(-p0) is the pressure -p0")
+    with pytest.raises(ValueError, match="got -2e\\+08 Pa"):
+        reduced_from_roelands(-2e8, eta0, alpha)
+    with pytest.raises(ValueError, match="q must be >= q\\(-p0\\)"):
+        roelands_from_reduced(2.0 * floor, eta0, alpha)
