@@ -1550,10 +1550,14 @@ def solve_point(scene: Scene, *, boundary_pressure: Callable | np.ndarray | None
 
 def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Result:
     """``no_solution`` for a rigid Barus load above its limit, without Newton iterations:
-    the fields are the linear solve's at a gap 5 % below h0* (the reduced pressure q,
-    whose alpha q_max exceeds 1 there), the message names the load and the limit."""
+    the fields are the reduced pressure q at a gap 5 % below h0* (the isoviscous linear
+    solve on the scene's grid, so q whatever its domain; on the default one alpha q_max
+    exceeds 1 there), the message names the load and the limit."""
     gap = 0.95 * h_star
-    linear = replace(scene, load=replace(scene.load, force=None, gap=gap))
+    # the isoviscous solve of the same gap is q itself (a Barus solve returns p where
+    # alpha q_max < 1, as on a domain narrower than the default one)
+    linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
+                     lubricant=replace(scene.lubricant, viscosity_law="constant"))
     res = solve_linear_model(PointModel(linear), linear, t0)
     message = (f"no_solution: load.force = {scene.load.force:.4g} N exceeds what the rigid "
                f"Barus point contact can carry: its largest load is {limit:.4g} N, at the "
