@@ -461,3 +461,24 @@ def test_roelands_reduced_pressure_of_a_negative_pressure(eta0, alpha):
         reduced_from_roelands(-2e8, eta0, alpha)
     with pytest.raises(ValueError, match="q must be >= q\\(-p0\\)"):
         roelands_from_reduced(2.0 * floor, eta0, alpha)
+
+
+def test_roelands_reduced_pressure_where_its_constant_overflows():
+    """ln eta0 + 9.67 = 0.0289 and Z = 0.0101 put C = (p0/Z) e^A A^(-1/Z) Gamma(1/Z) at
+    e^800, beyond the double range, while q(p) is a pressure: it came out inf."""
+    from scipy.integrate import quad
+
+    from bearing_fem.analytic import reduced_from_roelands, roelands_from_reduced
+    from bearing_fem.physics.rheology import roelands
+
+    eta0 = 6.5e-5
+    alpha = 0.0101 * (np.log(eta0) + 9.67) / 1.96e8
+    ps = np.array([-1e5, 1e3, 1e6, 1e8])
+    q = reduced_from_roelands(ps, eta0, alpha)
+    ref = [np.sign(p) * quad(lambda s: eta0 / float(roelands(s, eta0, alpha)),
+                             min(p, 0.0), max(p, 0.0), epsabs=0.0, epsrel=1e-12)[0]
+           for p in ps]
+    # rtol: the cancellation of the two incomplete gamma values, about 1e-8 at 1e3 Pa
+    np.testing.assert_allclose(q, ref, rtol=1e-7, err_msg="closed form against quadrature")
+    np.testing.assert_allclose(roelands_from_reduced(q, eta0, alpha), ps, rtol=1e-7,
+                               err_msg="round trip (eta/eta0 = O(1) here)")
