@@ -101,3 +101,13 @@ def test_overload_fields_are_the_reduced_pressure_on_a_narrow_domain():
     np.testing.assert_allclose(r.pressure, q.pressure, rtol=1e-12, atol=1e-6, err_msg=(
         "the no_solution field is the isoviscous solve at 0.95 h0* on the same grid "
         "(the same sparse solves; atol: rounding at cavitated nodes, Pa)"))
+
+
+@pytest.mark.parametrize("args,match", [
+    ((RX, RY, ETA, UM, 0.0), "piezo must be > 0 1/Pa, got 0"),  # ZeroDivisionError before
+    ((RX, RY, ETA, -UM, ALPHA), "mean_speed must be > 0 m/s"),  # gave 0.448 N before
+    ((float("nan"), RY, ETA, UM, ALPHA), "rx"),  # gave (nan, nan) before
+])
+def test_load_limit_refuses_invalid_input(args, match):
+    with pytest.raises(ValueError, match=match):
+        rigid_barus_point_load_limit(*args)

@@ -65,7 +65,7 @@ from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
-from ..validation import require_int
+from ..validation import require_int, require_positive
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
                      solve_newton_model)
@@ -586,6 +586,11 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     (float, float)
         W* [N] and h0* [m].
     """
+    rx, ry = require_positive("rx", rx, "m"), require_positive("ry", ry, "m")
+    viscosity = require_positive("viscosity", viscosity, "Pa s")
+    mean_speed = require_positive("mean_speed", mean_speed, "m/s")
+    piezo = require_positive("piezo", piezo, "1/Pa")
+    nodes = require_int("nodes", nodes, 9, what="grid nodes per direction")
     h_n = 1e-6  # any gap: the solution is rescaled to h0* below
     xu, yu = math.sqrt(2.0 * rx * h_n), math.sqrt(2.0 * ry * h_n)
     (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
