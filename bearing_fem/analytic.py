@@ -109,6 +109,14 @@ def _roelands_reduced_constants(viscosity: float, piezo: float) -> tuple[float, 
     return a, big_a, log_c
 
 
+def _times_c(log_c: float, v: _Any) -> np.ndarray:
+    """e^log_c v without forming e^log_c, which overflows (ln C above 709) for small
+    ln eta0 + 9.67 and pressure indices near 0.01 while the product is a pressure."""
+    v = np.asarray(v, dtype=float)
+    with np.errstate(divide="ignore", over="ignore"):
+        return np.sign(v) * np.exp(log_c + np.log(np.abs(v)))
+
+
 def roelands_reduced_limit(viscosity: float, piezo: float) -> float:
     """Largest Roelands reduced pressure q_inf = int_0^inf eta0/eta(p) dp [Pa].
 
@@ -129,28 +137,30 @@ def roelands_reduced_limit(viscosity: float, piezo: float) -> float:
     Returns
     -------
     float
-        q_inf [Pa].
+        q_inf [Pa]; ``inf`` where it exceeds the double range (nearly isoviscous laws:
+        Z near 0.01 with ln eta0 + 9.67 below about 0.03).
     """
     from scipy.special import gammainc, gammaincc
 
     a, big_a, log_c = _roelands_reduced_constants(viscosity, piezo)
     upper = 1.0 - gammainc(a, big_a) if big_a < a else gammaincc(a, big_a)
-    return float(np.exp(log_c) * upper)
+    return float(_times_c(log_c, upper))
 
 
 def reduced_from_roelands(p: _Any, viscosity: float, piezo: float) -> np.ndarray:
-    """Roelands reduced pressure q = int_0^p eta0/eta(s) ds [Pa], p >= 0 [Pa].
+    """Roelands reduced pressure q = int_0^p eta0/eta(s) ds [Pa], p >= -p0 [Pa].
 
     q = C [Q(1/Z, A) - Q(1/Z, A (1 + p/p0)^Z)], C = (p0/Z) e^A A^(-1/Z) Gamma(1/Z) and
     Q the regularised upper incomplete gamma function (see
     :func:`roelands_reduced_limit`). With it the rigid isothermal Reynolds equation of
     an incompressible Roelands oil is the isoviscous one in q, as with Kapitsa's Barus
-    transform.
+    transform. A negative pressure (an end pressure below ambient) has a negative q,
+    down to q(-p0) = -C P(1/Z, A) where the law's base 1 + p/p0 reaches 0.
 
     Parameters
     ----------
     p : float or array
-        Pressure [Pa], >= 0.
+        Pressure [Pa], >= -p0 = -1.96e8 Pa.
     viscosity, piezo : float
         eta0 [Pa s] and alpha [1/Pa] of the law.
     """
@@ -160,12 +170,15 @@ def reduced_from_roelands(p: _Any, viscosity: float, piezo: float) -> np.ndarray
 
     a, big_a, log_c = _roelands_reduced_constants(viscosity, piezo)
     p = np.asarray(p, dtype=float)
-    if np.any(p < 0.0) or not np.all(np.isfinite(p)):
-        raise ValueError("p must be finite and >= 0 Pa for the Roelands reduced pressure")
-    t = (1.0 + p / ROELANDS_P0) ** (1.0 / a)
+    if np.any(p < -ROELANDS_P0) or not np.all(np.isfinite(p)):
+        bad = p[(p < -ROELANDS_P0) | ~np.isfinite(p)].flat[0]
+        raise ValueError(f"p must be finite and >= -p0 = {-ROELANDS_P0:g} Pa for the "
+                         f"Roelands reduced pressure, got {float(bad):g} Pa")
+    with np.errstate(over="ignore"):  # an infinite t has Q(1/Z, inf) = 0: q = q_inf
+        t = (1.0 + p / ROELANDS_P0) ** (1.0 / a)
     if big_a < a:
-        return np.exp(log_c) * (gammainc(a, big_a * t) - gammainc(a, big_a))
-    return np.exp(log_c) * (gammaincc(a, big_a) - gammaincc(a, big_a * t))
+        return _times_c(log_c, gammainc(a, big_a * t) - gammainc(a, big_a))
+    return _times_c(log_c, gammaincc(a, big_a) - gammaincc(a, big_a * t))
 
 
 def roelands_from_reduced(q: _Any, viscosity: float, piezo: float) -> np.ndarray:
@@ -175,12 +188,12 @@ def roelands_from_reduced(q: _Any, viscosity: float, piezo: float) -> np.ndarray
     p = p0 [(x/A)^(1/Z) - 1] with x = Q^-1(1/Z, Q(1/Z, A) - q/C) (the inverse regularised
     upper incomplete gamma function); ``inf`` where q >= q_inf
     (:func:`roelands_reduced_limit`: no pressure has that reduced pressure) or within
-    rounding of it.
+    rounding of it. A negative q has a negative pressure, down to -p0 at q(-p0).
 
     Parameters
     ----------
     q : float or array
-        Reduced pressure [Pa], >= 0.
+        Reduced pressure [Pa], >= q(-p0) (:func:`reduced_from_roelands`).
     viscosity, piezo : float
         eta0 [Pa s] and alpha [1/Pa] of the law.
     """
@@ -190,21 +203,29 @@ def roelands_from_reduced(q: _Any, viscosity: float, piezo: float) -> np.ndarray
 
     a, big_a, log_c = _roelands_reduced_constants(viscosity, piezo)
     q = np.asarray(q, dtype=float)
-    if np.any(q < 0.0) or np.any(np.isnan(q)):
-        raise ValueError("q must be >= 0 Pa for the Roelands pressure")
+    if np.any(np.isnan(q)):
+        raise ValueError("q must be a number (Pa) for the Roelands pressure, got nan")
     eps = 8.0 * np.finfo(float).eps  # within rounding of q_inf: noise, not a pressure
+    q_min = -float(_times_c(log_c, gammainc(a, big_a)))  # q(-p0) = -C P(1/Z, A)
+    below = q < q_min * (1.0 + eps)
+    if np.any(below):
+        raise ValueError(f"q must be >= q(-p0) = {q_min:.6g} Pa for the Roelands pressure "
+                         f"(p >= -p0 = {-ROELANDS_P0:g} Pa), got "
+                         f"{float(q[below].flat[0]):.6g} Pa")
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         if big_a < a:
-            target = gammainc(a, big_a) + q * np.exp(-log_c)
+            target = np.maximum(gammainc(a, big_a) + _times_c(-log_c, q), 0.0)
             exists = target < 1.0 - eps
             x = gammaincinv(a, np.where(exists, target, 0.5))
         else:
             top = gammaincc(a, big_a)
-            target = top - q * np.exp(-log_c)
+            target = np.minimum(top - _times_c(-log_c, q), 1.0)
             exists = target > eps * top
             x = gammainccinv(a, np.where(exists, target, 0.5))
-        p = ROELANDS_P0 * np.expm1(a * np.log(np.maximum(x / big_a, 1.0)))
-    return np.where(exists, np.maximum(p, 0.0), np.inf)
+        p = ROELANDS_P0 * np.expm1(a * np.log(x / big_a))
+    # the sign of q is that of p (q = 0 is p = 0 exactly)
+    p = np.where(q > 0.0, np.maximum(p, 0.0), np.where(q < 0.0, np.minimum(p, 0.0), 0.0))
+    return np.where(exists, p, np.inf)
 
 
 def _check_kapitsa(h0: _Any, a: _Any, b: _Any, viscosity: _Any, mean_speed: _Any,

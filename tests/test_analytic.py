@@ -434,3 +434,51 @@ def test_roelands_reduced_limit_is_near_one_over_alpha_for_a_mineral_oil():
         roelands_reduced_limit(5e-5, 2e-8)
     with pytest.raises(ValueError, match="Z = 2.94e-05"):
         roelands_reduced_limit(0.05, 1e-12)
+
+
+@pytest.mark.parametrize("eta0,alpha", ROELANDS_OILS + ROELANDS_SMALL_INDEX)
+def test_roelands_reduced_pressure_of_a_negative_pressure(eta0, alpha):
+    """An end pressure below ambient (down to -p0, where the law's base 1 + p/p0 is 0)
+    has a negative reduced pressure, and back."""
+    from scipy.integrate import quad
+
+    from bearing_fem.analytic import reduced_from_roelands, roelands_from_reduced
+    from bearing_fem.physics.rheology import roelands
+
+    ps = np.array([-1e8, -1e6, -1e4, -1e3])
+    q = reduced_from_roelands(ps, eta0, alpha)
+    ref = [-quad(lambda s: eta0 / float(roelands(s, eta0, alpha)), p, 0.0, limit=400,
+                 epsabs=0.0, epsrel=1e-12)[0] for p in ps]
+    np.testing.assert_allclose(q, ref, rtol=2e-8,
+                               err_msg="closed form against quadrature below ambient")
+    # dp = eta/eta0 dq with eta <= eta0 below ambient: p as well conditioned as q
+    np.testing.assert_allclose(roelands_from_reduced(q, eta0, alpha), ps, rtol=1e-9,
+                               err_msg="round trip of negative pressures")
+    floor = float(reduced_from_roelands(-1.96e8, eta0, alpha))
+    np.testing.assert_allclose(roelands_from_reduced(floor, eta0, alpha), -1.96e8,
+                               rtol=1e-9, err_msg="q(-p0) is the pressure -p0")
+    with pytest.raises(ValueError, match="got -2e\\+08 Pa"):
+        reduced_from_roelands(-2e8, eta0, alpha)
+    with pytest.raises(ValueError, match="q must be >= q\\(-p0\\)"):
+        roelands_from_reduced(2.0 * floor, eta0, alpha)
+
+
+def test_roelands_reduced_pressure_where_its_constant_overflows():
+    """ln eta0 + 9.67 = 0.0289 and Z = 0.0101 put C = (p0/Z) e^A A^(-1/Z) Gamma(1/Z) at
+    e^800, beyond the double range, while q(p) is a pressure: it came out inf."""
+    from scipy.integrate import quad
+
+    from bearing_fem.analytic import reduced_from_roelands, roelands_from_reduced
+    from bearing_fem.physics.rheology import roelands
+
+    eta0 = 6.5e-5
+    alpha = 0.0101 * (np.log(eta0) + 9.67) / 1.96e8
+    ps = np.array([-1e5, 1e3, 1e6, 1e8])
+    q = reduced_from_roelands(ps, eta0, alpha)
+    ref = [np.sign(p) * quad(lambda s: eta0 / float(roelands(s, eta0, alpha)),
+                             min(p, 0.0), max(p, 0.0), epsabs=0.0, epsrel=1e-12)[0]
+           for p in ps]
+    # rtol: the cancellation of the two incomplete gamma values, about 1e-8 at 1e3 Pa
+    np.testing.assert_allclose(q, ref, rtol=1e-7, err_msg="closed form against quadrature")
+    np.testing.assert_allclose(roelands_from_reduced(q, eta0, alpha), ps, rtol=1e-7,
+                               err_msg="round trip (eta/eta0 = O(1) here)")

@@ -101,3 +101,37 @@ def test_loaded_rigid_film_carries_its_load_on_the_documented_domain(ry):
     np.testing.assert_allclose(driven.quantities["load"], 0.3, rtol=0.01,
                                err_msg="the film under 0.3 N does not carry 0.3 N on the "
                                        "domain of its own gap")
+
+
+def test_overload_fields_are_the_reduced_pressure_on_a_narrow_domain():
+    """On an explicit domain narrower than the default one, alpha q_max stays below 1 at
+    0.95 h0*: the fields must still be q, as the message says (they held the Barus
+    pressure p = -ln(1 - alpha q)/alpha, 4.34e7 Pa where q_max = 2.9e7 Pa)."""
+    from bearing_fem.contacts.point import solve_point
+
+    base = rigid_scene({"force": 1.0}, nodes=41)
+    narrow = bf.Scene.from_dict({**base.to_dict(), "mesh": {
+        "nodes": [41, 41], "x_range": [-1.0, 0.5], "y_range": [-1.0, 1.0]}})
+    r = solve_point(narrow)
+    assert r.status == "no_solution" and r.newton_iterations == 0, r.message
+    assert "reduced pressure q" in r.message
+    _, h_star = rigid_barus_point_load_limit(RX, RY, ETA, UM, ALPHA)
+    iso = bf.Scene.from_dict({**narrow.to_dict(), "load": {"gap": 0.95 * h_star},
+                              "lubricant": {"viscosity": ETA, "piezo": ALPHA,
+                                            "viscosity_law": "constant"}})
+    q = solve_point(iso)
+    assert q.status == "linear", q.message
+    assert ALPHA * float(np.max(q.pressure)) < 1.0, "the case must be one where p != q"
+    np.testing.assert_allclose(r.pressure, q.pressure, rtol=1e-12, atol=1e-6, err_msg=(
+        "the no_solution field is the isoviscous solve at 0.95 h0* on the same grid "
+        "(the same sparse solves; atol: rounding at cavitated nodes, Pa)"))
+
+
+@pytest.mark.parametrize("args,match", [
+    ((RX, RY, ETA, UM, 0.0), "piezo must be > 0 1/Pa, got 0"),  # ZeroDivisionError before
+    ((RX, RY, ETA, -UM, ALPHA), "mean_speed must be > 0 m/s"),  # gave 0.448 N before
+    ((float("nan"), RY, ETA, UM, ALPHA), "rx"),  # gave (nan, nan) before
+])
+def test_load_limit_refuses_invalid_input(args, match):
+    with pytest.raises(ValueError, match=match):
+        rigid_barus_point_load_limit(*args)

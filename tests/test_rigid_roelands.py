@@ -76,3 +76,21 @@ def test_rigid_roelands_squeeze_series_runs():
     loads = [r.quantities["load"] for r in series.results]
     assert len(loads) == 5 and all(r.status == "linear" for r in series.results)  # 4 steps + end
     assert np.all(np.isfinite(loads)) and min(loads) > 0.0
+
+
+@pytest.mark.parametrize("kind", ["line", "point"])
+def test_negative_end_pressure_takes_the_linear_path(kind):
+    """An end pressure below ambient has a (negative) Roelands reduced pressure: the
+    scene is solved like a Barus one, the end nodes holding that pressure (it raised
+    'p must be finite and >= 0 Pa' where the Newton path had solved it)."""
+    if kind == "line":
+        r = line_mod.solve_line(scene("line", 1e-6, 801), boundary_pressure=(-2e4, 0.0))
+        ends = r.pressure[[0]]
+    else:
+        r = point_mod.solve_point(scene("point", 3e-7, [41, 41]),
+                                  boundary_pressure=lambda x, y: np.full(x.shape, -2e4))
+        ends = np.concatenate((r.pressure[0], r.pressure[-1], r.pressure[:, 0]))
+    assert r.status == "linear", r.message
+    assert np.all(np.isfinite(r.pressure))
+    np.testing.assert_allclose(ends, -2e4, rtol=1e-9,
+                               err_msg="end pressures through q and back (well conditioned)")

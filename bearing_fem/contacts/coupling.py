@@ -75,8 +75,15 @@ def contact_piezo(scene: Scene, temperature: float) -> float:
     th = scene.thermal
     if th.piezo_temperatures is None:
         return float(scene.lubricant.piezo)
-    ts = np.asarray(th.piezo_temperatures)
-    la = np.log(np.asarray(th.piezo_values))
+    return _table_piezo(th.piezo_temperatures, th.piezo_values, temperature)
+
+
+def _table_piezo(temperatures, values, temperature: float) -> float:
+    """alpha [1/Pa] at ``temperature`` [deg C] from a piezo_temperatures [deg C] /
+    piezo_values [1/Pa] table: ln alpha linear in t, extrapolated linearly outside it (a
+    single entry: its value)."""
+    ts = np.asarray(temperatures, dtype=float)
+    la = np.log(np.asarray(values, dtype=float))
     if ts.size == 1:
         return float(np.exp(la[0]))
     t = float(temperature)
@@ -114,16 +121,9 @@ def piezo_table_warning(thermal, temperature: float, what: str = "the contact te
     t = float(temperature)
     if lo - PIEZO_TABLE_EXTRAPOLATION_K <= t <= hi + PIEZO_TABLE_EXTRAPOLATION_K:
         return None
-    values = np.asarray(thermal.piezo_values, dtype=float)
-    if len(ts) == 1:
-        alpha = float(values[0])
-        how = "the table's single value is used"
-    else:
-        t_i = np.asarray(ts, dtype=float)
-        la = np.log(values)
-        i = 0 if t < lo else t_i.size - 2
-        alpha = float(np.exp(la[i] + (la[i + 1] - la[i]) / (t_i[i + 1] - t_i[i]) * (t - t_i[i])))
-        how = "ln alpha is extrapolated linearly"
+    alpha = _table_piezo(ts, thermal.piezo_values, t)
+    how = ("the table's single value is used" if len(ts) == 1
+           else "ln alpha is extrapolated linearly")
     return (f"{what} {t:.4g} deg C lies outside the piezo_temperatures table "
             f"[{lo:g}, {hi:g}] deg C by more than {PIEZO_TABLE_EXTRAPOLATION_K:g} K: {how}, "
             f"giving alpha = {alpha:.3g} 1/Pa; extend the table to that temperature")

@@ -21,7 +21,7 @@ import scipy.sparse.linalg as spla
 from ..analytic import (ROELANDS_REDUCED_MIN_INDEX, barus_from_reduced, reduced_from_barus,
                         reduced_from_roelands, roelands_from_reduced,
                         roelands_reduced_limit)
-from ..physics.rheology import roelands_index
+from ..physics.rheology import ROELANDS_P0, roelands_index
 
 
 @dataclass(frozen=True)
@@ -59,9 +59,11 @@ def reduced_law(lubricant) -> ReducedLaw:
                           lambda q: barus_from_reduced(q, alpha), alpha)
     if lubricant.viscosity_law == "roelands":
         eta0 = lubricant.viscosity
+        # q(-p0), the reduced pressure of the law's lowest pressure: the floor of q
+        q_min = float(reduced_from_roelands(-ROELANDS_P0, eta0, alpha))
         return ReducedLaw("roelands", roelands_reduced_limit(eta0, alpha),
                           lambda p: reduced_from_roelands(p, eta0, alpha),
-                          lambda q: roelands_from_reduced(np.maximum(q, 0.0), eta0, alpha),
+                          lambda q: roelands_from_reduced(np.maximum(q, q_min), eta0, alpha),
                           alpha)
     raise ValueError(f"no reduced pressure for viscosity_law {lubricant.viscosity_law!r}")
 
@@ -69,8 +71,8 @@ def reduced_law(lubricant) -> ReducedLaw:
 def is_linear_scene(scene) -> bool:
     """True if a scene is solved by linear solves of the reduced pressure: rigid,
     incompressible, prescribed gap, and a constant or Barus viscosity, or a Roelands one
-    with Reynolds cavitation (whose reduced pressure stays >= 0, where the transform is
-    defined) and a pressure index Z >= ``ROELANDS_REDUCED_MIN_INDEX`` (where its closed
+    with Reynolds cavitation (whose reduced pressure stays >= 0 inside the domain; end
+    pressures down to -p0 have their own, negative, q) and a pressure index Z >= ``ROELANDS_REDUCED_MIN_INDEX`` (where its closed
     form holds double precision; a smaller Z is nearly isoviscous and goes to Newton)."""
     m, lub = scene.model, scene.lubricant
     if not (m.elasticity == "rigid" and lub.density == "incompressible"

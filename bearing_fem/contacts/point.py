@@ -66,7 +66,7 @@ from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
-from ..validation import require_int
+from ..validation import require_int, require_positive
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
                      solve_newton_model)
@@ -600,6 +600,11 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     (float, float)
         W* [N] and h0* [m].
     """
+    rx, ry = require_positive("rx", rx, "m"), require_positive("ry", ry, "m")
+    viscosity = require_positive("viscosity", viscosity, "Pa s")
+    mean_speed = require_positive("mean_speed", mean_speed, "m/s")
+    piezo = require_positive("piezo", piezo, "1/Pa")
+    nodes = require_int("nodes", nodes, 9, what="grid nodes per direction")
     h_n = 1e-6  # any gap: the solution is rescaled to h0* below
     xu, yu = math.sqrt(2.0 * rx * h_n), math.sqrt(2.0 * ry * h_n)
     (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
@@ -1639,10 +1644,14 @@ def light_load_warning(scene: Scene) -> list[str]:
 
 def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Result:
     """``no_solution`` for a rigid Barus load above its limit, without Newton iterations:
-    the fields are the linear solve's at a gap 5 % below h0* (the reduced pressure q,
-    whose alpha q_max exceeds 1 there), the message names the load and the limit."""
+    the fields are the reduced pressure q at a gap 5 % below h0* (the isoviscous linear
+    solve on the scene's grid, so q whatever its domain; on the default one alpha q_max
+    exceeds 1 there), the message names the load and the limit."""
     gap = 0.95 * h_star
-    linear = replace(scene, load=replace(scene.load, force=None, gap=gap))
+    # the isoviscous solve of the same gap is q itself (a Barus solve returns p where
+    # alpha q_max < 1, as on a domain narrower than the default one)
+    linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
+                     lubricant=replace(scene.lubricant, viscosity_law="constant"))
     res = solve_linear_model(PointModel(linear), linear, t0)
     message = (f"no_solution: load.force = {scene.load.force:.4g} N exceeds what the rigid "
                f"Barus point contact can carry: its largest load is {limit:.4g} N, at the "
