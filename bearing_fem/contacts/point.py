@@ -608,19 +608,29 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     piezo = require_positive("piezo", piezo, "1/Pa")
     nodes = require_int("nodes", nodes, 9, what="grid nodes per direction")
     h_n = 1e-6  # any gap: the solution is rescaled to h0* below
-    xu, yu = math.sqrt(2.0 * rx * h_n), math.sqrt(2.0 * ry * h_n)
-    (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
-    grid = PointGrid.tensor(graded_coordinates(x0, x1, nodes, xu, stretch=1.5),
-                            graded_coordinates(y0, y1, nodes, yu, stretch=1.5))
-    q, _, _ = reduced_pressure_solve(grid, h_n, rx, ry, mean_speed, viscosity,
-                                     np.zeros(grid.size), "reynolds")
-    q = np.maximum(q, 0.0)
+    grid, q = _rigid_reduced_pressure(rx, ry, h_n, mean_speed, viscosity, nodes)
     q_max = float(np.max(q))
     h_star = h_n * (piezo * q_max) ** (2.0 / 3.0)
     ops = grid.ops
     ratio = np.minimum(ops.value @ (q / q_max), 1.0 - 1e-16)
     load = (h_star / h_n) * float(ops.weights @ -np.log1p(-ratio)) / piezo
     return load, h_star
+
+
+def _rigid_reduced_pressure(rx: float, ry: float, h0: float, mean_speed: float,
+                            viscosity: float, nodes: int) -> tuple[PointGrid, np.ndarray]:
+    """The isoviscous reduced pressure q >= 0 [Pa] of a rigid point contact with the
+    Reynolds outlet at the gap ``h0`` [m], on a sinh-graded grid of ``nodes`` per
+    direction over :data:`RIGID_RANGE_REYNOLDS` (in units of sqrt(2 rx h0), sqrt(2 ry h0)):
+    the self-similar solution behind :func:`rigid_barus_point_load_limit` and
+    :func:`rigid_isoviscous_load_integral`. Returns the grid and the nodal q."""
+    xu, yu = math.sqrt(2.0 * rx * h0), math.sqrt(2.0 * ry * h0)
+    (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
+    grid = PointGrid.tensor(graded_coordinates(x0, x1, nodes, xu, stretch=1.5),
+                            graded_coordinates(y0, y1, nodes, yu, stretch=1.5))
+    q, _, _ = reduced_pressure_solve(grid, h0, rx, ry, mean_speed, viscosity,
+                                     np.zeros(grid.size), "reynolds")
+    return grid, np.maximum(q, 0.0)
 
 
 #: Nodes per direction of the reduced-pressure solve of
@@ -654,14 +664,9 @@ def rigid_isoviscous_load_integral(ratio: float, nodes: int = LOAD_INTEGRAL_NODE
         I [-].
     """
     rx, ry, h_n = 1.0, float(ratio), 1.0
-    xu, yu = math.sqrt(2.0 * rx * h_n), math.sqrt(2.0 * ry * h_n)
-    (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
-    grid = PointGrid.tensor(graded_coordinates(x0, x1, nodes, xu, stretch=1.5),
-                            graded_coordinates(y0, y1, nodes, yu, stretch=1.5))
-    q, _, _ = reduced_pressure_solve(grid, h_n, rx, ry, 1.0, 1.0, np.zeros(grid.size),
-                                     "reynolds")
+    grid, q = _rigid_reduced_pressure(rx, ry, h_n, 1.0, 1.0, nodes)
     ops = grid.ops
-    load = float(ops.weights @ (ops.value @ np.maximum(q, 0.0)))
+    load = float(ops.weights @ (ops.value @ q))
     return load / (2.0 * math.sqrt(2.0) * rx * math.sqrt(ry) / math.sqrt(h_n))
 
 
