@@ -21,7 +21,7 @@ import scipy.sparse.linalg as spla
 from ..analytic import (ROELANDS_REDUCED_MIN_INDEX, barus_from_reduced, reduced_from_barus,
                         reduced_from_roelands, roelands_from_reduced,
                         roelands_reduced_limit)
-from ..physics.rheology import ROELANDS_P0, roelands_index
+from ..physics.rheology import roelands_index
 
 
 @dataclass(frozen=True)
@@ -59,12 +59,9 @@ def reduced_law(lubricant) -> ReducedLaw:
                           lambda q: barus_from_reduced(q, alpha), alpha)
     if lubricant.viscosity_law == "roelands":
         eta0 = lubricant.viscosity
-        # q(-p0), the reduced pressure of the law's lowest pressure: the floor of q
-        q_min = float(reduced_from_roelands(-ROELANDS_P0, eta0, alpha))
         return ReducedLaw("roelands", roelands_reduced_limit(eta0, alpha),
                           lambda p: reduced_from_roelands(p, eta0, alpha),
-                          lambda q: roelands_from_reduced(np.maximum(q, q_min), eta0, alpha),
-                          alpha)
+                          lambda q: roelands_from_reduced(q, eta0, alpha), alpha)
     raise ValueError(f"no reduced pressure for viscosity_law {lubricant.viscosity_law!r}")
 
 
@@ -115,18 +112,16 @@ def active_set_solve(a: sp.spmatrix, f: np.ndarray, q_bc: np.ndarray, free: np.n
     -------
     q : ndarray (nodal, Pa); linear_solves : int; active : bool ndarray (cavitated nodes)
     """
-    n = q_bc.size
-    if active is not None and cavitation == "reynolds":
-        start = np.zeros(n, dtype=bool)
-        start[free] = np.asarray(active, dtype=bool)[free]
-        q, solves, found, settled = _sweeps(a, f, q_bc, free, cavitation, max_sweeps, start)
-        if settled:
-            return q, solves, found
-        q, more, found, _ = _sweeps(a, f, q_bc, free, cavitation, max_sweeps,
-                                    np.zeros(n, dtype=bool))
-        return q, solves + more, found
-    q, solves, found, _ = _sweeps(a, f, q_bc, free, cavitation, max_sweeps,
-                                  np.zeros(n, dtype=bool))
+    cold = np.zeros(q_bc.size, dtype=bool)
+    if active is None or cavitation != "reynolds":
+        q, solves, found, _ = _sweeps(a, f, q_bc, free, cavitation, max_sweeps, cold)
+        return q, solves, found
+    start = cold.copy()
+    start[free] = np.asarray(active, dtype=bool)[free]
+    q, solves, found, settled = _sweeps(a, f, q_bc, free, cavitation, max_sweeps, start)
+    if not settled:
+        q, more, found, _ = _sweeps(a, f, q_bc, free, cavitation, max_sweeps, cold)
+        solves += more
     return q, solves, found
 
 

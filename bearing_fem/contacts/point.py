@@ -68,7 +68,7 @@ from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
 from ..validation import require_int, require_positive
 from ..scene import Scene
-from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
+from .driver import (DriverSettings, Progress, Solution, finish, solve_linear_model,
                      solve_newton_model)
 from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
                      reduced_law)
@@ -1602,14 +1602,15 @@ def solve_point(scene: Scene, *, boundary_pressure: Callable | np.ndarray | None
         model = PointModel(scene, boundary_pressure, sq)
         if is_linear(scene):
             return solve_linear_model(model, scene, t0)
-        over = (_rigid_barus_overload(scene)
-                if boundary_pressure is None and sq == 0.0 else None)
+        plain = boundary_pressure is None and sq == 0.0   # no Dirichlet data, no squeeze
+        over = _rigid_barus_overload(scene) if plain else None
         if over is not None:
             return _overload_result(scene, *over, t0)
         result = solve_newton_model(model, scene, t0, progress=progress)
-        if boundary_pressure is None and sq == 0.0:
-            result.warnings += light_load_warning(scene)
-        if result.success or boundary_pressure is not None or sq != 0.0:
+        if not plain:
+            return result
+        result.warnings += light_load_warning(scene)
+        if result.success:
             return result
         narrow = high_load_scene(scene, result.newton_iterations, time.perf_counter() - t0)
         if narrow is None:
@@ -1659,7 +1660,8 @@ def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Re
     # alpha q_max < 1, as on a domain narrower than the default one)
     linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
                      lubricant=replace(scene.lubricant, viscosity_law="constant"))
-    res = solve_linear_model(PointModel(linear), linear, t0)
+    model = PointModel(linear)
+    _, solution, _, solves = model.linear(model.levels()[-1])  # one grid: no estimate
     message = (f"no_solution: load.force = {scene.load.force:.4g} N exceeds what the rigid "
                f"Barus point contact can carry: its largest load is {limit:.4g} N, at the "
                f"gap h0 = {h_star:.4g} m where alpha q_max = 1 (Kapitsa's existence limit "
@@ -1667,9 +1669,8 @@ def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Re
                "h0^(-3/2) as the gap closes). Lower the load, give the gap (load.gap) "
                "instead, or model the elasticity. The pressure field holds the reduced "
                f"pressure q at the gap {gap:.4g} m, no Newton iteration was run.")
-    return replace(res, scene=scene, success=False, status="no_solution", message=message,
-                   quantities={}, error_estimate=None, traction_model=None,
-                   wall_time_s=time.perf_counter() - t0)
+    return finish(scene, replace(solution, quantities={}, traction_model=None),
+                  status="no_solution", message=message, t0=t0, linear_solves=solves)
 
 
 def high_load_scene(scene: Scene, spent_iterations: int = 0,
