@@ -144,13 +144,14 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
     """h_min, h_central, p_max and load of a solution, and warnings when the minimum film
     lies between the nodes or below :data:`MOLECULAR_FILM`.
 
-    h_min is the minimum of the film field: over the nodes and the quadrature points (the
-    film between nodes: exact geometry plus the interpolated deformation), and never above
+    h_min is the minimum of the film field: over the nodes and ``h_q``, the film between
+    the nodes (at the quadrature points, and for half-space line contacts at points around
+    the nodal minimum from the deflection of the discrete pressure there), and never above
     h_central. p_max is the nodal maximum refined between the nodes (:func:`peak`).
 
     Parameters
     ----------
-    h_nodes, h_q : film at the nodes and at the quadrature points [m];
+    h_nodes, h_q : film at the nodes and between them [m];
     h_central : film at the Hertz centre [m]; p_nodes : nodal pressure [Pa];
     load : int p dA [N or N/m]; x, y : node coordinates [m] (``y`` for point contacts).
     """

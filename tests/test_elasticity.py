@@ -24,6 +24,7 @@ from bearing_fem.physics.elasticity import (
     MirroredHalfSpacePoint,
     RigidCompliance,
     kodnir_local_coefficient,
+    line_displacement_at,
     line_kernel,
     make_compliance,
     point_kernel,
@@ -235,6 +236,33 @@ def test_line_matrix_matches_quadrature():
                                err_msg="Toeplitz matrix vs quadrature of -(4/(pi E')) int "
                                        "ln|x - s| ds over each cell; 1e-10 covers quad's "
                                        "error at the log singularity")
+
+
+def test_line_displacement_of_the_piecewise_linear_pressure():
+    x = 1e-5 * np.array([-1.0, -0.6, -0.35, -0.2, -0.12, -0.05, 0.0, 0.3, 0.9])
+    p = 1e9 * np.array([0.0, 0.1, 0.4, 0.9, 1.2, 0.7, 0.5, 0.2, 0.0])
+    pts = np.concatenate((x, [-0.43e-5, -0.09e-5, 0.41e-5, 1.3e-5]))
+    ref = np.zeros(pts.size)
+    for k, xk in enumerate(pts):
+        for j in range(x.size - 1):
+            brk = [xk] if x[j] < xk < x[j + 1] else None
+            val, _ = scipy.integrate.quad(
+                lambda s: np.interp(s, x, p) * math.log(abs(xk - s)), x[j], x[j + 1],
+                points=brk, epsabs=0, epsrel=1e-13, limit=200)
+            ref[k] -= (4.0 / (math.pi * E_PRIME)) * val
+    np.testing.assert_allclose(line_displacement_at(x, p, E_PRIME, pts), ref, rtol=1e-10,
+                               err_msg="closed form against quadrature, at and between the "
+                                       "nodes and beyond the last one; 1e-10 covers quad "
+                                       "at the log singularity")
+    # differences of the deflection converge to those of the cell-constant operator
+    # (second order: the same pressure, represented by cells or by elements)
+    u = np.linspace(-4.5e-4, 1.5e-4, 601)
+    pu = 1e9 * np.sqrt(np.maximum(1.0 - (u / 1e-4) ** 2, 0.0)) ** 3
+    d_cells = HalfSpaceLine(u, E_PRIME).apply(pu)
+    d_p1 = line_displacement_at(u, pu, E_PRIME, u)
+    spread = np.ptp((d_p1 - d_p1[300]) - (d_cells - d_cells[300]))
+    assert spread < 1e-3 * np.ptp(d_cells), (spread, "a smooth pressure on 601 nodes: the "
+                                                     "two deflections differ by O(h^2)")
 
 
 def test_graded_line_matrix_matches_quadrature_and_the_uniform_operator():

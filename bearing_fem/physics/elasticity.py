@@ -545,6 +545,50 @@ def _log_antiderivative(t: np.ndarray) -> np.ndarray:
     return _xlogx(t) - np.asarray(t, dtype=float)
 
 
+def line_displacement_at(x: np.ndarray, p: np.ndarray, e_prime: float,
+                         points: np.ndarray) -> np.ndarray:
+    """Plane-strain displacement at any points of a piecewise-linear line pressure.
+
+    ``v(x) = -(4/(pi E')) int p(s) ln|x - s| ds`` with p linear between the nodes and 0
+    outside them, in closed form per element: with u = s - x,
+    ``int ln|u| du = G(u) = u ln|u| - u`` and ``int u ln|u| du = H(u) = u^2 ln|u|/2 - u^2/4``.
+    The compliance operators act on cell-constant pressures (:class:`HalfSpaceLine`,
+    :class:`GradedHalfSpaceLine`); this is the deflection of the finite element pressure
+    itself, smooth between the nodes, whose bow there the film minimum of a line contact
+    takes into account (``bearing_fem.contacts.line``). Differences of v are physical;
+    v itself carries the constant of the logarithm of lengths in metres.
+
+    Parameters
+    ----------
+    x : ndarray, shape (N,)
+        Increasing node coordinates, m.
+    p : ndarray, shape (N,)
+        Nodal pressure, Pa.
+    e_prime : float
+        Reduced modulus E', Pa.
+    points : ndarray, shape (K,)
+        Where the displacement is wanted, m.
+
+    Returns
+    -------
+    ndarray, shape (K,)
+        Displacement v, m.
+    """
+    x = np.asarray(x, dtype=float)
+    p = np.asarray(p, dtype=float)
+    u0 = x[None, :-1] - np.asarray(points, dtype=float)[:, None]
+    u1 = x[None, 1:] - np.asarray(points, dtype=float)[:, None]
+
+    def h_anti(u: np.ndarray) -> np.ndarray:
+        return 0.5 * u * _xlogx(u) - 0.25 * u * u
+
+    g0, g1 = _log_antiderivative(u0), _log_antiderivative(u1)
+    i0 = g1 - g0                                   # int ln|u| over the element
+    i1 = (h_anti(u1) - h_anti(u0)) - u0 * i0       # int (u - u0) ln|u| over it
+    slope = np.diff(p) / np.diff(x)
+    return -(4.0 / (math.pi * e_prime)) * (i0 @ p[:-1] + i1 @ slope)
+
+
 class GradedHalfSpaceLine(Compliance):
     """The plane-strain half-space of :class:`HalfSpaceLine` on any increasing nodes.
 
