@@ -345,9 +345,10 @@ def line_ehl_case(quick: bool, mesh_dir: Path) -> Case:
     return Case("line_ehl", "EHL line contact, Moes M = 100, L = 10", solve_contact, settings,
                 repeats=3 if not quick else 2, reference_family="uniform",
                 notes=[SPIKE_NOTE,
-                       "h_min is the smallest nodal film near the outlet constriction; its "
-                       "position moves between nodes as the grid changes, so its error is not "
-                       "monotone in the grid and its fitted order is low"])
+                       "h_min is the minimum of the film at the outlet constriction (between "
+                       "the nodes included); on uniform grids it converges slowly from below "
+                       "until the outlet spike is resolved, on grids graded there at about "
+                       "second order"])
 
 
 def point_ehl_case(quick: bool, ry_over_rx: float = 1.0) -> Case:

@@ -20,8 +20,9 @@ def test_palmgren_branches_and_units():
     np.testing.assert_allclose(hi["M1"], 0.003 * 5e5 * 200 / 2, rtol=1e-14,
                                err_msg="load torque M1 = f_pr P d/2 (N mm)")
     q = bearing.palmgren_heat_power(20.0, 537.0, **kw)
-    np.testing.assert_allclose(q, hi["M"] * 1e-3 * 537 * 2 * math.pi / 60, rtol=1e-3,
-                               err_msg="1.047e-4 = 2 pi/60/1000 (N mm rpm -> W)")
+    np.testing.assert_allclose(q, hi["M"] * 1e-3 * 537 * 2 * math.pi / 60, rtol=1e-13,
+                               err_msg="Q = M omega exactly (the paper's 1.047e-4 is "
+                                       "2 pi/60/1000 rounded)")
     with pytest.raises(ValueError, match="kinematic_viscosity_mm2s.*mm\\^2/s"):
         bearing.palmgren_friction_torque(-1.0, 537.0, **kw)
 

@@ -99,11 +99,12 @@ def palmgren_heat_power(kinematic_viscosity_mm2s: float, rpm: float, mean_diamet
     """Empirical bearing heat power Q = 1.047e-4 M n [W] (M in N mm, n in rpm) of
     :func:`palmgren_friction_torque` (Yachikov & Vostrikov 2015).
 
-    1.047e-4 = 2 pi / 60 / 1000 converts N mm x rpm to W.
+    1.047e-4 is the paper's rounding of 2 pi / 60 / 1000, which converts N mm x rpm to W;
+    the exact factor is used (:func:`torque_to_heat_power`), so that Q = M omega.
     """
     m = palmgren_friction_torque(kinematic_viscosity_mm2s, rpm, mean_diameter_mm, bore_mm,
                                  radial_load, axial_load, f0=f0, f_pr=f_pr)["M"]
-    return 1.047e-4 * m * float(rpm)
+    return torque_to_heat_power(m, rpm)
 
 
 # ---------------------------------------------------------------------------------------
@@ -554,7 +555,7 @@ def empirical_models(bearing: Bearing, loaded_contact_angle_deg: float = 0.0
         mb = palmgren_friction_torque(nu, n, dm_mm, g.bore * 1e3, max(fr, 1e-300), fa, f0=f0,
                                       f_pr=opts.friction_coefficient)
         out["palmgren_bore_form"] = {
-            "torque": mb["M"] * 1e-3, "heat_power": 1.047e-4 * mb["M"] * n,
+            "torque": mb["M"] * 1e-3, "heat_power": torque_to_heat_power(mb["M"], n),
             "torque_viscous": mb["M0"] * 1e-3, "torque_load": mb["M1"] * 1e-3,
             "source": "Yachikov & Vostrikov (2015): M1 = f_pr P d/2, Q = 1.047e-4 M n",
             "parameters": {"f0": f0, "f_pr": opts.friction_coefficient,

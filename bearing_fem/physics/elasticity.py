@@ -65,6 +65,7 @@ __all__ = [
     "make_compliance",
     "kodnir_local_coefficient",
     "line_kernel",
+    "line_displacement_at",
     "point_kernel",
     "DENSE_POINT_CAP",
     "UNIFORMITY_TOLERANCE",
