@@ -10,8 +10,8 @@ The only module of the package that prints or exits. Exit codes:
   on stderr, no traceback, nothing written;
 * 3 -- no converged solution (``max_iterations``, ``stalled``, ``diverged``,
   ``budget_exhausted``, ``time_limit``) or no solution exists (``no_solution``); the
-  files are still written, with the status (``plot`` of such a result writes the figure
-  stamped with the status and also exits 3);
+  files are still written, with the status (``plot`` of such a result, or of a squeeze
+  series without success, writes the figure stamped with the status and also exits 3);
 * 130 -- interrupted (Ctrl-C): one line on stderr; an export in progress leaves no file
   behind;
 * 141 -- the reader of the output closed it (``bearing-fem runs STORE | head``): no
@@ -221,15 +221,77 @@ def _cmd_demo(args: argparse.Namespace) -> int:
     return _solve_and_write(scene, out, out / DEMO_PNG, args.quiet)
 
 
+#: Figure written by ``bearing-fem plot`` of a squeeze series, beside its summary.json.
+SERIES_PNG = "series.png"
+
+
+def _is_series(path: Path) -> bool:
+    """True if ``path`` is a squeeze-series export (its folder, its summary.json or one of
+    its files): the summary.json there says ``"kind": "squeeze series"``."""
+    import json
+
+    if path.is_dir():
+        if (path / "result.h5").is_file():
+            return False
+        summary = path / "summary.json"
+    elif path.name == "result.h5":
+        return False
+    else:
+        summary = path if path.name == "summary.json" else path.parent / "summary.json"
+    try:
+        data = json.loads(summary.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError):
+        return False
+    return isinstance(data, dict) and data.get("kind") == "squeeze series"
+
+
+def _cmd_plot_series(path: Path, args: argparse.Namespace) -> int:
+    """``bearing-fem plot`` of a squeeze-series export: the series against time."""
+    import numpy as np
+
+    from .io import read_series
+
+    if args.kind is not None:
+        raise _InputError(f"--kind {args.kind} applies to a contact result.h5; "
+                          f"{str(path)!r} holds a squeeze series, drawn as one figure "
+                          "against time (leave --kind out)")
+    try:
+        main = read_series(path)
+        compare = [read_series(Path(c)) for c in args.compare]
+    except ValueError as exc:  # names the file and what it lacks
+        raise _InputError(str(exc)) from None
+    out = (_out_dir(args.out) if args.out is not None
+           else main["path"].parent / SERIES_PNG)
+    from .plot import plot_series
+
+    written = plot_series(main["path"], out, compare=[c["path"] for c in compare])
+    if not args.quiet:
+        print(f"wrote {written}")
+    if not main["success"]:
+        unsolved = int(np.ma.count_masked(main["p_max"]))
+        print(f"bearing-fem: no converged series (status {main['status']}): the figure "
+              f"{str(written)!r} is stamped with the status and shows the "
+              f"{main['instants'] - unsolved} solved of {main['instants']} exported "
+              f"instants: {main['message']}", file=sys.stderr)
+        return EXIT_NO_SOLUTION
+    return EXIT_OK
+
+
 def _cmd_plot(args: argparse.Namespace) -> int:
     from .io import read_result
 
     path = Path(args.result)
+    if _is_series(path):
+        return _cmd_plot_series(path, args)
+    if args.compare:
+        raise _InputError(f"--compare applies to squeeze series; {str(path)!r} is not a "
+                          "series export (a folder with the summary.json of a "
+                          "[transient] scene)")
     if path.is_dir():
         path = path / "result.h5"
     if not path.is_file():
         raise _InputError(f"no result file {str(path)!r} (give a result.h5 written by "
-                          "'bearing-fem solve')")
+                          "'bearing-fem solve', or the folder of a squeeze series)")
     try:
         attrs = read_result(path)   # the one check of a contact result file
     except ValueError as exc:       # names the file and what it lacks
@@ -540,16 +602,25 @@ def build_parser() -> argparse.ArgumentParser:
                         "1201 nodes); a coarse mesh, e.g. 401, gives a quick look")
     p.set_defaults(func=_cmd_demo)
 
-    p = sub.add_parser("plot", help="plot a result.h5",
+    p = sub.add_parser("plot", help="plot a result.h5 or a squeeze series",
                        description="Plot a result.h5 written by 'bearing-fem solve' or "
-                                   "'bearing-fem demo'. A result without success is still "
-                                   "drawn, stamped with its status, and the exit code is 3.")
-    p.add_argument("result", metavar="RESULT_H5", help="result.h5 (or its directory)")
+                                   "'bearing-fem demo', or the output folder of a squeeze "
+                                   "series (a [transient] scene): its films, p_max and "
+                                   "load against time. A result or series without success "
+                                   "is still drawn, stamped with its status, and the exit "
+                                   "code is 3.")
+    p.add_argument("result", metavar="RESULT_H5",
+                   help="result.h5 (or its directory), or a series output folder")
     p.add_argument("--out", "-o", metavar="PNG", default=None,
-                   help="figure file (default: RESULT_H5 with the suffix .png)")
+                   help="figure file (default: RESULT_H5 with the suffix .png; "
+                        f"DIR/{SERIES_PNG} for a series)")
     p.add_argument("--kind", choices=("map", "surface", "line"), default=None,
-                   help="figure kind (default: line for line contacts, map for point "
-                        "contacts; map and surface apply to point contacts only)")
+                   help="figure kind of a contact result (default: line for line "
+                        "contacts, map for point contacts; map and surface apply to point "
+                        "contacts only)")
+    p.add_argument("--compare", metavar="DIR", action="append", default=[],
+                   help="series only: another series output drawn dashed on the same axes "
+                        "(e.g. the rigid or quasi-steady series of the scene); repeatable")
     p.set_defaults(func=_cmd_plot)
 
     p = sub.add_parser("bearing", help="solve a bearing file: EHL at every rolling element",

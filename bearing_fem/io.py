@@ -534,6 +534,120 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     return final
 
 
+#: Columns of a series summary: the prescribed ones (every instant has them) and the
+#: solved ones (``null`` where an instant has no solution), with their units.
+SERIES_PRESCRIBED = {"times": "s", "gap": "m", "squeeze_velocity": "m/s"}
+SERIES_SOLVED = {"p_max": "Pa", "h_min": "m", "h_central": "m", "load": "N"}
+
+
+def read_series(path: str | Path) -> dict[str, Any]:
+    """Read the ``summary.json`` of a squeeze series written by :func:`export_series`.
+
+    Parameters
+    ----------
+    path : str or Path
+        The export directory, its ``summary.json``, or one of the series' files in it
+        (``.h5``, ``.xdmf``, ``.pvd``, ``.vtu``).
+
+    Returns
+    -------
+    dict
+        The summary's keys (``status``, ``success``, ``message``, ``scheme``,
+        ``instants``, ``warnings``, ``units``, ``scene``, ...) with the columns as arrays:
+        ``times`` [s], ``gap`` = h0(t) [m], ``squeeze_velocity`` = dh0/dt [m/s] as float
+        arrays; ``p_max`` [Pa], ``h_min``, ``h_central`` [m] and ``load`` [N] as masked
+        float arrays, masked at the instants without solution (``null`` in the file);
+        ``title`` (the scene's, or "") and ``path`` (the summary file).
+
+    Raises
+    ------
+    ValueError
+        No ``summary.json`` there, not strict JSON, not a series summary (``kind`` is not
+        ``"squeeze series"``), a missing column, columns of unequal length or a
+        non-finite value.
+    """
+    path = Path(path)
+    if not path.exists():
+        raise ValueError(f"no series export {str(path)!r}: no such file or folder")
+    if path.is_dir():
+        path = path / FILES["summary"]
+    elif path.name != FILES["summary"]:
+        path = path.parent / FILES["summary"]
+    if not path.is_file():
+        raise ValueError(f"no series summary {str(path)!r} (the summary.json written by "
+                         "bearing_fem.io.export_series or 'bearing-fem solve' of a "
+                         "[transient] scene)")
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise ValueError(f"{str(path)!r} is not a JSON summary ({exc})") from None
+    out = series_from_summary(data, repr(str(path)))
+    out["path"] = path
+    return out
+
+
+def series_from_summary(summary: Mapping[str, Any], source: str = "the series summary"
+                        ) -> dict[str, Any]:
+    """The columns of a squeeze series' summary as arrays (the layout of
+    :func:`read_series`, without ``path``).
+
+    Parameters
+    ----------
+    summary : mapping
+        ``SqueezeSeries.summary()`` or its JSON read back.
+    source : str
+        Names the summary in error messages.
+
+    Returns
+    -------
+    dict
+        The summary's keys; ``times`` [s], ``gap`` [m], ``squeeze_velocity`` [m/s] as
+        float arrays, ``p_max`` [Pa], ``h_min``, ``h_central`` [m], ``load`` [N] as masked
+        float arrays (masked where the summary holds ``None``); ``title`` (the scene's).
+
+    Raises
+    ------
+    ValueError
+        Not a series summary, a missing column, columns of unequal length, a missing
+        prescribed value or a non-finite value.
+    """
+    data = summary
+    if not isinstance(data, Mapping) or data.get("kind") != "squeeze series":
+        kind = data.get("kind") if isinstance(data, Mapping) else type(data).__name__
+        raise ValueError(f"{source} is not the summary of a squeeze series (kind "
+                         f"{kind!r}, expected 'squeeze series')")
+    missing = [k for k in ("status", "success", "message", "instants", *SERIES_PRESCRIBED,
+                           *SERIES_SOLVED) if k not in data]
+    if missing:
+        raise ValueError(f"{source}: the series summary lacks {', '.join(missing)}")
+    n = data["instants"]
+    out = dict(data)
+    for key, unit in {**SERIES_PRESCRIBED, **SERIES_SOLVED}.items():
+        column = data[key]
+        if not isinstance(column, (list, tuple)) or len(column) != n:
+            raise ValueError(f"{source}: {key} must list one value [{unit}] per instant "
+                             f"({n}), got "
+                             f"{len(column) if isinstance(column, (list, tuple)) else column!r}")
+        solved = key in SERIES_SOLVED
+        mask = np.array([v is None for v in column], dtype=bool)
+        if mask.any() and not solved:
+            raise ValueError(f"{source}: {key} [{unit}] has no value at instant "
+                             f"{int(np.argmax(mask))}")
+        try:
+            values = np.array([0.0 if v is None else float(v) for v in column], dtype=float)
+        except (TypeError, ValueError):
+            raise ValueError(f"{source}: {key} [{unit}] holds a non-number") from None
+        if not np.all(np.isfinite(values)):
+            raise ValueError(f"{source}: {key} [{unit}] holds a non-finite value")
+        out[key] = np.ma.MaskedArray(values, mask=mask) if solved else values
+    scene = data.get("scene")
+    out["title"] = str(scene.get("title") or "") if isinstance(scene, Mapping) else ""
+    return out
+
+
+__all__ += ["read_series", "series_from_summary", "SERIES_PRESCRIBED", "SERIES_SOLVED"]
+
+
 # ---------------------------------------------------------------------------------------
 # reader
 # ---------------------------------------------------------------------------------------

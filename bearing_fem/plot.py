@@ -11,6 +11,12 @@
 * line contacts: pressure and film versus x/b, zoomed on the contact (``kind="line"``;
   ``map`` and ``surface`` are refused with a ValueError).
 
+``plot_series(series_or_path, out_png, compare=())``: a squeeze series (or its export,
+read by :func:`bearing_fem.io.read_series`) against time: the films h0(t), h_central and
+h_min [um], p_max [MPa] and the film force [N], one point per instant; instants without
+solution are marked, a series without success is stamped with its status; ``compare``
+draws further series dashed on the same axes. matplotlib (Agg) only.
+
 A result without success is still drawn, but never dressed up as a solution: its title
 starts with "NOT A SOLUTION (status ...)" and a red stamp crosses the axes; the field of
 a ``no_solution`` result is the isoviscous reduced pressure q (the solver's message says
@@ -33,7 +39,7 @@ import logging
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Sequence
 
 import numpy as np
 
@@ -102,7 +108,8 @@ def _from_h5(path: Path) -> PlotData:
     if path.is_dir():
         path = path / "result.h5"
     if not path.is_file():
-        raise FileNotFoundError(f"no result file at {str(path)!r} (expected result.h5)")
+        raise FileNotFoundError(f"no result file at {str(path)!r} (expected result.h5; "
+                                "the output of a squeeze series is drawn by plot_series)")
     with h5py.File(path, "r") as f:
         def find(*names):
             for n in names:
@@ -305,19 +312,23 @@ def field_label(d: PlotData) -> str:
     return "pressure [MPa]" if d.success else "pressure of the last iterate [MPa]"
 
 
-def figure_title(d: PlotData, what: str) -> str:
+def figure_title(d: PlotData | SeriesPlotData, what: str) -> str:
     """Title of a figure: ``what``, the scene title, and a status stamp unless solved."""
     text = what + (f" - {d.title}" if d.title else "")
     if not d.success:
-        text = f"NOT A SOLUTION (status {d.status})\n" + text
+        text = f"{_headline(d)} (status {d.status})\n" + text
     return text
 
 
-def _stamp(fig: Any, d: PlotData) -> None:
-    """A red stamp across an unsuccessful result's figure."""
+def _headline(d: PlotData | SeriesPlotData) -> str:
+    return "NOT A SOLVED SERIES" if isinstance(d, SeriesPlotData) else "NOT A SOLUTION"
+
+
+def _stamp(fig: Any, d: PlotData | SeriesPlotData) -> None:
+    """A red stamp across an unsuccessful result's (or series') figure."""
     if d.success:
         return
-    fig.text(0.5, 0.5, f"NOT A SOLUTION\nstatus: {d.status}", color="red", alpha=0.35,
+    fig.text(0.5, 0.5, f"{_headline(d)}\nstatus: {d.status}", color="red", alpha=0.35,
              fontsize=28, fontweight="bold", ha="center", va="center", rotation=20)
 
 
@@ -520,3 +531,169 @@ def _matplotlib_line(d: PlotData, out: Path) -> None:
         top = min(top, 4.0 * ref) if ref > 0 else top
         ax2.set_ylim(min(0.0, lo), max(top * 1.05, 1e-9))
     _save(fig, ax, d, what, out)
+
+
+# ---------------------------------------------------------------------------------------
+# squeeze series: the per-instant quantities against time
+# ---------------------------------------------------------------------------------------
+@dataclass
+class SeriesPlotData:
+    """A squeeze series to draw against time (SI). The solved columns are masked arrays,
+    masked at the instants without solution."""
+
+    times: np.ndarray               # s
+    gap: np.ndarray                 # h0(t) [m], prescribed
+    p_max: np.ma.MaskedArray        # Pa
+    h_min: np.ma.MaskedArray        # m
+    h_central: np.ma.MaskedArray    # m
+    load: np.ma.MaskedArray         # film force int p dA [N]
+    title: str = ""
+    status: str = "converged"
+    success: bool = True
+    message: str = ""
+    #: "rigid, quasi-steady", "elastic, bdf2", ...: names the series in a legend
+    label: str = "series"
+
+
+def _series_label(summary: dict) -> str:
+    scene = summary.get("scene")
+    model = scene.get("model") if isinstance(scene, dict) else None
+    elasticity = model.get("elasticity") if isinstance(model, dict) else None
+    what = {"rigid": "rigid", "half-space": "elastic"}.get(str(elasticity), "")
+    scheme = str(summary.get("scheme") or "")
+    return ", ".join(x for x in (what, scheme) if x) or "series"
+
+
+def load_series_data(series_or_path: Any) -> SeriesPlotData:
+    """The per-instant quantities of a squeeze series, to draw against time.
+
+    Parameters
+    ----------
+    series_or_path : SqueezeSeries, ElasticSqueezeSeries or path
+        A series (anything with ``summary()`` of a squeeze series), or an export of
+        :func:`bearing_fem.io.export_series` (its directory, its ``summary.json`` or one
+        of its files), read by :func:`bearing_fem.io.read_series`.
+
+    Returns
+    -------
+    SeriesPlotData
+        t [s], h0(t) [m], p_max [Pa], h_min and h_central [m], load [N] (masked where an
+        instant has no solution), title, status, success, message and a legend label.
+
+    Raises
+    ------
+    ValueError
+        Not a squeeze series (see :func:`bearing_fem.io.read_series`).
+    TypeError
+        Neither a series nor a path.
+    """
+    from .io import read_series, series_from_summary
+
+    if isinstance(series_or_path, (str, os.PathLike)):
+        s = read_series(series_or_path)
+    elif hasattr(series_or_path, "summary") and hasattr(series_or_path, "times"):
+        s = series_from_summary(series_or_path.summary())
+    else:
+        raise TypeError(f"plot_series needs a squeeze series or the path of its export, "
+                        f"got {type(series_or_path).__name__}")
+    return SeriesPlotData(times=s["times"], gap=s["gap"], p_max=s["p_max"],
+                          h_min=s["h_min"], h_central=s["h_central"], load=s["load"],
+                          title=s["title"], status=str(s["status"]),
+                          success=bool(s["success"]), message=str(s.get("message", "")),
+                          label=_series_label(s))
+
+
+def _time_unit(times: list[np.ndarray]) -> tuple[float, str]:
+    """Scale and name of the time axis: us below 1 ms, ms below 1 s, else s."""
+    top = max((float(np.max(np.abs(t))) for t in times if t.size), default=0.0)
+    if 0.0 < top < 1e-3:
+        return 1e6, "us"
+    if 0.0 < top < 1.0:
+        return 1e3, "ms"
+    return 1.0, "s"
+
+
+def plot_series(series_or_path: Any, out_png: str | os.PathLike, *,
+                compare: Sequence[Any] = ()) -> Path:
+    """Draw a squeeze series against time to a PNG, off-screen (matplotlib, Agg).
+
+    Three panels over t: the films (the prescribed rigid offset h0(t), the central film
+    h_central and the minimum film h_min) [um], the maximum pressure p_max [MPa] and the
+    film force (``load``, int p dA) [N]. Instants without solution are marked by red
+    dotted vertical lines and leave a gap in the solved curves. A series without success
+    is stamped with its status (title "NOT A SOLVED SERIES (status ...)", its message
+    below, a red stamp across the figure), as :func:`plot_result` stamps a failed result.
+
+    Parameters
+    ----------
+    series_or_path : SqueezeSeries, ElasticSqueezeSeries or path
+        The series, or its export (see :func:`load_series_data`).
+    out_png : path
+        Output file [PNG].
+    compare : sequence of series or paths
+        Further series drawn dashed on the same axes (e.g. the rigid or elastic
+        quasi-steady series of the same scene), each named by its model and scheme.
+
+    Returns
+    -------
+    Path
+        The written PNG.
+    """
+    import textwrap
+
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    d = load_series_data(series_or_path)
+    others = [load_series_data(c) for c in compare]
+    out = Path(out_png)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    scale, unit = _time_unit([d.times] + [o.times for o in others])
+    fig, (axh, axp, axf) = plt.subplots(3, 1, figsize=(8, 9), sharex=True,
+                                        layout="constrained")
+    colours = ("tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown")
+    for k, s in enumerate([d] + others):
+        c, ls = colours[k % len(colours)], "-" if k == 0 else "--"
+        # the title names the drawn series' status; a compared one's is in its label
+        name = s.label + ("" if s.success or k == 0 else f" (status {s.status})")
+        t = s.times * scale
+        same_gap = (k > 0 and s.times.shape == d.times.shape
+                    and np.allclose(s.times, d.times) and np.allclose(s.gap, d.gap))
+        if not same_gap:  # a compared series on the same h0(t) does not repeat it
+            axh.plot(t, s.gap * 1e6, color="black" if k == 0 else c, linewidth=0.9,
+                     linestyle="-" if k == 0 else ":",
+                     label="h0(t), prescribed" + (f" ({s.label})" if k else ""))
+        axh.plot(t, s.h_central * 1e6, color=c, linestyle=ls, marker=".",
+                 label=f"h_central, {name}")
+        axh.plot(t, s.h_min * 1e6, color=c, linestyle="-." if k == 0 else (0, (1, 2)),
+                 marker="v", markersize=3, label=f"h_min, {name}")
+        axp.plot(t, s.p_max / 1e6, color=c, linestyle=ls, marker=".", label=name)
+        axf.plot(t, s.load, color=c, linestyle=ls, marker=".", label=name)
+        failed = t[np.ma.getmaskarray(s.p_max)]
+        for ax in (axh, axp, axf):
+            for j, tf in enumerate(failed):
+                ax.axvline(tf, color="red", linestyle=":", linewidth=1.0,
+                           label="instant without solution" if j == 0 and ax is axp else None)
+    if d.times.size == 0:
+        axp.text(0.5, 0.85, "no instant solved", transform=axp.transAxes, ha="center",
+                 va="center", color="red")
+    axf.axhline(0.0, color="grey", linewidth=0.5)
+    axh.set_ylabel("film [um]")
+    axp.set_ylabel("p_max [MPa]")
+    axf.set_ylabel("load: film force int p dA [N]")
+    axf.set_xlabel(f"t [{unit}]")
+    for ax in (axh, axp, axf):
+        ax.grid(True, linewidth=0.3)
+        handles, _ = ax.get_legend_handles_labels()
+        if handles:
+            ax.legend(fontsize=7, loc="best", framealpha=0.6)
+    title = figure_title(d, f"squeeze series ({d.label})")
+    if not d.success and d.message:
+        title += "\n" + "\n".join(textwrap.wrap(d.message, 110, max_lines=3))
+    axh.set_title(title, fontsize=9)
+    _stamp(fig, d)
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
+    return out

@@ -310,3 +310,174 @@ def test_thermal_line_plot_draws_the_surface_temperatures(tmp_path, figures):
                                err_msg="the same rises from result.h5")
     assert plot.load_plot_data(solve(replace(scene, model=Model(elasticity="local"),
                                              thermal=None))).surface_rise is None
+
+
+# ---------------------------------------------------------------------------------------
+# squeeze series: drawn against time, stamped unless solved, read back as exported
+# ---------------------------------------------------------------------------------------
+#: A rigid ball with a vibrating gap h0(t) = 0.2 um (1 + 0.3 cos(omega t)), 4 steps on
+#: 33^2 nodes (about 0.2 s).
+SERIES = {
+    "title": "ball, vibrating gap",
+    "contact": {"kind": "point", "rx": 0.00635, "ry": 0.00635},
+    "lubricant": {"viscosity": 0.0106, "piezo": 2e-8},
+    "kinematics": {"u1": 2.0, "u2": 2.0},
+    "load": {"gap": 2e-7},
+    "model": {"elasticity": "rigid", "cavitation": "none"},
+    "mesh": {"nodes": [33, 33]},
+    "transient": {"amplitude": 0.3, "steps": 4},
+}
+
+
+def _series(**lubricant):
+    from bearing_fem.contacts.dispatch import solve_series
+
+    data = {**SERIES, "lubricant": {**SERIES["lubricant"], **lubricant}}
+    return solve_series(Scene.from_dict(data))
+
+
+@pytest.fixture(scope="module")
+def rigid_series():
+    series = _series()
+    assert series.success and len(series.results) == 5, series.message
+    return series
+
+
+@pytest.fixture(scope="module")
+def mixed_series():
+    """alpha = 3.2e-8 1/Pa: Kapitsa's limit alpha q_max < 1 holds at every instant but the
+    narrowest gap (alpha q_max = 1.2 there, below 0.9 elsewhere): a real series with one
+    instant without solution."""
+    series = _series(piezo=3.2e-8)
+    assert [r.success for r in series.results] == [True, True, False, True, True], \
+        series.statuses
+    return series
+
+
+def _series_texts(fig) -> str:
+    """Titles, axis labels, free texts and legend entries of a figure, one string."""
+    parts = [t.get_text() for t in fig.texts]
+    for ax in fig.axes:
+        parts += [ax.get_title(), ax.get_xlabel(), ax.get_ylabel()]
+        parts += [t.get_text() for t in ax.texts]
+        if ax.get_legend() is not None:
+            parts += [t.get_text() for t in ax.get_legend().get_texts()]
+    return "\n".join(parts)
+
+
+def _assert_read_back(series, tmp_path):
+    """The exported series reads back as its own arrays, masked where unsolved."""
+    from bearing_fem.io import export_series, read_series
+
+    files = export_series(series, tmp_path)
+    # any file of the export leads to its summary (without instants: the summary alone)
+    back = read_series(files.get("h5", files["summary"]))
+    assert back["status"] == series.status and back["success"] == series.success
+    for key in ("times", "gap", "squeeze_velocity"):
+        np.testing.assert_array_equal(back[key], getattr(series, key),
+                                      err_msg=f"{key}: JSON keeps every digit of a float")
+    solved = np.array([r.success for r in series.results], dtype=bool)
+    for key in ("p_max", "h_min", "h_central", "load"):
+        col = back[key]
+        np.testing.assert_array_equal(np.ma.getmaskarray(col), ~solved,
+                                      err_msg=f"{key} masked exactly at the unsolved instants")
+        np.testing.assert_array_equal(
+            col.compressed(), [r.quantities[key] for r in series.results if r.success],
+            err_msg=f"{key}: read back as exported")
+    return back
+
+
+def test_series_figure_against_time(rigid_series, tmp_path, figures):
+    back = _assert_read_back(rigid_series, tmp_path)
+    assert back["instants"] == 5 and back["title"] == "ball, vibrating gap"
+    for source in (rigid_series, tmp_path):
+        out = plot.plot_series(source, tmp_path / "series.png")
+        assert out.is_file() and _pixel_std(out) > 0.02, "a blank image has no variance"
+        text = _series_texts(figures.saved[-1])
+        assert "NOT A" not in text, "a solved series is not stamped"
+        for label in ("film [um]", "p_max [MPa]", "[N]", "t [us]", "h0(t), prescribed",
+                      "squeeze series (rigid, quasi-steady) - ball, vibrating gap"):
+            assert label in text, (label, text)
+    axp = figures.saved[-1].axes[1]
+    np.testing.assert_allclose(axp.lines[0].get_ydata(), rigid_series.p_max / 1e6,
+                               rtol=1e-15, err_msg="the drawn p_max [MPa] is the series'")
+    np.testing.assert_allclose(axp.lines[0].get_xdata(), rigid_series.times * 1e6,
+                               rtol=1e-15, err_msg="the time axis in us")
+
+
+def test_series_with_an_unsolved_instant_is_stamped(mixed_series, tmp_path, figures):
+    from bearing_fem import cli
+
+    _assert_read_back(mixed_series, tmp_path)
+    assert cli.main(["plot", str(tmp_path), "-q"]) == 3, "not a solved series: exit 3"
+    assert (tmp_path / "series.png").is_file(), "the default figure beside summary.json"
+    text = _series_texts(figures.saved[-1])
+    assert "NOT A SOLVED SERIES (status no_solution)" in text, text
+    assert "status: no_solution" in text, "the red stamp across the axes"
+    assert "1 of 5 instants without solution" in text, "the series' message under the title"
+    assert "instant without solution" in text, "the unsolved instant is marked"
+    drawn = figures.saved[-1].axes[1].lines[0].get_ydata()
+    assert np.ma.is_masked(drawn) and np.ma.getmaskarray(drawn).tolist() == \
+        [False, False, True, False, False], "no p_max drawn where there is no solution"
+
+
+def test_partial_and_empty_series_are_stamped(rigid_series, tmp_path, figures):
+    """A series stopped by solver.time_limit after two instants, and one that solved no
+    instant (its export is the summary alone): figures stamped, exit code 3."""
+    from dataclasses import replace as dc_replace
+
+    from bearing_fem import cli
+    from bearing_fem.io import export_series
+
+    stop = ("time_limit", "time_limit: the series stopped after 2 of 5 instants")
+    partial = dc_replace(rigid_series, times=rigid_series.times[:2],
+                         gap=rigid_series.gap[:2],
+                         squeeze_velocity=rigid_series.squeeze_velocity[:2],
+                         p_max=rigid_series.p_max[:2], results=rigid_series.results[:2],
+                         stop=stop)
+    empty = dc_replace(partial, times=partial.times[:0], gap=partial.gap[:0],
+                       squeeze_velocity=partial.squeeze_velocity[:0],
+                       p_max=partial.p_max[:0], results=[])
+    for name, series, n in (("partial", partial, 2), ("empty", empty, 0)):
+        back = _assert_read_back(series, tmp_path / name)
+        assert back["instants"] == n and back["status"] == "time_limit"
+        out = tmp_path / f"{name}.png"
+        assert cli.main(["plot", str(tmp_path / name), "--out", str(out), "-q"]) == 3
+        assert out.is_file() and _pixel_std(out) > 0.02
+        text = _series_texts(figures.saved[-1])
+        assert "NOT A SOLVED SERIES (status time_limit)" in text, text
+        assert "stopped after 2 of 5 instants" in text, text
+        assert ("no instant solved" in text) == (n == 0), text
+
+
+def test_series_compare_and_cli_refusals(rigid_series, mixed_series, tmp_path, figures,
+                                         point_result):
+    from bearing_fem import cli
+    from bearing_fem.io import export, export_series
+
+    export_series(rigid_series, tmp_path / "a")
+    export_series(mixed_series, tmp_path / "b")
+    out = tmp_path / "ab.png"
+    assert cli.main(["plot", str(tmp_path / "a" / "squeeze.xdmf"), "--compare",
+                     str(tmp_path / "b"), "-o", str(out), "-q"]) == 0, \
+        "the drawn series decides the exit code"
+    text = _series_texts(figures.saved[-1])
+    assert "rigid, quasi-steady (status no_solution)" in text, "the compared series named"
+    assert "NOT A" not in text, text
+    axp = figures.saved[-1].axes[1]
+    assert [ln.get_linestyle() for ln in axp.lines[:2]] == ["-", "--"], "compared: dashed"
+    n_figures = len(figures.saved)
+    refused = [["plot", str(tmp_path / "a"), "--kind", "map", "-o", str(tmp_path / "k.png")],
+               ["plot", str(tmp_path / "a"), "--compare", str(tmp_path / "nowhere"),
+                "-o", str(tmp_path / "c.png")]]
+    export(point_result, tmp_path / "single")
+    refused.append(["plot", str(tmp_path / "single"), "--compare", str(tmp_path / "a"),
+                    "-o", str(tmp_path / "s.png")])
+    for argv in refused:
+        assert cli.main(argv) == 2, argv
+    from bearing_fem.io import read_series
+
+    with pytest.raises(ValueError, match="not the summary of a squeeze series"):
+        read_series(tmp_path / "single")  # a contact result's summary.json
+    assert len(figures.saved) == n_figures and not list(tmp_path.glob("[kcs].png")), \
+        "a refused plot writes nothing"

@@ -9,7 +9,7 @@ import numpy as np
 
 import bearing_fem as bf
 from bearing_fem import analytic, cli
-from bearing_fem.io import scene_to_toml
+from bearing_fem.io import read_series, scene_to_toml
 
 RIGID = {
     "title": "rigid ball, vibrating gap",
@@ -73,6 +73,12 @@ def test_elastic_series_via_python_and_cli(tmp_path):
     np.testing.assert_allclose(s["p_max"], series.p_max, rtol=1e-10,
                                err_msg="the CLI runs the same series (bitwise-reproducible)")
     assert (out / "elastic_squeeze.pvd").is_file() and (out / "elastic_squeeze.xdmf").is_file()
+    back = read_series(out)
+    for key in ("times", "gap", "p_max", "h_min", "h_central", "load"):
+        np.testing.assert_allclose(back[key], getattr(series, key), rtol=1e-10,
+                                   err_msg=f"{key} read back from summary.json as solved")
+    assert cli.main(["plot", str(out), "-q"]) == 0, "a converged series plots with exit 0"
+    assert (out / "series.png").stat().st_size > 0, "the figure of the series against time"
 
 
 def test_failed_series_writes_its_status_and_exits_3(tmp_path):
