@@ -969,9 +969,8 @@ class LineModel:
         pq, h_q, px, _ = problem.fields_q(p, h0)
         load = float(problem.mass @ p)
         q = out.quantities
-        h_between = np.concatenate((h_q, problem.film_near_minimum(p, h0)))
-        nums, notes = film_numbers(h_nodes, h_between, float(np.interp(0.0, disc.x, h_nodes)),
-                                   p, load, disc.x)
+        nums, notes = film_numbers(h_nodes, h_q, float(np.interp(0.0, disc.x, h_nodes)),
+                                   p, load, disc.x, h_near=problem.film_near_minimum(p, h0))
         q.update(nums)
         outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
         ind = full_film_indicator_line(ops.points[0], outlet)
