@@ -426,3 +426,21 @@ def test_default_gap_domain_says_how_much_load_it_cuts():
                                                       cavitation="none")))
     assert not [w for w in fs.warnings if "cut by the domain" in w], (
         "full-Sommerfeld: a rigid film carries no net load, no share to quote")
+
+
+def test_elastic_squeeze_series_on_the_default_domain_says_once_how_much_load_it_cuts():
+    """The series shares the default domain of the steady gap-controlled scene, and its
+    loads are cut alike (about 10 % with the Reynolds outlet); the series said nothing (only
+    ``solve_elastic_gap`` did). Now its first instant carries the warning, so the series'
+    warnings name it once."""
+    from bearing_fem.contacts.point import rigid_domain_load_share
+
+    base = scene(rx=0.005, ry=0.005, e_prime=2.2e11, viscosity=0.01, cavitation="reynolds")
+    default = base.replace(load=Load(gap=1.4e-7), mesh=MeshSpec(nodes=(33, 33)))
+    ser = solve_elastic_squeeze_series(default, eps=0.2, n_steps=4)
+    assert ser.success, ser.message
+    notes = [w for w in ser.summary()["warnings"] if "cut by the domain" in w]
+    share = rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0))
+    assert len(notes) == 1 and f"{100 * (1 - share):.2g}% less load" in notes[0], notes
+    assert sum("cut by the domain" in w for r in ser.results for w in r.warnings) == 1
+

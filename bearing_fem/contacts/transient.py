@@ -635,6 +635,8 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
             z, st, its, hist = _step_newton(problem, zs, tol, maxit, budget)
         res = _step_result(sc, model, problem, z, st, its, clock, hist, what)
         res.continuation = list(steps)
+        if n == 0:  # the series' domain: said once, with its start
+            res.warnings += domain_load_warnings(scene)
         if not res.success:
             failure = res
             status = st
