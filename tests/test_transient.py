@@ -444,3 +444,11 @@ def test_elastic_squeeze_series_on_the_default_domain_says_once_how_much_load_it
     assert len(notes) == 1 and f"{100 * (1 - share):.2g}% less load" in notes[0], notes
     assert sum("cut by the domain" in w for r in ser.results for w in r.warnings) == 1
 
+
+def test_rigid_domain_load_share_takes_ranges_as_any_sequence():
+    """The share is cached by its arguments: lists or numpy numbers (a scene's ranges read
+    from a file) gave TypeError: unhashable type: 'list'."""
+    from bearing_fem.contacts.point import rigid_domain_load_share
+
+    ref = rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0))
+    assert rigid_domain_load_share(np.float64(1.0), [-10, 5], np.array([-10.0, 10.0])) == ref

@@ -647,7 +647,6 @@ LOAD_INTEGRAL_NODES = 41
 LOAD_SHARE_NODES = 41
 
 
-@functools.lru_cache(maxsize=64)
 def rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
                             y_range: tuple[float, float],
                             nodes: int = LOAD_SHARE_NODES) -> float:
@@ -677,9 +676,18 @@ def rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
     float
         Load on the domain / load on the default rigid domain [-].
     """
+    x0, x1 = (float(v) for v in x_range)
+    y0, y1 = (float(v) for v in y_range)
+    return _rigid_domain_load_share(float(ratio), (x0, x1), (y0, y1), int(nodes))
+
+
+@functools.lru_cache(maxsize=64)
+def _rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
+                             y_range: tuple[float, float], nodes: int) -> float:
+    """:func:`rigid_domain_load_share` on hashable arguments (the cache)."""
     loads = []
-    for ranges in ((tuple(x_range), tuple(y_range)), RIGID_RANGE_REYNOLDS):
-        grid, q = _rigid_reduced_pressure(1.0, float(ratio), 1.0, 1.0, 1.0, nodes, ranges)
+    for ranges in ((x_range, y_range), RIGID_RANGE_REYNOLDS):
+        grid, q = _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, ranges)
         loads.append(float(grid.ops.weights @ (grid.ops.value @ q)))
     return loads[0] / loads[1]
 
