@@ -150,12 +150,14 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
     deflection of the discrete pressure between the nodes), and never above h_central.
     p_max is the nodal maximum refined between the nodes (:func:`peak`).
 
-    The warning that h_min lies between the nodes reads the quadrature points only (exact
-    geometry, interpolated deformation): a grid too coarse for the constriction's
-    geometry. The bow of the deflection that ``h_near`` adds is part of the discretisation
-    error, which the error estimate reports with its own threshold; on the default grid
-    at Moes M = 1000, L = 0 (3601 nodes) it puts h_min 1.1 % below the nodal minimum
-    while the estimated error of h_min, 3.9 %, stays below that threshold.
+    The warning that h_min lies between the nodes is given when the quadrature-point film
+    (exact geometry, interpolated deformation) lies more than
+    :data:`SUBGRID_FILM_FRACTION` below the nodal minimum, a grid too coarse for the
+    constriction's geometry, or h_min with ``h_near`` more than the error estimate's
+    :data:`ERROR_WARNING_THRESHOLD`: the bow of the deflection that ``h_near`` adds is
+    discretisation error, which the error estimate reports at that threshold (on the
+    default grid at Moes M = 1000, L = 0, 3601 nodes, it puts h_min 1.1 % below the nodal
+    minimum with an estimated error of 3.9 %).
 
     Parameters
     ----------
@@ -170,7 +172,8 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
     if h_near is not None and np.size(h_near):
         h_min = float(min(h_min, float(np.min(h_near))))
     notes = []
-    if h_grid_min < (1.0 - SUBGRID_FILM_FRACTION) * h_node_min:
+    if (h_grid_min < (1.0 - SUBGRID_FILM_FRACTION) * h_node_min
+            or h_min < (1.0 - ERROR_WARNING_THRESHOLD) * h_node_min):
         notes.append(f"h_min lies between the nodes ({h_min:.4g} m, "
                      f"{100 * (1 - h_min / h_node_min):.3g}% below the nodal minimum "
                      f"{h_node_min:.4g} m): the outlet constriction is not resolved by the "

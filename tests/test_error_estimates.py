@@ -154,6 +154,12 @@ def test_film_between_the_nodes_lowers_h_min_without_the_grid_warning():
     assert nums["h_min"] == 0.9, nums
     assert [n for n in notes if n.startswith("h_min lies between the nodes (0.9 m, 10% below")
             ], notes
+    # a bow beyond the error estimate's threshold is reported as well (a grid without an
+    # estimate, e.g. one mesh.file level, would otherwise not hear of it)
+    nums, notes = post.film_numbers(h, h.copy(), 1.0, np.zeros(5), 0.0, x,
+                                    h_near=np.array([0.94]))
+    assert [n for n in notes if n.startswith("h_min lies between the nodes (0.94 m, 6% below")
+            ], notes
 
     r = solve(error_estimates.line_scene(1000, 0))
     assert r.success and r.dofs == 3601, (r.status, r.dofs)
