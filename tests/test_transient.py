@@ -452,3 +452,20 @@ def test_rigid_domain_load_share_takes_ranges_as_any_sequence():
 
     ref = rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0))
     assert rigid_domain_load_share(np.float64(1.0), [-10, 5], np.array([-10.0, 10.0])) == ref
+
+
+def test_rigid_domain_load_share_names_a_bad_argument():
+    """A negative ratio failed with 'math domain error', a NaN ratio returned NaN (with a
+    singular-matrix warning) and reversed ranges blamed 'grid x'; each is now named."""
+    from bearing_fem.contacts.point import rigid_domain_load_share
+
+    with pytest.raises(ValueError, match=r"ratio must be > 0 \(ry/rx"):
+        rigid_domain_load_share(-1.0, (-10.0, 5.0), (-10.0, 10.0))
+    with pytest.raises(ValueError, match="ratio must be finite"):
+        rigid_domain_load_share(float("nan"), (-10.0, 5.0), (-10.0, 10.0))
+    with pytest.raises(ValueError, match=r"x_range must be \(low, high\) with low < high"):
+        rigid_domain_load_share(1.0, (5.0, -10.0), (-10.0, 10.0))
+    with pytest.raises(ValueError, match=r"y_range must be \(low, high\)"):
+        rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0, 20.0))
+    with pytest.raises(ValueError, match="nodes must be an integer >= 3"):
+        rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0), nodes=2)
