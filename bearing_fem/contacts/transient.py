@@ -450,7 +450,7 @@ def solve_elastic_gap(scene: Scene, *, squeeze_velocity: float = 0.0,
 DOMAIN_LOAD_SHARE_WARNING = 0.99
 
 
-def domain_load_warnings(scene) -> list[str]:
+def domain_load_warnings(scene: Scene) -> list[str]:
     """The warning of a gap-controlled elastic scene with the Reynolds outlet whose default
     domain (:data:`ELASTIC_GAP_RANGE_REYNOLDS`, taken where ``mesh.x_range`` or
     ``mesh.y_range`` is not given) cuts off part of the pressure field: the pressure of a
