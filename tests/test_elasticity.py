@@ -532,3 +532,27 @@ def test_hertz_kernels_study_coarse(tmp_path, load_study):
         f"point Hertz errors {errs} must fall by > 1/0.6 per halving of D (order >= ~0.7 "
         f"even on these coarse grids; 1.5 expected)")
     assert errs[1] < 0.01, f"65^2 point Hertz error {errs[1]:.3g} delta (observed 0.5%)"
+
+
+def test_line_displacement_at_blocks_its_points_and_names_bad_input(monkeypatch):
+    """The closed form held points x elements arrays at once (20001 points on 20001 nodes:
+    3.2 GB each); it now works in blocks, with the same values. Bad input had given NaN
+    or a numpy shape error; each argument is now named."""
+    from bearing_fem.physics import elasticity
+
+    x = 1e-5 * np.array([-1.0, -0.6, -0.35, -0.2, -0.12, -0.05, 0.0, 0.3, 0.9])
+    p = 1e9 * np.array([0.0, 0.1, 0.4, 0.9, 1.2, 0.7, 0.5, 0.2, 0.0])
+    pts = np.linspace(-1.2e-5, 1.1e-5, 37)
+    whole = line_displacement_at(x, p, E_PRIME, pts)
+    monkeypatch.setattr(elasticity, "_DISPLACEMENT_BLOCK_ENTRIES", 20)  # 2 points a block
+    np.testing.assert_allclose(line_displacement_at(x, p, E_PRIME, pts), whole, rtol=1e-13,
+                               err_msg="blocks of points change only the summation order "
+                                       "of the matrix products (rounding)")
+    with pytest.raises(ValueError, match="e_prime must be > 0 Pa"):
+        line_displacement_at(x, p, 0.0, pts)
+    with pytest.raises(ValueError, match="p must be finite nodal pressures in Pa"):
+        line_displacement_at(x, p[:-1], E_PRIME, pts)
+    with pytest.raises(ValueError, match="x must be at least 2 finite, strictly increasing"):
+        line_displacement_at(x[::-1], p, E_PRIME, pts)
+    with pytest.raises(ValueError, match="points must be finite"):
+        line_displacement_at(x, p, E_PRIME, np.array([np.nan]))

@@ -213,3 +213,17 @@ def test_inexact_newton_step_meets_its_forcing_tolerance():
     assert rel <= line.REUSE_GMRES_FORCING_MAX * (1 + 1e-6), (
         f"linear residual {rel:.3g} within the first step's forcing tolerance "
         f"{line.REUSE_GMRES_FORCING_MAX}")
+
+
+def test_film_near_minimum_of_a_non_finite_iterate_is_empty():
+    """The film between the nodes is sampled from the pressure's deflection, which refuses
+    a non-finite pressure (ValueError): a result assembled from such an iterate keeps its
+    nodal film instead of failing in the post-processing."""
+    scene = scene_for(100, 10, 401)
+    model = line.LineModel(scene)
+    prob = model.problem(model.setup)
+    p, h0 = prob.unpack(model.initial_guess(model.setup, prob))
+    assert prob.film_near_minimum(p, h0).size == 2 * line.FILM_MINIMUM_ELEMENTS * (
+        line.FILM_MINIMUM_SAMPLES - 1)
+    p[200] = np.nan
+    assert prob.film_near_minimum(p, h0).size == 0

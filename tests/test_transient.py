@@ -426,3 +426,46 @@ def test_default_gap_domain_says_how_much_load_it_cuts():
                                                       cavitation="none")))
     assert not [w for w in fs.warnings if "cut by the domain" in w], (
         "full-Sommerfeld: a rigid film carries no net load, no share to quote")
+
+
+def test_elastic_squeeze_series_on_the_default_domain_says_once_how_much_load_it_cuts():
+    """The series shares the default domain of the steady gap-controlled scene, and its
+    loads are cut alike (about 10 % with the Reynolds outlet); the series said nothing (only
+    ``solve_elastic_gap`` did). Now its first instant carries the warning, so the series'
+    warnings name it once."""
+    from bearing_fem.contacts.point import rigid_domain_load_share
+
+    base = scene(rx=0.005, ry=0.005, e_prime=2.2e11, viscosity=0.01, cavitation="reynolds")
+    default = base.replace(load=Load(gap=1.4e-7), mesh=MeshSpec(nodes=(33, 33)))
+    ser = solve_elastic_squeeze_series(default, eps=0.2, n_steps=4)
+    assert ser.success, ser.message
+    notes = [w for w in ser.summary()["warnings"] if "cut by the domain" in w]
+    share = rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0))
+    assert len(notes) == 1 and f"{100 * (1 - share):.2g}% less load" in notes[0], notes
+    assert sum("cut by the domain" in w for r in ser.results for w in r.warnings) == 1
+
+
+def test_rigid_domain_load_share_takes_ranges_as_any_sequence():
+    """The share is cached by its arguments: lists or numpy numbers (a scene's ranges read
+    from a file) gave TypeError: unhashable type: 'list'."""
+    from bearing_fem.contacts.point import rigid_domain_load_share
+
+    ref = rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0))
+    assert rigid_domain_load_share(np.float64(1.0), [-10, 5], np.array([-10.0, 10.0])) == ref
+
+
+def test_rigid_domain_load_share_names_a_bad_argument():
+    """A negative ratio failed with 'math domain error', a NaN ratio returned NaN (with a
+    singular-matrix warning) and reversed ranges blamed 'grid x'; each is now named."""
+    from bearing_fem.contacts.point import rigid_domain_load_share
+
+    with pytest.raises(ValueError, match=r"ratio must be > 0 \(ry/rx"):
+        rigid_domain_load_share(-1.0, (-10.0, 5.0), (-10.0, 10.0))
+    with pytest.raises(ValueError, match="ratio must be finite"):
+        rigid_domain_load_share(float("nan"), (-10.0, 5.0), (-10.0, 10.0))
+    with pytest.raises(ValueError, match=r"x_range must be \(low, high\) with low < high"):
+        rigid_domain_load_share(1.0, (5.0, -10.0), (-10.0, 10.0))
+    with pytest.raises(ValueError, match=r"y_range must be \(low, high\)"):
+        rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0, 20.0))
+    with pytest.raises(ValueError, match="nodes must be an integer >= 3"):
+        rigid_domain_load_share(1.0, (-10.0, 5.0), (-10.0, 10.0), nodes=2)

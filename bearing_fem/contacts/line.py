@@ -209,7 +209,8 @@ class LineProblem(ScaledResidual):
         """Film [m] between the nodes around the nodal minimum of a half-space line
         contact: at the points cutting each of the :data:`FILM_MINIMUM_ELEMENTS` elements
         on either side of it into :data:`FILM_MINIMUM_SAMPLES` parts; empty for rigid and
-        local (Kodnir) compliances, whose film between the nodes is the interpolant's.
+        local (Kodnir) compliances, whose film between the nodes is the interpolant's, and
+        for a non-finite pressure or film.
 
         There the film is the interpolant of the nodal film plus what the interpolant
         leaves out: the bow of the geometry x^2/(2R) and of the deflection of the
@@ -225,6 +226,8 @@ class LineProblem(ScaledResidual):
         if getattr(comp, "kind", None) != "half-space" or x.size < 3:
             return np.zeros(0)
         h = self.film_nodes(p, h0)
+        if not (np.all(np.isfinite(p)) and np.all(np.isfinite(h))):
+            return np.zeros(0)  # no film to refine (the nodal one says what it is)
         k = int(np.argmin(h))
         lo = max(k - FILM_MINIMUM_ELEMENTS, 0)
         hi = min(k + FILM_MINIMUM_ELEMENTS, x.size - 1)
@@ -969,9 +972,8 @@ class LineModel:
         pq, h_q, px, _ = problem.fields_q(p, h0)
         load = float(problem.mass @ p)
         q = out.quantities
-        h_between = np.concatenate((h_q, problem.film_near_minimum(p, h0)))
-        nums, notes = film_numbers(h_nodes, h_between, float(np.interp(0.0, disc.x, h_nodes)),
-                                   p, load, disc.x)
+        nums, notes = film_numbers(h_nodes, h_q, float(np.interp(0.0, disc.x, h_nodes)),
+                                   p, load, disc.x, h_near=problem.film_near_minimum(p, h0))
         q.update(nums)
         outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
         ind = full_film_indicator_line(ops.points[0], outlet)

@@ -66,7 +66,7 @@ from ..physics.elasticity import HalfSpacePoint, MirroredHalfSpacePoint
 from ..physics.reynolds import FluxModel, UpwindFluxModel
 from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
-from ..validation import require_int, require_positive
+from ..validation import require_finite, require_int, require_positive
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, finish, solve_linear_model,
                      solve_newton_model)
@@ -647,7 +647,6 @@ LOAD_INTEGRAL_NODES = 41
 LOAD_SHARE_NODES = 41
 
 
-@functools.lru_cache(maxsize=64)
 def rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
                             y_range: tuple[float, float],
                             nodes: int = LOAD_SHARE_NODES) -> float:
@@ -676,10 +675,33 @@ def rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
     -------
     float
         Load on the domain / load on the default rigid domain [-].
+
+    Raises
+    ------
+    ValueError
+        ratio not finite and > 0, a range not two finite numbers low < high, nodes not an
+        integer >= 3.
     """
+    ratio = require_positive("ratio", ratio, "(ry/rx, dimensionless)")
+    ranges = []
+    for name, rng in (("x_range", x_range), ("y_range", y_range)):
+        vals = np.atleast_1d(require_finite(name, rng,
+                                            "in lengths sqrt(2 rx h0), sqrt(2 ry h0)"))
+        if vals.size != 2 or not vals[0] < vals[1]:
+            raise ValueError(f"{name} must be (low, high) with low < high (lengths "
+                             f"sqrt(2 rx h0), sqrt(2 ry h0)), got {rng!r}")
+        ranges.append((float(vals[0]), float(vals[1])))
+    nodes = require_int("nodes", nodes, 3, what="grid nodes per direction")
+    return _rigid_domain_load_share(ratio, ranges[0], ranges[1], nodes)
+
+
+@functools.lru_cache(maxsize=64)
+def _rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
+                             y_range: tuple[float, float], nodes: int) -> float:
+    """:func:`rigid_domain_load_share` on hashable arguments (the cache)."""
     loads = []
-    for ranges in ((tuple(x_range), tuple(y_range)), RIGID_RANGE_REYNOLDS):
-        grid, q = _rigid_reduced_pressure(1.0, float(ratio), 1.0, 1.0, 1.0, nodes, ranges)
+    for ranges in ((x_range, y_range), RIGID_RANGE_REYNOLDS):
+        grid, q = _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, ranges)
         loads.append(float(grid.ops.weights @ (grid.ops.value @ q)))
     return loads[0] / loads[1]
 

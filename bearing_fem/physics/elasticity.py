@@ -574,20 +574,44 @@ def line_displacement_at(x: np.ndarray, p: np.ndarray, e_prime: float,
     -------
     ndarray, shape (K,)
         Displacement v, m.
+
+    Raises
+    ------
+    ValueError
+        x not at least two finite increasing coordinates, p not finite of the shape of x,
+        e_prime not > 0, points not finite.
     """
     x = np.asarray(x, dtype=float)
     p = np.asarray(p, dtype=float)
-    u0 = x[None, :-1] - np.asarray(points, dtype=float)[:, None]
-    u1 = x[None, 1:] - np.asarray(points, dtype=float)[:, None]
+    pts = np.atleast_1d(np.asarray(points, dtype=float))
+    if x.ndim != 1 or x.size < 2 or not np.all(np.isfinite(x)) or np.any(np.diff(x) <= 0.0):
+        raise ValueError(f"x must be at least 2 finite, strictly increasing node coordinates "
+                         f"in m, got shape {x.shape}")
+    if p.shape != x.shape or not np.all(np.isfinite(p)):
+        raise ValueError(f"p must be finite nodal pressures in Pa of the shape of x "
+                         f"{x.shape}, got shape {p.shape}")
+    if pts.ndim != 1 or not np.all(np.isfinite(pts)):
+        raise ValueError(f"points must be finite coordinates in m, got shape {pts.shape}")
+    scale = -4.0 / (math.pi * require_positive("e_prime", e_prime, "Pa"))
+    slope = np.diff(p) / np.diff(x)
 
     def h_anti(u: np.ndarray) -> np.ndarray:
         return 0.5 * u * _xlogx(u) - 0.25 * u * u
 
-    g0, g1 = _log_antiderivative(u0), _log_antiderivative(u1)
-    i0 = g1 - g0                                   # int ln|u| over the element
-    i1 = (h_anti(u1) - h_anti(u0)) - u0 * i0       # int (u - u0) ln|u| over it
-    slope = np.diff(p) / np.diff(x)
-    return -(4.0 / (math.pi * e_prime)) * (i0 @ p[:-1] + i1 @ slope)
+    out = np.empty(pts.size)
+    block = max(1, _DISPLACEMENT_BLOCK_ENTRIES // (x.size - 1))  # points per block
+    for start in range(0, pts.size, block):
+        at = pts[start:start + block, None]
+        u0, u1 = x[None, :-1] - at, x[None, 1:] - at
+        i0 = _log_antiderivative(u1) - _log_antiderivative(u0)  # int ln|u| over the element
+        i1 = (h_anti(u1) - h_anti(u0)) - u0 * i0                # int (u - u0) ln|u| over it
+        out[start:start + block] = scale * (i0 @ p[:-1] + i1 @ slope)
+    return out
+
+
+#: Points x elements per block of :func:`line_displacement_at` (each block holds a few
+#: arrays of this many doubles: about 8 MB each).
+_DISPLACEMENT_BLOCK_ENTRIES = 2**20
 
 
 class GradedHalfSpaceLine(Compliance):
