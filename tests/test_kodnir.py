@@ -6,6 +6,7 @@ hard-coded. Grids are small so the whole file runs in well under a minute.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -239,3 +240,33 @@ def test_friction_heat_refuses_bad_numbers_with_units(elastic, kwargs, match):
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
         K.kodnir_friction_heat(elastic, **args)
+
+
+def test_stiff_compliance_continuation_iterations_capped():
+    # C = 150: the outlet layer (~1/C) and the inlet critical point (z = 2C/27, H = 3/2)
+    # move through the continuation grid; with layer bands that follow them and a
+    # predictor that moves the free boundary this takes 1720 Newton iterations (8446 on
+    # the fixed 401-node grid with the nodal secant)
+    r = K.solve(150.0, 0.0)
+    assert r.success, r.message
+    assert r.iterations <= 3000, r.message
+    np.testing.assert_allclose(r.flux, 1.0, atol=1e-8, err_msg="flux condition Q = 1")
+    i = int(np.searchsorted(r.z, r.z_a))
+    np.testing.assert_allclose(r.z_a_free_boundary, r.z_a, atol=2.0 * (r.z[i + 1] - r.z[i]),
+                               err_msg="free boundary within two local cells of z_a")
+    # inlet critical point: the pressure falls at most (H - 1)/H^3 <= 4/27 per unit z
+    slope = np.diff(r.k) / np.diff(r.z)
+    assert slope.min() >= -4.0 / 27.0 * (1.0 + 1e-3), slope.min()
+
+
+def test_huge_compliance_message_names_continuation_stage():
+    # C = 1e6 put the left end of the first grid at z = -1e5 (outlet guess -(2 + 0.1 C)),
+    # and the rigid start failed there: the message named C = 0. The outlet lies right of
+    # -sqrt(1 + z_b^2) (film at the inlet > 0), so the grid is capped and the message
+    # names the C where the continuation stalls
+    r = K.solve(1e6, 0.0, max_iterations=10)
+    assert not r.success and r.status == "no_convergence"
+    m = re.search(r"continuation stalled at C=([0-9.e+]+), b_alpha=0", r.message)
+    assert m is not None, r.message
+    assert float(m.group(1)) > 100.0, r.message
+    assert r.z.size == r.k.size == r.H.size and np.all(np.isfinite(r.k))

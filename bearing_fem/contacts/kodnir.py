@@ -162,11 +162,84 @@ def graded_grid(z_min: float, z_fine: float, z_b: float, nodes: int,
 class _Grid:
     z: np.ndarray
     ops: QuadratureOperators
+    #: refined bands (outlet, inlet critical point) of a continuation grid and the C
+    #: whose outlet layer 1/C they resolve
+    bands: tuple[tuple[float, float], ...] = ()
+    layer_c: float = 0.0
 
     @classmethod
-    def from_nodes(cls, z: np.ndarray, intorder: int = 4) -> "_Grid":
+    def from_nodes(cls, z: np.ndarray, intorder: int = 4,
+                   bands: tuple[tuple[float, float], ...] = (),
+                   layer_c: float = 0.0) -> "_Grid":
         basis = CellBasis(MeshLine(np.asarray(z, dtype=float)), ElementLineP1(), intorder=intorder)
-        return cls(z=np.asarray(z, dtype=float), ops=quadrature_operators(basis))
+        return cls(z=np.asarray(z, dtype=float), ops=quadrature_operators(basis),
+                   bands=bands, layer_c=layer_c)
+
+
+#: Continuation grids for stiff local compliance (docs/kodnir.md): from C >= REGRID_MIN_C
+#: on, the continuation grid gets a band of half-width max(OUTLET_BAND_AHEAD,
+#: COARSE_BAND_LAYERS / C) around the outlet z_a and one of half-width 1 around the inlet
+#: critical point z* = 2C/27 (H = 3/2, where dk/dz = (1 - H)/H^3 reaches its bound -4/27),
+#: spaced so that the outlet layer 1/C_d gets COARSE_LAYER_CELLS intervals (C_d =
+#: REGRID_C_GROWTH times the current C, at most the target), on top of the nodes of the
+#: base grid; it is rebuilt around the current solution when z_a or z* leaves the middle
+#: half of its band or C exceeds C_d.
+REGRID_MIN_C = 60.0
+#: First break point of the march in C (then doubling): below it, one straight segment.
+PATH_BREAK = 200.0
+COARSE_BAND_LAYERS = 60.0
+COARSE_LAYER_CELLS = 3.0
+REGRID_C_GROWTH = 1.25
+
+
+def _inlet_layer(z: np.ndarray, k: np.ndarray) -> float:
+    """Inlet layer of a stiff contact: the middle of the element where k falls fastest
+    downstream of its maximum (dimensionless z)."""
+    i = int(np.argmax(k))
+    slope = np.diff(k[i:]) / np.diff(z[i:])
+    j = i + int(np.argmin(slope))
+    return float(0.5 * (z[j] + z[j + 1]))
+
+
+def _continuation_grid(z_a: float, z_in: float, C: float, C_target: float, z_b: float,
+                       base_nodes: int) -> _Grid:
+    """Continuation grid with bands around the outlet z_a and the inlet critical point
+    2C/27 for the local compliance C (see REGRID_MIN_C); the uniform zone [z_lo, z_fine]
+    reaches past the inlet layer z_in (:func:`_inlet_layer`) and keeps the spacing of a
+    ``base_nodes`` grid outside the bands (dimensionless z)."""
+    c_d = min(C_target, REGRID_C_GROWTH * C)
+    w = max(OUTLET_BAND_AHEAD, COARSE_BAND_LAYERS / C)
+    z_lo = z_a - 0.5 - max(1.0, 0.3 * abs(z_a))
+    z_fine = min(0.98 * z_b, max(0.5 * z_b, z_in + 2.0 + 0.1 * abs(z_in), 2.0 * C / 27.0 + 2.0))
+    z_crit = 2.0 * C / 27.0
+    bands = [(max(z_a - w, z_lo), min(z_a + w, z_fine))]
+    if z_crit + 1.0 < z_fine:
+        bands.append((max(z_crit - 1.0, bands[0][1]), min(z_crit + 1.0, z_fine)))
+    h_rest = (z_fine - z_lo) / (0.8 * (base_nodes - 1))
+    h_band = min(h_rest, 1.0 / (COARSE_LAYER_CELLS * c_d))
+    width = sum(hi - lo for lo, hi in bands)
+    n_f = (z_fine - z_lo - width) / h_rest + width / h_band
+    nodes = int(math.ceil(n_f / 0.8)) + 1
+    z = graded_grid(z_lo, z_fine, z_b, nodes, bands=tuple(bands), band_ratio=h_band / h_rest)
+    return _Grid.from_nodes(z, bands=tuple(bands), layer_c=c_d)
+
+
+def _needs_regrid(grid: _Grid, prob: "KodnirProblem", u: np.ndarray) -> bool:
+    """True if the continuation grid no longer fits the solution u at prob.C."""
+    if prob.C < REGRID_MIN_C:
+        return False
+    if not grid.bands or prob.C > grid.layer_c:
+        return True
+    _, h_off = prob.unpack(u)
+    z_a = -math.sqrt(max(1.0 - h_off, 0.0))
+    lo, hi = grid.bands[0]
+    if not lo + 0.25 * (hi - lo) <= z_a <= hi - 0.25 * (hi - lo):
+        return True
+    z_crit = 2.0 * prob.C / 27.0
+    if len(grid.bands) > 1:
+        lo, hi = grid.bands[1]
+        return not lo + 0.25 * (hi - lo) <= z_crit <= hi - 0.25 * (hi - lo)
+    return False
 
 
 # ----------------------------------------------------------------------------------------
@@ -525,10 +598,53 @@ def _transfer(u: np.ndarray, old: KodnirProblem, new: KodnirProblem) -> np.ndarr
     return new.pack(kn, h_off)
 
 
+def _moving_secant(prob: KodnirProblem, u: np.ndarray, c_u: float, u_prev: np.ndarray,
+                   c_prev: float, r: float) -> np.ndarray:
+    """Secant predictor u + r (u - u_prev) that moves with the contact (stiff local
+    compliance, C >= REGRID_MIN_C).
+
+    u and u_prev are solutions at the compliances c_u and c_prev. The outlet z_a is
+    extrapolated; on the outlet side (z < 0) the film H is extrapolated at the same
+    relative position z/z_a and k follows from eq (5), k = (H - H_off - z^2)/C, so that
+    the free boundary starts where it will be instead of moving one node per Newton
+    iteration. For z >= 0 the nodal secant in a frame that moves with the inlet critical
+    point 2C/27 (piecewise linear, fixed at 0 and z_b).
+    """
+    z = prob.grid.z
+    k, h = prob.unpack(u)
+    kp, hp = prob.unpack(u_prev)
+    za, zap = -math.sqrt(max(1.0 - h, 0.0)), -math.sqrt(max(1.0 - hp, 0.0))
+    za_n = za + r * (za - zap)
+    h_n = 1.0 - za_n**2
+    Hc = np.interp(z * za / za_n, z, h + z**2 + c_u * k)
+    Hp = np.interp(z * zap / za_n, z, hp + z**2 + c_prev * kp)
+    km = np.maximum((Hc + r * (Hc - Hp) - h_n - z**2) / prob.C, 0.0)
+    z_b = z[-1]
+    zc_u, zc_p, zc_n = (2.0 * c / 27.0 for c in (c_u, c_prev, prob.C))
+    if max(zc_u, zc_p, zc_n) < 0.95 * z_b:
+        # inlet critical point z* = 2 C/27 (H = 3/2, where the Couette-Poiseuille flux
+        # (H - 1)/H^3 is largest): the secant in a frame that moves with it
+        def frame(zc: float) -> np.ndarray:
+            return np.interp(z, [0.0, zc_n, z_b], [0.0, zc, z_b])
+        k_u = np.interp(frame(zc_u), z, k)
+        k_p = np.interp(frame(zc_p), z, kp)
+        ks = np.maximum(k_u + r * (k_u - k_p), 0.0)
+    else:
+        ks = np.maximum(k + r * (k - kp), 0.0)
+    kn = np.where(z <= za_n, 0.0, np.where(z < 0.0, km, ks))
+    kn[0] = kn[-1] = 0.0
+    return prob.pack(kn, h_n)
+
+
 def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
            record: list, tol: float, max_iterations: int,
-           min_increment: float = 1e-3) -> tuple[np.ndarray | None, int, str]:
-    """Follow the straight segments of a (C, b_alpha) path with adaptive steps."""
+           min_increment: float = 1e-3, base_nodes: int = 0
+           ) -> tuple[np.ndarray | None, int, str, _Grid]:
+    """Follow the straight segments of a (C, b_alpha) path with adaptive steps.
+
+    With ``base_nodes`` > 0 the grid is rebuilt around the solution (layer bands,
+    :func:`_continuation_grid`) whenever :func:`_needs_regrid` says so; the grid of the
+    last solution is returned with it."""
     u = u0
     total = 0
     start = path[0]
@@ -537,8 +653,10 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
     total += out.iterations
     record.append((start[0], start[1], out.status, out.iterations))
     if not out.converged:
-        return None, total, f"no convergence at C={start[0]:.4g}, b_alpha={start[1]:.4g}"
+        return (None, total, f"no convergence at C={start[0]:.4g}, b_alpha={start[1]:.4g}",
+                grid)
     u = out.z
+    c_target = max(p[0] for p in path)
     for a, b in zip(path[:-1], path[1:]):
         s, ds = 0.0, 1.0 if a == start else 0.5
         prev: tuple[float, np.ndarray] | None = None   # last converged (s, u): secant
@@ -548,7 +666,13 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
             prob = KodnirProblem(grid, *pc)
             guess = u
             if prev is not None and s > prev[0]:
-                cand = u + (st - s) / (s - prev[0]) * (u - prev[1])
+                if pc[0] >= REGRID_MIN_C:
+                    c_u = a[0] + s * (b[0] - a[0])
+                    c_p = a[0] + prev[0] * (b[0] - a[0])
+                    cand = _moving_secant(prob, u, c_u, prev[1], c_p,
+                                          (st - s) / (s - prev[0]))
+                else:
+                    cand = u + (st - s) / (s - prev[0]) * (u - prev[1])
                 if prob.admissible(cand):
                     guess = cand
             out = damped_newton(prob, guess, tol=tol, max_iterations=max_iterations,
@@ -560,13 +684,28 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
                 s, u = st, out.z
                 ds = min(1.0 - s if s < 1.0 else 1.0, 1.5 * ds) if out.iterations < 12 else ds
                 ds = max(ds, min_increment)
+                if base_nodes and _needs_regrid(grid, prob, u):
+                    k, h_off = prob.unpack(u)
+                    new = _continuation_grid(-math.sqrt(max(1.0 - h_off, 0.0)),
+                                             _inlet_layer(grid.z, k), pc[0], c_target,
+                                             grid.z[-1], base_nodes)
+                    prob_new = KodnirProblem(new, *pc)
+                    out = damped_newton(prob_new, _transfer(u, prob, prob_new), tol=tol,
+                                        max_iterations=max_iterations, memory=1)
+                    total += out.iterations
+                    record.append((pc[0], pc[1], f"{out.status} (new grid, {new.z.size} "
+                                   f"nodes)", out.iterations))
+                    if out.converged:
+                        k_p, h_p = prob.unpack(prev[1])
+                        prev = (prev[0], prob_new.pack(np.interp(new.z, grid.z, k_p), h_p))
+                        grid, u = new, out.z
             else:
                 ds *= 0.5
                 if ds < min_increment:
                     return None, total, (f"continuation stalled at C={pc[0]:.4g}, "
                                          f"b_alpha={pc[1]:.4g} ({out.status}, "
-                                         f"|F| = {out.residual_norm:.2e})")
-    return u, total, "ok"
+                                         f"|F| = {out.residual_norm:.2e})"), grid
+    return u, total, "ok", grid
 
 
 def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
@@ -637,18 +776,27 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
                            f"{b_alpha * iso.k_max:.4g} (Kapitsa transform, docs/theory.md section 14.1)")
             return res
     # heuristic first left end (widened below if the outlet comes close to it)
-    zlo = -(2.0 + 0.1 * C + 0.2 * b_alpha) if z_min is None else float(z_min)
+    # (the outlet lies right of -sqrt(1 + z_b^2), where the film at the inlet would vanish)
+    zlo = (max(-(2.0 + 0.1 * C + 0.2 * b_alpha), -1.25 * math.sqrt(1.0 + z_b**2) - 1.0)
+           if z_min is None else float(z_min))
     u = None
     msg = ""
-    path = [(0.0, 0.0), (C, 0.0), (C, b_alpha)] if C > 0 else [(0.0, 0.0), (0.0, b_alpha)]
+    # large C: the march in C doubles from PATH_BREAK on, so that its smallest step
+    # (a fraction of a segment) stays a fraction of the current C
+    breaks = [(PATH_BREAK * 2.0**j, 0.0) for j in range(64) if PATH_BREAK * 2.0**j < C]
+    path = ([(0.0, 0.0)] + breaks + [(C, 0.0), (C, b_alpha)] if C > 0
+            else [(0.0, 0.0), (0.0, b_alpha)])
     for _attempt in range(4):
         zf = min(0.5 * z_b, max(2.0, -zlo))
         grid = _Grid.from_nodes(graded_grid(zlo, zf, z_b, coarse_nodes))
         coarse = KodnirProblem(grid, C, b_alpha)
-        u, it, msg = _march(grid, _initial_guess(coarse), path, record, tol, max_iterations)
+        u, it, msg, grid = _march(grid, _initial_guess(coarse), path, record, tol,
+                                  max_iterations, base_nodes=coarse_nodes)
         total += it
         if u is None:
             break
+        zlo = float(grid.z[0])
+        coarse = KodnirProblem(grid, C, b_alpha)
         k, h_off = coarse.unpack(u)
         za = -math.sqrt(max(1.0 - h_off, 0.0))
         pos = np.nonzero(k > 0)[0]
@@ -707,8 +855,8 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
                                   f"{n}-node grid from {half}")
         if out_n.converged:
             return prob_n, out_n.z, out_n.z, "ok"
-        u_n, it, msg_n = _march(prob_n.grid, _initial_guess(prob_n), path, record, tol,
-                                max_iterations)
+        u_n, it, msg_n, _ = _march(prob_n.grid, _initial_guess(prob_n), path, record, tol,
+                                   max_iterations)
         total += it
         return prob_n, u_n, out_n.z, msg_n
 
