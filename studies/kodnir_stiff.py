@@ -10,8 +10,8 @@ Scene
     Dimensionless; no physical data. z_b = 20 (the paper's value).
 
 Expected outcome
-    Isoviscous cases converge up to C ~ 200; larger C and B alpha > 0 at C >= 100
-    end with ``no_convergence`` and a message naming the continuation stage.
+    Isoviscous cases converge up to C ~ 200; larger C (and B alpha = 10 at C = 100) end
+    with ``no_convergence`` and a message naming the continuation stage.
 
 Run ``python studies/kodnir_stiff.py [outdir] [n]``; ``main`` returns the rows and writes
 ``kodnir_stiff.json`` and ``kodnir_stiff.md`` to ``outdir``.
@@ -28,7 +28,8 @@ from bearing_fem import __version__
 from bearing_fem.contacts import kodnir
 
 CASES = [(60.0, 0.0), (100.0, 0.0), (150.0, 0.0), (170.0, 0.0), (200.0, 0.0),
-         (400.0, 0.0), (1000.0, 0.0), (1e4, 0.0), (1e6, 0.0), (100.0, 10.0), (400.0, 10.0)]
+         (400.0, 0.0), (1000.0, 0.0), (1e4, 0.0), (1e6, 0.0), (100.0, 4.5), (100.0, 10.0),
+         (400.0, 10.0)]
 KEYS = ["z_a", "k_max", "h_min"]
 
 

@@ -270,3 +270,13 @@ def test_huge_compliance_message_names_continuation_stage():
     assert m is not None, r.message
     assert float(m.group(1)) > 100.0, r.message
     assert r.z.size == r.k.size == r.H.size and np.all(np.isfinite(r.k))
+
+
+@pytest.mark.slow
+def test_stiff_compliance_march_in_b_alpha_on_base_grid():
+    # the march in b_alpha stalled at b_alpha = 0.018 on the banded continuation grid
+    # (C = 100); it runs on the base grid, as for C < 60, and converges
+    r = K.solve(100.0, 4.5)
+    assert r.success, r.message
+    assert r.iterations <= 10000, r.message
+    np.testing.assert_allclose(r.flux, 1.0, atol=1e-8, err_msg="flux condition Q = 1")

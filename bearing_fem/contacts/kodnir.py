@@ -657,8 +657,22 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
                 grid)
     u = out.z
     c_target = max(p[0] for p in path)
+    grid0 = grid
     for a, b in zip(path[:-1], path[1:]):
         s, ds = 0.0, 1.0 if a == start else 0.5
+        if a[0] == b[0] and a[1] != b[1] and grid.bands:
+            # the march in b_alpha runs on the base grid (on the banded grids it stalled
+            # at b_alpha ~ 0.02 for C = 80 and 100, where the base grid converges)
+            prob, prob0 = KodnirProblem(grid, *a), KodnirProblem(grid0, *a)
+            out = damped_newton(prob0, _transfer(u, prob, prob0), tol=tol,
+                                max_iterations=max_iterations, memory=1)
+            total += out.iterations
+            record.append((a[0], a[1], f"{out.status} (base grid)", out.iterations))
+            if not out.converged:
+                return (None, total, f"no convergence at C={a[0]:.4g}, b_alpha={a[1]:.4g} "
+                        f"on the base grid ({out.status}, |F| = {out.residual_norm:.2e})",
+                        grid)
+            grid, u = grid0, out.z
         prev: tuple[float, np.ndarray] | None = None   # last converged (s, u): secant
         while s < 1.0:
             st = min(1.0, s + ds)
@@ -666,7 +680,7 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
             prob = KodnirProblem(grid, *pc)
             guess = u
             if prev is not None and s > prev[0]:
-                if pc[0] >= REGRID_MIN_C:
+                if pc[0] >= REGRID_MIN_C and a[0] != b[0]:
                     c_u = a[0] + s * (b[0] - a[0])
                     c_p = a[0] + prev[0] * (b[0] - a[0])
                     cand = _moving_secant(prob, u, c_u, prev[1], c_p,
@@ -684,7 +698,7 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
                 s, u = st, out.z
                 ds = min(1.0 - s if s < 1.0 else 1.0, 1.5 * ds) if out.iterations < 12 else ds
                 ds = max(ds, min_increment)
-                if base_nodes and _needs_regrid(grid, prob, u):
+                if base_nodes and a[0] != b[0] and _needs_regrid(grid, prob, u):
                     k, h_off = prob.unpack(u)
                     new = _continuation_grid(-math.sqrt(max(1.0 - h_off, 0.0)),
                                              _inlet_layer(grid.z, k), pc[0], c_target,
