@@ -121,3 +121,20 @@ def test_shooting_vs_fe_quick(tmp_path, load_study):
         # the analytic limit has its inlet at infinity, the problem at z_b = 20: k(20) is
         # ~1e-4 k_max there, plus the P1 error; 0.2 % covers both
         assert e["z_a"] < 2e-3 and e["k_max"] < 2e-3, (r["b_alpha"], e)
+
+
+@pytest.mark.slow
+def test_kodnir_stiff_quick(tmp_path, load_study):
+    """The quick run of the stiff-compliance study: C = 150 converges (1720 Newton
+    iterations measured, 8446 before the banded continuation grids) and is grid-converged
+    between n and 2n - 1 nodes; C = 400 ends with a message naming the C of the stall."""
+    mod = load_study("kodnir_stiff")
+    out = mod.main(tmp_path, quick=True)
+    assert (tmp_path / "kodnir_stiff.json").stat().st_size > 0
+    assert (tmp_path / "kodnir_stiff.md").stat().st_size > 0
+    ok, beyond = out["rows"]
+    assert ok["success"] and ok["iterations"] <= 3000, ok
+    assert max(ok["relative_change"].values()) < 1e-3, (
+        ok["relative_change"], "z_a, k_max and H_min within 0.1 % of 4001 nodes "
+                               "(measured at most 0.011 %)")
+    assert not beyond["success"] and "continuation stalled at C=" in beyond["message"]
