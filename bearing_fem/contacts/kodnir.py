@@ -192,6 +192,12 @@ COARSE_LAYER_CELLS = 3.0
 REGRID_C_GROWTH = 1.25
 
 
+def _outlet_position(h_off: float) -> float:
+    """Outlet (free boundary) z_a = -sqrt(1 - H_off) of the film H = H_off + z^2 + C k,
+    where k = 0 and H = 1 (dimensionless; 0 when H_off >= 1)."""
+    return -math.sqrt(max(1.0 - h_off, 0.0))
+
+
 def _inlet_layer(z: np.ndarray, k: np.ndarray) -> float:
     """Inlet layer of a stiff contact: the middle of the element where k falls fastest
     downstream of its maximum (dimensionless z)."""
@@ -230,16 +236,14 @@ def _needs_regrid(grid: _Grid, prob: "KodnirProblem", u: np.ndarray) -> bool:
         return False
     if not grid.bands or prob.C > grid.layer_c:
         return True
+    def in_middle(band: tuple[float, float], z: float) -> bool:  # its middle half
+        lo, hi = band
+        return lo + 0.25 * (hi - lo) <= z <= hi - 0.25 * (hi - lo)
+
     _, h_off = prob.unpack(u)
-    z_a = -math.sqrt(max(1.0 - h_off, 0.0))
-    lo, hi = grid.bands[0]
-    if not lo + 0.25 * (hi - lo) <= z_a <= hi - 0.25 * (hi - lo):
+    if not in_middle(grid.bands[0], _outlet_position(h_off)):
         return True
-    z_crit = 2.0 * prob.C / 27.0
-    if len(grid.bands) > 1:
-        lo, hi = grid.bands[1]
-        return not lo + 0.25 * (hi - lo) <= z_crit <= hi - 0.25 * (hi - lo)
-    return False
+    return len(grid.bands) > 1 and not in_middle(grid.bands[1], 2.0 * prob.C / 27.0)
 
 
 # ----------------------------------------------------------------------------------------
@@ -522,7 +526,7 @@ def _finish(res: KodnirResult, prob: KodnirProblem, u: np.ndarray) -> KodnirResu
     res.z, res.k, res.H = z.copy(), k.copy(), H.copy()
     res.h_offset = float(h_off)
     res.flux = float(prob.nodal_residual(k, h_off)[-1])
-    res.z_a = -math.sqrt(max(1.0 - h_off, 0.0))
+    res.z_a = _outlet_position(h_off)
     res.z_a_free_boundary = _free_boundary(z, k)
     res.z_k_max, res.k_max = parabola_vertex(z, k, int(np.argmax(k)))
     inside = z >= res.z_a
@@ -613,7 +617,7 @@ def _moving_secant(prob: KodnirProblem, u: np.ndarray, c_u: float, u_prev: np.nd
     z = prob.grid.z
     k, h = prob.unpack(u)
     kp, hp = prob.unpack(u_prev)
-    za, zap = -math.sqrt(max(1.0 - h, 0.0)), -math.sqrt(max(1.0 - hp, 0.0))
+    za, zap = _outlet_position(h), _outlet_position(hp)
     za_n = za + r * (za - zap)
     h_n = 1.0 - za_n**2
     Hc = np.interp(z * za / za_n, z, h + z**2 + c_u * k)
@@ -700,7 +704,7 @@ def _march(grid: _Grid, u0: np.ndarray, path: list[tuple[float, float]],
                 ds = max(ds, min_increment)
                 if base_nodes and a[0] != b[0] and _needs_regrid(grid, prob, u):
                     k, h_off = prob.unpack(u)
-                    new = _continuation_grid(-math.sqrt(max(1.0 - h_off, 0.0)),
+                    new = _continuation_grid(_outlet_position(h_off),
                                              _inlet_layer(grid.z, k), pc[0], c_target,
                                              grid.z[-1], base_nodes)
                     prob_new = KodnirProblem(new, *pc)
@@ -812,7 +816,7 @@ def solve(C: float, b_alpha: float, z_b: float = 20.0, *, nodes: int = 2001,
         zlo = float(grid.z[0])
         coarse = KodnirProblem(grid, C, b_alpha)
         k, h_off = coarse.unpack(u)
-        za = -math.sqrt(max(1.0 - h_off, 0.0))
+        za = _outlet_position(h_off)
         pos = np.nonzero(k > 0)[0]
         if pos.size and pos[0] > 3 and za - zlo > 0.2 * max(1.0, abs(za)):
             break

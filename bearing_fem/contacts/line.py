@@ -236,8 +236,8 @@ class LineProblem(ScaledResidual):
         w = np.tile(t, hi - lo)  # its position in the element
         pts = x[e] + w * (x[e + 1] - x[e])
         near = x[lo:hi + 1]
-        v_pts = line_displacement_at(x, p, comp.e_prime, pts)
-        v_near = line_displacement_at(x, p, comp.e_prime, near)
+        v = line_displacement_at(x, p, comp.e_prime, np.concatenate((pts, near)))
+        v_pts, v_near = v[:pts.size], v[pts.size:]
         g_pts, g_near = pts**2 / (2.0 * self.radius), near**2 / (2.0 * self.radius)
 
         def interpolated(nodal: np.ndarray) -> np.ndarray:

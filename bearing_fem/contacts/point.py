@@ -692,21 +692,21 @@ def rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
                              f"sqrt(2 rx h0), sqrt(2 ry h0)), got {rng!r}")
         ranges.append((float(vals[0]), float(vals[1])))
     nodes = require_int("nodes", nodes, 3, what="grid nodes per direction")
-    return _rigid_domain_load_share(ratio, ranges[0], ranges[1], nodes)
+    ranges = (ranges[0], ranges[1])
+    return _rigid_load(ratio, ranges, nodes) / _rigid_load(ratio, RIGID_RANGE_REYNOLDS, nodes)
 
 
-@functools.lru_cache(maxsize=64)
-def _rigid_domain_load_share(ratio: float, x_range: tuple[float, float],
-                             y_range: tuple[float, float], nodes: int) -> float:
-    """:func:`rigid_domain_load_share` on hashable arguments (the cache)."""
-    loads = []
-    for ranges in ((x_range, y_range), RIGID_RANGE_REYNOLDS):
-        grid, q = _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, ranges)
-        loads.append(float(grid.ops.weights @ (grid.ops.value @ q)))
-    return loads[0] / loads[1]
+@functools.lru_cache(maxsize=128)
+def _rigid_load(ratio: float, ranges: tuple[tuple[float, float], tuple[float, float]],
+                nodes: int) -> float:
+    """Load [N] of the rigid isoviscous film with the Reynolds outlet on ``ranges`` at
+    rx = h0 = 1 m, ry = ``ratio`` m, eta0 u_m = 1 Pa m (the self-similar solution of
+    :func:`_rigid_reduced_pressure`; cached: its solves are shared by
+    :func:`rigid_domain_load_share` and :func:`rigid_isoviscous_load_integral`)."""
+    grid, q = _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, ranges)
+    return float(grid.ops.weights @ (grid.ops.value @ q))
 
 
-@functools.lru_cache(maxsize=64)
 def rigid_isoviscous_load_integral(ratio: float, nodes: int = LOAD_INTEGRAL_NODES) -> float:
     """Dimensionless load I of the rigid isoviscous point contact with the Reynolds
     outlet: F = 2 sqrt(2) eta0 u_m rx sqrt(ry) I / sqrt(h0).
@@ -730,11 +730,8 @@ def rigid_isoviscous_load_integral(ratio: float, nodes: int = LOAD_INTEGRAL_NODE
     float
         I [-].
     """
-    rx, ry, h_n = 1.0, float(ratio), 1.0
-    grid, q = _rigid_reduced_pressure(rx, ry, h_n, 1.0, 1.0, nodes)
-    ops = grid.ops
-    load = float(ops.weights @ (ops.value @ q))
-    return load / (2.0 * math.sqrt(2.0) * rx * math.sqrt(ry) / math.sqrt(h_n))
+    ratio = float(ratio)  # the load at rx = h0 = 1 m, ry = ratio m: F = 2 sqrt(2 ratio) I
+    return _rigid_load(ratio, RIGID_RANGE_REYNOLDS, int(nodes)) / (2.0 * math.sqrt(2.0 * ratio))
 
 
 def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
