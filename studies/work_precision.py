@@ -750,8 +750,8 @@ def figures(outdir: Path, results: dict) -> None:
 # line default density over the Moes map (evidence for the line default)
 # ---------------------------------------------------------------------------------------
 #: Moes points of the check and the node densities tried, as fractions of the default.
-DENSITY_CASES = tuple((M, L) for M in (20, 100, 500) for L in (5, 10, 20))
-DENSITY_FRACTIONS = (1.0 / 3.0, 0.5, 2.0 / 3.0, 1.0)
+DENSITY_CASES = tuple((M, L) for M in (20, 100, 200, 500) for L in (5, 10, 20))
+DENSITY_FRACTIONS = (0.5, 0.75, 1.0, 1.5)
 
 
 def _nodes_fraction(n_default: int, fraction: float) -> int:
@@ -808,7 +808,8 @@ def density_markdown(rows: list[dict]) -> str:
                        for f in DENSITY_FRACTIONS)
     lines = ["## Line node density over the Moes map\n",
              "Errors of h_central and h_min at fractions of the default node density "
-             "(the default: 300 nodes per Hertz half-width, more above M = 250) against "
+             "(the default: 800/6 (M/100)^0.75 nodes per Hertz half-width, at least 801 "
+             "nodes: 801 at M = 100) against "
              "Richardson (p = 2) from 2N - 1 and 4N - 3 nodes; minimum of interleaved "
              "times.\n",
              f"| M | L | {heads} |", "|---|---|" + "---|" * len(DENSITY_FRACTIONS)]

@@ -106,21 +106,21 @@ def test_reused_step_equals_direct_step(monkeypatch):
 
 
 def test_default_mesh_density_grows_with_moes_load():
-    """300 nodes per Hertz half-width up to M = 250, then 300 sqrt(M/250) (outlet zone
-    narrows with load); the domain [-4.5 b, 1.5 b] is the same for these cases."""
-    per_b = {}
-    for M in (100, 250, 1000):
+    """800/6 nodes per Hertz half-width at M = 100 (801 nodes on [-4.5 b, 1.5 b]), times
+    (M/100)^0.75 (the outlet zone narrows with load), at least 801 nodes; the domain is
+    the same for these cases."""
+    per_b, sizes = {}, {}
+    for M in (20, 100, 500):
         setup = line.line_setup(scene_for(M, 2))
         x = setup.disc.x / setup.x_unit
         np.testing.assert_allclose((x[0], x[-1]), (-4.5, 1.5), rtol=1e-12,
                                    err_msg="fully flooded default domain")
-        per_b[M] = 1.0 / (x[1] - x[0])
-    np.testing.assert_allclose(per_b[100], line.NODES_PER_HALF_WIDTH, rtol=2e-3,
-                               err_msg="base density (odd node count rounding)")
-    np.testing.assert_allclose(per_b[250], per_b[100], rtol=0, atol=1e-9,
-                               err_msg="no refinement up to M = 250")
-    np.testing.assert_allclose(per_b[1000], 2.0 * line.NODES_PER_HALF_WIDTH, rtol=2e-3,
-                               err_msg="sqrt(1000/250) = 2")
+        per_b[M], sizes[M] = 1.0 / (x[1] - x[0]), x.size
+    assert sizes[100] == 801 and sizes[20] == 801, \
+        f"801 nodes at M = 100 and the 801-node floor at M = 20, got {sizes}"
+    assert (sizes[500] - 1) % 4 == 0, "N - 1 divisible by 4 (nested levels)"
+    np.testing.assert_allclose(per_b[500] / per_b[100], 5.0 ** line.DENSITY_MOES_EXPONENT,
+                               rtol=2e-3, err_msg="(500/100)^0.75, up to rounding N - 1 to 4k")
 
 
 def _element_poiseuille(reduced: bool, p_left: float, p_right: float):

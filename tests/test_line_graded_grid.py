@@ -235,14 +235,16 @@ def test_outlet_grading_budget_fallback_and_history():
     short = bf.solve(_moes_line({"grading": "outlet"}, solver={"iteration_budget": 20}))
     assert short.status == "budget_exhausted" and short.newton_iterations <= 20
     assert "the scene's budget is 20 Newton iterations" in short.message, short.message
-    hard = bf.solve(_moes_line({"grading": "outlet"},
+    # 1801 nodes (8 iterations are too few for the graded grid there; the default 801
+    # converges within them)
+    hard = bf.solve(_moes_line({"grading": "outlet", "nodes": 1801},
                                solver={"max_iterations": 8, "continuation": False}))
     assert hard.success, hard.message
     assert hard.newton_iterations == sum(its for *_, its in hard.continuation), \
         "the failed graded attempt's iterations are recorded and counted"
     assert "the graded grid failed" in hard.message
     for budget in (40, 50):  # the fallback overran the budget (59 iterations)
-        capped = bf.solve(_moes_line({"grading": "outlet"}, solver={
+        capped = bf.solve(_moes_line({"grading": "outlet", "nodes": 1801}, solver={
             "max_iterations": 8, "continuation": False, "iteration_budget": budget}))
         assert capped.newton_iterations <= budget, (budget, capped.newton_iterations)
     assert any(w.startswith("mesh.grading = 'outlet': the graded grid failed")

@@ -486,16 +486,24 @@ class LineProblem(ScaledResidual):
 #: h*/h0 of Martin's rigid isoviscous cylinder (sec^2 of the outlet angle, ~1.2255);
 #: used only to estimate a starting offset for rigid loaded scenes, never as an oracle.
 MARTIN_HSTAR_APPROX = 1.2255
-#: Default grid density of elastic line contacts: nodes per Hertz half-width.
-NODES_PER_HALF_WIDTH = 300
-#: Above this Moes load parameter M the default density grows as sqrt(M / this): the
-#: outlet constriction and spike narrow with load (measured at 300 nodes per b against
-#: twice as fine: h_central changes 0.08 % at M = 200 but 0.82 % at M = 1000, L = 2).
+#: Default grid density of elastic line contacts at Moes M = 100 [nodes per Hertz
+#: half-width b]: 801 nodes on the default domain [-4.5, 1.5] b. The fastest setting
+#: that reaches 1 % in h_central and h_min at M = 100, L = 10 is 801 uniform nodes
+#: (``studies/work_precision.py``: h_min 0.72 %, h_central 0.05 %).
+NODES_PER_HALF_WIDTH = 800.0 / 6.0
+#: The default density grows as (M / 100)^DENSITY_MOES_EXPONENT: the outlet constriction
+#: and spike narrow with load. At a fixed density the h_min error grows about as M^1.4
+#: between M = 100 and 500, and falls about as the density^-1.9 (measured at 300 and
+#: 424 nodes per b, L = 5 .. 20), so M^0.75 keeps it about constant: M = 500 gets
+#: 446 per b (h_min 0.86 % at 424 per b, 1.6 to 1.9 % at 284 per b).
+DENSITY_MOES_EXPONENT = 0.75
+#: Above this Moes load parameter M the grid sequence keeps at most MAX_COARSENINGS
+#: coarser levels (their outlet spike must still be resolved).
 DENSE_MESH_MOES_M = 250.0
 #: Cap on default elastic line grids (dense compliance: memory and LU time grow as N^2, N^3).
 MAX_DEFAULT_ELASTIC_NODES = 4001
 #: Default domain of isoviscous elastic line scenes whose default grid reaches
-#: MAX_DEFAULT_ELASTIC_NODES (Moes M above ~1200): [-ISOVISCOUS_CAPPED_INLET,
+#: MAX_DEFAULT_ELASTIC_NODES (Moes M above ~860): [-ISOVISCOUS_CAPPED_INLET,
 #: ISOVISCOUS_CAPPED_OUTLET] Hertz half-widths (the inlet end at least 15 hydrodynamic
 #: lengths sqrt(2 R h) beyond the Hertz edge) instead of [-4.5, 1.5], so that the capped
 #: grid keeps the density the film needs. Without piezo-viscosity the inlet pressure
@@ -555,9 +563,9 @@ COARSEST_NODES = 201
 #: Grid sequencing above Moes M = DENSE_MESH_MOES_M: at most this many halvings of the
 #: spacing below the solve's grid. A coarse level must still resolve the outlet spike,
 #: which narrows with load: the default
-#: grid grows as sqrt(M) up to MAX_DEFAULT_ELASTIC_NODES, and below the cap the levels
-#: stop at a quarter of it anyway (e.g. 901, 1801, 3601 at M = 1000); capped at 4001
-#: nodes (M > ~1500), four levels went down to 501 nodes (83 per Hertz half-width), where
+#: grid grows with M up to MAX_DEFAULT_ELASTIC_NODES, and below the cap the levels
+#: stop at a quarter of it anyway (e.g. 670, 1339, 2677 at M = 500); capped at 4001
+#: nodes (M > ~860), four levels went down to 501 nodes (83 per Hertz half-width), where
 #: Newton and every continuation step stalled at M = 1874, L = 0 .. 3.6 and M = 4329 and
 #: 1e4, L = 3.6 .. 10.7 (``studies/stability_atlas.py``); from 1001 nodes they converge in
 #: 14-28 iterations. Below that M the full sequence from COARSEST_NODES stays (an explicit
@@ -623,11 +631,13 @@ def kodnir_coefficient(scene) -> float:
 
 def _elastic_density(scene: Scene) -> float:
     """Default grid density of a loaded elastic line scene [nodes per Hertz half-width]:
-    :data:`NODES_PER_HALF_WIDTH`, growing as sqrt(M / :data:`DENSE_MESH_MOES_M`)."""
+    :data:`NODES_PER_HALF_WIDTH` (M / 100)^:data:`DENSITY_MOES_EXPONENT`, M the Moes load
+    parameter (the node count is then kept between 801 and
+    :data:`MAX_DEFAULT_ELASTIC_NODES`)."""
     lub = scene.lubricant
     moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime, lub.viscosity,
                              scene.kinematics.mean_speed, lub.effective_piezo)["M"]
-    return NODES_PER_HALF_WIDTH * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M))
+    return NODES_PER_HALF_WIDTH * (moes_m / 100.0) ** DENSITY_MOES_EXPONENT
 
 
 def default_x_range(scene: Scene) -> tuple[float, float]:
@@ -724,7 +734,8 @@ def line_setup(scene: Scene, nodes: int | None = None,
         if nodes is None:
             # n - 1 a multiple of 4: the grid and its two coarser grids (every other
             # node) nest, for the grid sequence and the error estimate
-            auto = 4 * math.ceil(min(max(width * density, 801), cap - 1) / 4) + 1
+            # (rounded to 1e-6 first: 6 b at 800/6 per b is 800 nodes, not 800 + 1e-13)
+            auto = 4 * math.ceil(round(min(max(width * density, 800), cap - 1), 6) / 4) + 1
             nodes = scene.mesh.nodes or auto
         disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
     if model.elasticity == "rigid":
