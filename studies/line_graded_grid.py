@@ -133,7 +133,9 @@ def auto_case(M: float, L: float) -> dict:
     t0 = time.perf_counter()
     gra = bf.solve(graded())
     graded_seconds = time.perf_counter() - t0
-    n = int(gra.x.size)
+    # the default node count (that of the graded grid too; a failed locator's result is
+    # on its own coarser grid, which is not the row's grid)
+    n = uni["nodes"]
     ref = _solve(graded(2 * n - 1))
     row = {"M": M, "L": L, "nodes": n, "uniform_status": uni["status"],
            "graded_status": gra.status, "reference_status": ref["status"],
@@ -160,6 +162,12 @@ def auto_markdown(rows: list[dict]) -> str:
                          for k in QUANTITIES)
             + f" | {_fmt(r['h_min_graded_estimate'])} / "
               f"{_fmt(r['friction_force_graded_estimate'])} |")
+    failed = [r for r in rows if {r["uniform_status"], r["graded_status"],
+                                  r["reference_status"]} != {"converged"}]
+    if failed:
+        out.append("")
+        out += [f"M = {r['M']:g}, L = {r['L']:g}: uniform {r['uniform_status']}, outlet "
+                f"{r['graded_status']}, reference {r['reference_status']}" for r in failed]
     return "\n".join(out) + "\n"
 
 
