@@ -771,6 +771,18 @@ def is_linear(scene) -> bool:
     return is_linear_scene(scene)
 
 
+def _limited_coarsening(scene: Scene) -> bool:
+    """True for a loaded half-space scene above Moes M = DENSE_MESH_MOES_M, whose grid
+    sequence keeps at most MAX_COARSENINGS coarser levels."""
+    if scene.load.force is None or scene.model.elasticity != "half-space":
+        return False
+    lub = scene.lubricant
+    moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
+                             lub.viscosity, scene.kinematics.mean_speed,
+                             lub.effective_piezo)["M"]
+    return moes_m > DENSE_MESH_MOES_M
+
+
 def line_levels(nodes: int, coarsest: int = COARSEST_NODES,
                 max_coarsenings: int | None = None) -> list[int]:
     """Grid sequence n_0 < n_1 < ... < nodes, halving the spacing each level.
@@ -856,14 +868,7 @@ class LineModel:
     def _max_coarsenings(self) -> int | None:
         """MAX_COARSENINGS for loaded half-space scenes above DENSE_MESH_MOES_M (where
         the outlet spike narrows with load), else None."""
-        scene = self.scene
-        if scene.load.force is None or scene.model.elasticity != "half-space":
-            return None
-        lub = scene.lubricant
-        moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
-                                 lub.viscosity, scene.kinematics.mean_speed,
-                                 lub.effective_piezo)["M"]
-        return MAX_COARSENINGS if moes_m > DENSE_MESH_MOES_M else None
+        return MAX_COARSENINGS if _limited_coarsening(self.scene) else None
 
     def coarsen(self, level: LineSetup) -> LineSetup | None:
         """The level with half the spacing's inverse (every other node), or None."""
@@ -1141,11 +1146,17 @@ def locator_nodes(scene: Scene, setup: LineSetup | None = None) -> int:
         4k + 1 nodes giving a spacing of at most :data:`SPIKE_LOCATOR_SPACING` Hertz
         half-widths over the scene's domain, between :data:`SPIKE_LOCATOR_NODES` and
         :data:`SPIKE_LOCATOR_MAX_NODES` (on domains longer than 50 b the cap makes the
-        spacing coarser).
+        spacing coarser); above Moes M = :data:`DENSE_MESH_MOES_M` (half-space) at least
+        the scene's own node count, up to the same cap.
     """
     setup = setup or line_setup(scene)
     width = float(setup.disc.x[-1] - setup.disc.x[0]) / setup.x_unit
     n = 4 * math.ceil(width / SPIKE_LOCATOR_SPACING / 4) + 1
+    if _limited_coarsening(scene):
+        # above DENSE_MESH_MOES_M the outlet spike is narrow: locate it on the scene's own
+        # grid (capped), whose sequence keeps its coarsest level fine enough to converge
+        # (on 401 nodes over the short isoviscous domain, M = 1000 spent the budget)
+        n = max(n, setup.disc.x.size)
     return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
 
 
