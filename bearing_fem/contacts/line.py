@@ -1167,7 +1167,8 @@ def locator_nodes(scene: Scene, setup: LineSetup | None = None) -> int:
         # above DENSE_MESH_MOES_M the outlet spike is narrow: locate it on the scene's own
         # grid (capped), whose sequence keeps its coarsest level fine enough to converge
         # (on 401 nodes over the short isoviscous domain, M = 1000 spent the budget)
-        n = max(n, setup.disc.x.size)
+        # (rounded up to 4k + 1: a mesh.nodes count such as 1000 has no coarser levels)
+        n = max(n, 4 * math.ceil((setup.disc.x.size - 1) / 4) + 1)
     return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
 
 
