@@ -560,7 +560,7 @@ REDUCED_POISEUILLE_LINE = True
 #: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
 #: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge). The
 #: Newton iterations from the Hertzian guess are cheapest on the coarsest level: from 201
-#: nodes (was 501) the default 1801-node solve at M = 100, L = 10 takes 6 + 5 + 7 + 4
+#: nodes (was 501) a 1801-node solve at M = 100, L = 10 takes 6 + 5 + 7 + 4
 #: iterations on 226 .. 1801 nodes instead of 18 + 4 on 901 and 1801; over the line
 #: map of ``studies/stability_atlas.py`` (384 solves) 12 % fewer Newton iterations and
 #: 113 instead of 170 continuation steps, with the same films but in one under-resolved
