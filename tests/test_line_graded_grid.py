@@ -313,3 +313,24 @@ def test_locator_nodes_nest_for_any_scene_node_count():
         n = locator_nodes(scene)
         assert (n - 1) % 4 == 0, (nodes, n)
         assert min(nodes, SPIKE_LOCATOR_MAX_NODES) <= n <= SPIKE_LOCATOR_MAX_NODES, (nodes, n)
+
+
+def test_graded_grid_study_row_nodes_when_the_uniform_solve_fails(load_study, monkeypatch):
+    """A row's node count is the default grid's even when the uniform solve fails and its
+    result lies on a coarser level (the row took the result's node count: 401 here)."""
+    from bearing_fem.contacts.line import line_setup
+
+    mod = load_study("line_graded_grid")
+    real = mod._solve
+
+    def failing_uniform(scene):
+        row = real(scene)
+        if scene.mesh.grading is None and scene.mesh.nodes is None:
+            row.update(status="stalled", nodes=401)
+        return row
+
+    monkeypatch.setattr(mod, "_solve", failing_uniform)
+    row = mod.auto_case(20.0, 5.0)
+    default = int(line_setup(mod.scene_for(20.0, 5.0)).disc.x.size)
+    assert row["nodes"] == default == 801, (row["nodes"], default)
+    assert row["reference_status"] == "converged", row["reference_status"]
