@@ -156,7 +156,7 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
     constriction's geometry, or h_min with ``h_near`` more than the error estimate's
     :data:`ERROR_WARNING_THRESHOLD`: the bow of the deflection that ``h_near`` adds is
     discretisation error, which the error estimate reports at that threshold (on the
-    default grid at Moes M = 1000, L = 0, 3601 nodes, it puts h_min 1.1 % below the nodal
+    3601 nodes over [-4.5, 1.5] b at Moes M = 1000, L = 0, it puts h_min 1.1 % below the nodal
     minimum with an estimated error of 3.9 %).
 
     Parameters

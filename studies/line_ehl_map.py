@@ -11,8 +11,9 @@ Scene
     eta0 = 0.01 Pa s, pure rolling; (M, L) realised by
     :func:`bearing_fem.units.line_scene_from_moes`; Barus viscosity, incompressible,
     Reynolds cavitation, half-space elasticity; default domain; the solver's default
-    mesh (300 nodes per Hertz half-width, times sqrt(M/250) above M = 250, at most 4001
-    nodes; or ``nodes``) and one
+    mesh (800/6 (M/100)^0.75 nodes per Hertz half-width, at least 801 and at most 4001
+    nodes; isoviscous scenes whose grid reaches the cap take the shorter domain
+    [-1.5, 1.2] b; or ``nodes``) and one
     with half its spacing (``2 nodes - 1``) for the grid-convergence check.
 
 Expected outcome

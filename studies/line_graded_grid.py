@@ -133,9 +133,9 @@ def auto_case(M: float, L: float) -> dict:
     t0 = time.perf_counter()
     gra = bf.solve(graded())
     graded_seconds = time.perf_counter() - t0
-    # the default node count (that of the graded grid too; a failed locator's result is
-    # on its own coarser grid, which is not the row's grid)
-    n = uni["nodes"]
+    # the default node count (that of the graded grid too; a failed solve's result may
+    # be on a coarser level or the locator's grid, which is not the row's grid)
+    n = int(line_setup(base).disc.x.size)
     ref = _solve(graded(2 * n - 1))
     row = {"M": M, "L": L, "nodes": n, "uniform_status": uni["status"],
            "graded_status": gra.status, "reference_status": ref["status"],

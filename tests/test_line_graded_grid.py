@@ -291,3 +291,46 @@ def test_graded_grid_study_row_of_a_failed_outlet_solve(load_study):
     failed = dict(row, graded_status="budget_exhausted")
     table = mod.auto_markdown([failed])
     assert "M = 1000, L = 0: uniform converged, outlet budget_exhausted" in table, table
+
+
+def test_locator_nodes_nest_for_any_scene_node_count():
+    """Above M = 250 the spike locator takes the scene's own node count; a ``mesh.nodes``
+    of 1000 gave a 1000-node locator grid (N - 1 not divisible by 4, no coarser level),
+    against the documented 4k + 1."""
+    import bearing_fem as bf
+    from bearing_fem import units
+    from bearing_fem.contacts.line import SPIKE_LOCATOR_MAX_NODES, locator_nodes
+
+    par = units.line_scene_from_moes(500.0, 5.0)
+    for nodes in (1000, 1001, 1002, 1003, 1500, 2500):
+        scene = bf.Scene.from_dict({
+            "contact": {"kind": "line", "rx": par["radius"]},
+            "materials": {"reduced_modulus": par["e_prime"]},
+            "lubricant": {"viscosity": par["viscosity"], "piezo": par["piezo"]},
+            "kinematics": {"u1": par["mean_speed"], "u2": par["mean_speed"]},
+            "load": {"force": par["load_per_length"]},
+            "mesh": {"grading": "outlet", "nodes": nodes}})
+        n = locator_nodes(scene)
+        assert (n - 1) % 4 == 0, (nodes, n)
+        assert min(nodes, SPIKE_LOCATOR_MAX_NODES) <= n <= SPIKE_LOCATOR_MAX_NODES, (nodes, n)
+
+
+def test_graded_grid_study_row_nodes_when_the_uniform_solve_fails(load_study, monkeypatch):
+    """A row's node count is the default grid's even when the uniform solve fails and its
+    result lies on a coarser level (the row took the result's node count: 401 here)."""
+    from bearing_fem.contacts.line import line_setup
+
+    mod = load_study("line_graded_grid")
+    real = mod._solve
+
+    def failing_uniform(scene):
+        row = real(scene)
+        if scene.mesh.grading is None and scene.mesh.nodes is None:
+            row.update(status="stalled", nodes=401)
+        return row
+
+    monkeypatch.setattr(mod, "_solve", failing_uniform)
+    row = mod.auto_case(20.0, 5.0)
+    default = int(line_setup(mod.scene_for(20.0, 5.0)).disc.x.size)
+    assert row["nodes"] == default == 801, (row["nodes"], default)
+    assert row["reference_status"] == "converged", row["reference_status"]

@@ -497,6 +497,12 @@ NODES_PER_HALF_WIDTH = 800.0 / 6.0
 #: 424 nodes per b, L = 5 .. 20), so M^0.75 keeps it about constant: M = 500 gets
 #: 446 per b (h_min 0.86 % at 424 per b, 1.6 to 1.9 % at 284 per b).
 DENSITY_MOES_EXPONENT = 0.75
+#: Kodnir's local compliance (``model.elasticity = "local"``) converges more slowly on
+#: uniform grids than the half-space (measured against 12801 nodes at M = 100, L = 10:
+#: h_central 1.8 % off on 801 nodes, 0.46 % on 1601, 0.21 % on 2401): its default density
+#: is at least LOCAL_NODES_PER_HALF_WIDTH nodes per Hertz half-width, growing as
+#: sqrt(M / DENSE_MESH_MOES_M) above that M (1801 nodes at M = 100).
+LOCAL_NODES_PER_HALF_WIDTH = 300.0
 #: Above this Moes load parameter M the grid sequence keeps at most MAX_COARSENINGS
 #: coarser levels (their outlet spike must still be resolved).
 DENSE_MESH_MOES_M = 250.0
@@ -554,7 +560,7 @@ REDUCED_POISEUILLE_LINE = True
 #: 10 + 7 + 5 iterations on 501, 1001, 2001 nodes, against 34 iterations directly on
 #: 2001 nodes; the upwinded wedge flux is what lets the fine levels converge). The
 #: Newton iterations from the Hertzian guess are cheapest on the coarsest level: from 201
-#: nodes (was 501) the default 1801-node solve at M = 100, L = 10 takes 6 + 5 + 7 + 4
+#: nodes (was 501) a 1801-node solve at M = 100, L = 10 takes 6 + 5 + 7 + 4
 #: iterations on 226 .. 1801 nodes instead of 18 + 4 on 901 and 1801; over the line
 #: map of ``studies/stability_atlas.py`` (384 solves) 12 % fewer Newton iterations and
 #: 113 instead of 170 continuation steps, with the same films but in one under-resolved
@@ -632,12 +638,17 @@ def kodnir_coefficient(scene) -> float:
 def _elastic_density(scene: Scene) -> float:
     """Default grid density of a loaded elastic line scene [nodes per Hertz half-width]:
     :data:`NODES_PER_HALF_WIDTH` (M / 100)^:data:`DENSITY_MOES_EXPONENT`, M the Moes load
-    parameter (the node count is then kept between 801 and
-    :data:`MAX_DEFAULT_ELASTIC_NODES`)."""
+    parameter; with the local compliance at least :data:`LOCAL_NODES_PER_HALF_WIDTH`
+    sqrt(max(1, M / :data:`DENSE_MESH_MOES_M`)) (the node count is then kept between 801
+    and :data:`MAX_DEFAULT_ELASTIC_NODES`)."""
     lub = scene.lubricant
     moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime, lub.viscosity,
                              scene.kinematics.mean_speed, lub.effective_piezo)["M"]
-    return NODES_PER_HALF_WIDTH * (moes_m / 100.0) ** DENSITY_MOES_EXPONENT
+    density = NODES_PER_HALF_WIDTH * (moes_m / 100.0) ** DENSITY_MOES_EXPONENT
+    if scene.model.elasticity == "local":
+        density = max(density, LOCAL_NODES_PER_HALF_WIDTH
+                      * math.sqrt(max(1.0, moes_m / DENSE_MESH_MOES_M)))
+    return density
 
 
 def default_x_range(scene: Scene) -> tuple[float, float]:
@@ -1156,7 +1167,8 @@ def locator_nodes(scene: Scene, setup: LineSetup | None = None) -> int:
         # above DENSE_MESH_MOES_M the outlet spike is narrow: locate it on the scene's own
         # grid (capped), whose sequence keeps its coarsest level fine enough to converge
         # (on 401 nodes over the short isoviscous domain, M = 1000 spent the budget)
-        n = max(n, setup.disc.x.size)
+        # (rounded up to 4k + 1: a mesh.nodes count such as 1000 has no coarser levels)
+        n = max(n, 4 * math.ceil((setup.disc.x.size - 1) / 4) + 1)
     return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
 
 
