@@ -121,6 +121,14 @@ def test_default_mesh_density_grows_with_moes_load():
     assert (sizes[500] - 1) % 4 == 0, "N - 1 divisible by 4 (nested levels)"
     np.testing.assert_allclose(per_b[500] / per_b[100], 5.0 ** line.DENSITY_MOES_EXPONENT,
                                rtol=2e-3, err_msg="(500/100)^0.75, up to rounding N - 1 to 4k")
+    # isoviscous half-space scenes: 1.5 times the density (sharper outlet constriction;
+    # on the plain density h_min was 1.1 % off at M = 100)
+    iso = line.line_setup(scene_for(100, 0))
+    x = iso.disc.x / iso.x_unit
+    assert x.size == 1201, x.size
+    np.testing.assert_allclose(1.0 / (x[1] - x[0]),
+                               line.ISOVISCOUS_DENSITY_FACTOR * per_b[100], rtol=2e-3,
+                               err_msg="1.5 x the piezo-viscous density at M = 100")
 
 
 def test_local_compliance_default_grid_keeps_h_central_within_one_percent():

@@ -276,7 +276,7 @@ def test_outlet_grading_locator_uses_the_end_pressures():
 
 
 def test_graded_grid_study_row_of_a_failed_outlet_solve(load_study):
-    """Isoviscous M = 1000 (the narrow default domain [-1.5, 1.2] b, 2029 nodes): the
+    """Isoviscous M = 1000 (the narrow default domain [-1.5, 1.2] b, 3041 nodes): the
     outlet-graded solve converges (its spike locator runs on the scene's own grid, capped
     at 2001 nodes; on 401 nodes it spent the 400-iteration budget). A row whose
     outlet-graded solve fails gives the default node count (not the grid of the failed
