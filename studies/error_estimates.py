@@ -406,13 +406,12 @@ def energy_balance_grids() -> list[dict]:
             q = res.quantities
             qp = q["heat_power_poiseuille"]
             model = LineModel(scene)
-            problem = model.problem(model.setup)
-            residual = problem.reynolds_residual(np.asarray(res.pressure), float(res.h0))
+            p = np.asarray(res.pressure)
+            residual = model.problem(model.setup).reynolds_residual(p, float(res.h0))
             row.update(
                 balance_residual=abs(q["heat_power_poiseuille_direct"]
                                      + q["heat_power_stabilisation"] - qp) / abs(qp),
-                heat_poiseuille=qp,
-                sum_p_residual=float(np.asarray(res.pressure) @ residual))
+                heat_poiseuille=qp, sum_p_residual=float(p @ residual))
         out.append(row)
     return out
 

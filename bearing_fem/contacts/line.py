@@ -640,6 +640,19 @@ def kodnir_coefficient(scene) -> float:
     return kodnir_local_coefficient(scene.load.force, scene.contact.rx, e)
 
 
+def _moes_m(scene: Scene) -> float:
+    """Moes load parameter M [-] of a loaded line scene."""
+    lub = scene.lubricant
+    return units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime, lub.viscosity,
+                           scene.kinematics.mean_speed, lub.effective_piezo)["M"]
+
+
+def _nested_count(intervals: float) -> int:
+    """The node count with at least ``intervals`` intervals and N - 1 divisible by 4, so
+    that the grid and its two coarser grids (every other node) nest."""
+    return 4 * math.ceil(intervals / 4) + 1
+
+
 def _elastic_density(scene: Scene) -> float:
     """Default grid density of a loaded elastic line scene [nodes per Hertz half-width]:
     :data:`NODES_PER_HALF_WIDTH` (M / 100)^:data:`DENSITY_MOES_EXPONENT`, M the Moes load
@@ -647,11 +660,9 @@ def _elastic_density(scene: Scene) -> float:
     with the local compliance at least :data:`LOCAL_NODES_PER_HALF_WIDTH`
     sqrt(max(1, M / :data:`DENSE_MESH_MOES_M`)) (the node count is then kept between 801
     and :data:`MAX_DEFAULT_ELASTIC_NODES`)."""
-    lub = scene.lubricant
-    moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime, lub.viscosity,
-                             scene.kinematics.mean_speed, lub.effective_piezo)["M"]
+    moes_m = _moes_m(scene)
     density = NODES_PER_HALF_WIDTH * (moes_m / 100.0) ** DENSITY_MOES_EXPONENT
-    if lub.effective_piezo == 0.0 and scene.model.elasticity == "half-space":
+    if scene.lubricant.effective_piezo == 0.0 and scene.model.elasticity == "half-space":
         density *= ISOVISCOUS_DENSITY_FACTOR
     if scene.model.elasticity == "local":
         density = max(density, LOCAL_NODES_PER_HALF_WIDTH
@@ -751,10 +762,9 @@ def line_setup(scene: Scene, nodes: int | None = None,
         disc = LineDiscretisation.from_nodes(xs)  # graded nodes allowed (any model)
     else:
         if nodes is None:
-            # n - 1 a multiple of 4: the grid and its two coarser grids (every other
-            # node) nest, for the grid sequence and the error estimate
-            # (rounded to 1e-6 first: 6 b at 800/6 per b is 800 nodes, not 800 + 1e-13)
-            auto = 4 * math.ceil(round(min(max(width * density, 800), cap - 1), 6) / 4) + 1
+            # nested levels for the grid sequence and the error estimate (rounded to 1e-6
+            # first: 6 b at 800/6 per b is 800 intervals, not 800 + 1e-13)
+            auto = _nested_count(round(min(max(width * density, 800), cap - 1), 6))
             nodes = scene.mesh.nodes or auto
         disc = LineDiscretisation.uniform(x_range[0] * x_unit, x_range[1] * x_unit, nodes)
     if model.elasticity == "rigid":
@@ -795,11 +805,7 @@ def _limited_coarsening(scene: Scene) -> bool:
     sequence keeps at most MAX_COARSENINGS coarser levels."""
     if scene.load.force is None or scene.model.elasticity != "half-space":
         return False
-    lub = scene.lubricant
-    moes_m = units.moes_line(scene.load.force, scene.contact.rx, scene.e_prime,
-                             lub.viscosity, scene.kinematics.mean_speed,
-                             lub.effective_piezo)["M"]
-    return moes_m > DENSE_MESH_MOES_M
+    return _moes_m(scene) > DENSE_MESH_MOES_M
 
 
 def line_levels(nodes: int, coarsest: int = COARSEST_NODES,
@@ -1170,13 +1176,13 @@ def locator_nodes(scene: Scene, setup: LineSetup | None = None) -> int:
     """
     setup = setup or line_setup(scene)
     width = float(setup.disc.x[-1] - setup.disc.x[0]) / setup.x_unit
-    n = 4 * math.ceil(width / SPIKE_LOCATOR_SPACING / 4) + 1
+    n = _nested_count(width / SPIKE_LOCATOR_SPACING)
     if _limited_coarsening(scene):
         # above DENSE_MESH_MOES_M the outlet spike is narrow: locate it on the scene's own
         # grid (capped), whose sequence keeps its coarsest level fine enough to converge
         # (on 401 nodes over the short isoviscous domain, M = 1000 spent the budget)
         # (rounded up to 4k + 1: a mesh.nodes count such as 1000 has no coarser levels)
-        n = max(n, 4 * math.ceil((setup.disc.x.size - 1) / 4) + 1)
+        n = max(n, _nested_count(setup.disc.x.size - 1))
     return int(min(max(n, SPIKE_LOCATOR_NODES), SPIKE_LOCATOR_MAX_NODES))
 
 
@@ -1234,7 +1240,7 @@ def outlet_graded_grid(scene: Scene, centre: float,
     """
     setup = setup or line_setup(scene)
     x = setup.disc.x / setup.x_unit
-    n = 4 * math.ceil((x.size - 1) / 4) + 1
+    n = _nested_count(x.size - 1)
     lo, hi = float(x[0]), float(x[-1])
     return outlet_graded_nodes(n, (lo, hi), centre=min(max(centre, lo), hi),
                                width=OUTLET_GRADING_WIDTH, ratio=OUTLET_GRADING_RATIO)
