@@ -51,7 +51,7 @@ from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
                      solve_newton_model)
 from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
                      reduced_law)
-from .problem import ScaledResidual, fischer_burmeister
+from .problem import ScaledResidual, fischer_burmeister, row_smoothing
 
 
 @dataclass
@@ -170,6 +170,7 @@ class LineProblem(ScaledResidual):
         else:
             self._cmat = compliance.matrix(n)
         self._row_scale = None
+        self._fb_mu = None
         self._cmat_columns = {}  # dtype -> C[:, interior] in that dtype (dense C)
         self._lu = None  # dense LU factors kept for reuse as a preconditioner
         self._displacement_cache = None
@@ -260,6 +261,7 @@ class LineProblem(ScaledResidual):
         h = np.maximum(self.film_nodes(p, h0), 1e-3 * self.h_ref)
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (self.disc.node_spacing / (2.0 * eps0 * self.p_ref))[self.free]
+        self._fb_mu = row_smoothing(self._row_scale)
 
     def reynolds_residual(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Nodal weak residual R_i [m^2/s] (all nodes)."""
@@ -306,7 +308,7 @@ class LineProblem(ScaledResidual):
         s = self._row_scale
         da = None
         if self.cavitation == "reynolds":
-            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res * s)
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res * s, self._fb_mu)
             row_factor = db * s
         else:
             row_factor = s

@@ -74,7 +74,7 @@ from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
                      reduced_law)
 from .point_grid import (LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates,
                          require_finite_factor_data)
-from .problem import ScaledResidual, fischer_burmeister
+from .problem import ScaledResidual, fischer_burmeister, row_smoothing
 
 log = logging.getLogger(__name__)
 
@@ -832,6 +832,7 @@ class PointProblem(ScaledResidual):
         self._stiff_diag = ((4.0 / 3.0) * (hyy / hxx + hxx / hyy)).ravel()
         self.near_field_cells = near_field_cells
         self._row_scale = None
+        self._fb_mu = None
         self._pattern = None
         self._displacement_cache = None
         self._forcing_term = None
@@ -949,6 +950,7 @@ class PointProblem(ScaledResidual):
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free] \
             * self._row_weight
+        self._fb_mu = row_smoothing(self._row_scale)
 
     def admissible(self, z: np.ndarray) -> bool:
         """Finite unknowns and a positive film at every quadrature point."""
@@ -1043,7 +1045,7 @@ class PointProblem(ScaledResidual):
         rows = self.free
         s = self._row_scale
         if self.cavitation == "reynolds":
-            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res[rows] * s)
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res[rows] * s, self._fb_mu)
             row_factor = db * s
         else:
             da = None

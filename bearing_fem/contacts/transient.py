@@ -227,7 +227,8 @@ class TransientPointProblem(PointProblem):
             # redo it about the full (steady + time) residual
             rows = self.free
             res = self.reynolds_residual(p, h0)
-            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res[rows] * self._row_scale)
+            _, da, db = fischer_burmeister(p[rows] / self.p_ref, res[rows] * self._row_scale,
+                                           self._fb_mu)
             row_factor = db * self._row_scale
         return a_p, a_h, drdh0, row_factor, da
 
