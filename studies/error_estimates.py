@@ -35,15 +35,18 @@ order is not observable. Does it predict the true error?
    fitted after the fact) bounds the rules that treat each kind and quantity alike; the
    correlation of log|d3/d2| with log|d2/d1| over the map says whether the trend of the
    coarser levels (the observed order) predicts the next change at all. Rules of other
-   forms are not bounded by these shares.
+   forms are not bounded by these shares. ``intermediate_check`` then asks whether a
+   fourth solve, on 4/3 times the default spacing (finer than the coarsest level, which
+   is the least asymptotic), would do: Richardson over the spacings h, 4h/3 and 2h.
 5. **Energy balance** of the same map solves: the heat power uses the conservative
    Poiseuille form Q_P = u_m int h dp/dx dA; the discrete physical dissipation
    int h^3 |grad p|^2/(12 eta) dA plus the numerical dissipation of the stabilisation
    must add up to it (the discrete weak form tested with the pressure itself), and Q_P
    must be grid-converged (its change to the twice-finer grid). The balance equals
-   sum_i p_i R_i, R_i the nodal residual, so rows the Newton test accepts with a
-   residual that is not small against their own fluxes (the far inlet, at pressures of
-   1e-9 p_h) spoil it; the full run follows it over node counts for M = 1000, L = 5
+   sum_i p_i R_i, R_i the nodal residual, so any row whose residual is not small against
+   its own fluxes spoils it (the far inlet did, at 1e-9 p_h, until the complementarity
+   smoothing was scaled per row: ``bearing_fem.contacts.problem.row_smoothing``); the
+   full run follows it over node counts for M = 1000, L = 5
    (``energy.line_balance_grids`` in ``summary.json``).
 
 Run ``python studies/error_estimates.py OUT [--quick]``; writes ``oracles.csv``,
@@ -61,11 +64,12 @@ from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
+from scipy.optimize import brentq
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import bearing_fem as bf  # noqa: E402
-from bearing_fem import analytic, units  # noqa: E402
+from bearing_fem import analytic, post, units  # noqa: E402
 from bearing_fem.contacts.line import line_setup  # noqa: E402
 from bearing_fem.contacts.point import solve_point  # noqa: E402
 from bearing_fem.post import ESTIMATED_QUANTITIES  # noqa: E402
@@ -214,11 +218,18 @@ def point_cases(quick: bool) -> list[tuple[float, float]]:
             if _alpha_ph(point_scene(M, L, 33)) <= POINT_MAX_ALPHA_PH]
 
 
-def map_row(kind: str, M: float, L: float, coarse, fine) -> dict:
-    """Estimate of the default-grid solve against its change to the twice-finer solve."""
+def map_row(kind: str, M: float, L: float, coarse, fine, between=None) -> dict:
+    """Estimate of the default-grid solve against its change to the twice-finer solve;
+    ``between`` (optional) is the solve with 4/3 times the default spacing, for
+    :func:`intermediate_check`."""
     row = {"kind": kind, "M": M, "L": L, "status": coarse.status,
            "fine_status": fine.status, "nodes": coarse.dofs, "fine_nodes": fine.dofs,
            "seconds": coarse.wall_time_s, "fine_seconds": fine.wall_time_s}
+    if between is not None:
+        row["between_status"] = between.status
+        row["between_seconds"] = between.wall_time_s
+        for k in QUANTITIES:
+            row[f"{k}_between"] = between.quantities.get(k) if between.success else None
     est = coarse.error_estimate or {}
     for k in QUANTITIES:
         c, f = coarse.quantities.get(k, math.nan), fine.quantities.get(k, math.nan)
@@ -250,15 +261,22 @@ def run_maps(quick: bool) -> list[dict]:
             n = 601
         coarse = bf.solve(line_scene(M, L, n))
         fine = bf.solve(line_scene(M, L, 2 * n - 1))
-        rows.append(map_row("line", M, L, coarse, fine))
+        between = bf.solve(line_scene(M, L, _three_quarters(n)))
+        rows.append(map_row("line", M, L, coarse, fine, between))
         print(_brief(rows[-1]), flush=True)
     for M, L in point_cases(quick):
         n = 65 if quick else POINT_NODES
         coarse = solve_point(point_scene(M, L, n))
         fine = solve_point(point_scene(M, L, 2 * n - 1))
-        rows.append(map_row("point", M, L, coarse, fine))
+        between = solve_point(point_scene(M, L, _three_quarters(n)))
+        rows.append(map_row("point", M, L, coarse, fine, between))
         print(_brief(rows[-1]), flush=True)
     return rows
+
+
+def _three_quarters(nodes: int) -> int:
+    """Node count (per side) with 4/3 times the spacing of ``nodes`` (4k + 1)."""
+    return 3 * (nodes - 1) // 4 + 1
 
 
 #: Bearing checks: (example, contact grid or None for the defaults, quick).
@@ -374,6 +392,7 @@ def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dic
         summary["energy"]["line_balance_grids"] = energy_balance_grids()
     both = [r for r in maps if r["status"] == "converged" and r["fine_status"] == "converged"]
     summary["estimator_ceiling"] = estimator_ceiling(both)
+    summary["intermediate_check"] = intermediate_check(both)
     summary["bearing_agreement"] = {
         k: [r[f"{k}_agree"] for r in bearings] for k in BEARING_QUANTITIES}
     summary["seconds"] = time.perf_counter() - t0
@@ -480,6 +499,67 @@ def estimator_ceiling(rows: list[dict]) -> dict:
             "trend_correlation": corr, "trend_pairs": len(r_next),
             "formal_order_agree": sum(1 for ok, _ in formal if ok),
             "formal_order_under": sum(1 for ok, low in formal if not ok and low)}
+
+
+def richardson_spacings(h: tuple[float, float, float], q: tuple[float, float, float],
+                        cap: float = 2.0) -> tuple[float, str]:
+    """Estimated absolute error of q[0] from three solutions on spacings h[0] < h[1] <
+    h[2] (any ratios): the observed order p solves
+    (h3^p - h2^p) / (h2^p - h1^p) = (q3 - q2) / (q2 - q1), for p in [MIN_ORDER, 8];
+    the error is |q2 - q1| / ((h2/h1)^min(p, cap) - 1) (Richardson), else (changes of
+    alternating sign, or no such p) the plain level difference |q2 - q1|."""
+    (h1, h2, h3), (q1, q2, q3) = h, q
+    d12, d23 = q2 - q1, q3 - q2
+    if d12 == 0.0:
+        return 0.0, "richardson"
+    if d12 * d23 > 0.0:
+        def g(p: float) -> float:
+            return (h3**p - h2**p) / (h2**p - h1**p) - d23 / d12
+        lo, hi = post.MIN_ORDER, 8.0
+        if g(lo) <= 0.0 <= g(hi):
+            p = brentq(g, lo, hi)
+            return abs(d12) / ((h2 / h1) ** min(p, cap) - 1.0), "richardson"
+    return abs(d12), "level difference"
+
+
+def intermediate_check(rows: list[dict]) -> dict:
+    """Would a fourth grid, finer than the coarsest level, make the estimate reach the
+    target? For each map row with a solve on 4/3 times the default spacing
+    (``{q}_between``), the estimate from the spacings h, 4h/3, 2h (default grid, that
+    solve, the grid sequence's level below) by :func:`richardson_spacings`, against the
+    same change to the twice-finer solve.
+
+    Returns
+    -------
+    dict
+        ``share`` (all case-quantities), ``line`` and ``point`` (shares per kind),
+        ``pairs``, and ``cost``: the median time of the extra solve over that of the
+        default solve (it starts from scratch here; a solver would start it from the
+        default solution).
+    """
+    hits: dict[str, list[bool]] = {"line": [], "point": []}
+    cost = []
+    for row in rows:
+        if row.get("between_status") not in ("converged", "linear"):
+            continue
+        cost.append(row["between_seconds"] / row["seconds"])
+        for k in QUANTITIES:
+            values = json.loads(row[f"{k}_values"])  # levels, then the fine solve
+            if len(values) < 3 or any(v is None for v in values[-3:]) \
+                    or row[f"{k}_between"] is None:
+                hits[row["kind"]].append(False)
+                continue
+            q1, q3 = values[-2], values[-3]  # default grid, the level below
+            err, _ = richardson_spacings((1.0, 4.0 / 3.0, 2.0), (q1, row[f"{k}_between"], q3))
+            hits[row["kind"]].append(agree(err / abs(q1), row[f"{k}_change"]))
+    every = hits["line"] + hits["point"]
+
+    def share(x: list[bool]) -> float | None:
+        return sum(x) / len(x) if x else None
+
+    return {"share": share(every), "line": share(hits["line"]),
+            "point": share(hits["point"]), "pairs": len(every),
+            "cost": float(np.median(cost)) if cost else None}
 
 
 def _best_constant(last: list[float], change: list[float]) -> tuple[int, float]:

@@ -291,7 +291,7 @@ DOCUMENTED_CONSTANTS = [
      lambda: (_module("bearing_fem.physics.elasticity").LINE_DENSE_AUTO_CAP,
               _module("bearing_fem.physics.elasticity").LINE_FFT_APPLY_MIN)),
     # Newton and continuation (theory.md 5.2, 6.1, 6.3, 6.4)
-    ("theory.md", r"mu = ([0-9.e+-]+) \(bearing_fem\.contacts\.problem\.FB_SMOOTHING\)",
+    ("theory.md", r"largest, ([0-9.e+-]+) \(`bearing_fem\.contacts\.problem\.FB_SMOOTHING`\)",
      lambda: (_module("bearing_fem.contacts.problem").FB_SMOOTHING,)),
     ("theory.md", r"down to 2\^-([0-9]+) with the merit",
      lambda: (round(-math.log2(_default("bearing_fem.numerics.newton", "damped_newton",

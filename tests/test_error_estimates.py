@@ -48,6 +48,9 @@ def test_quick_study(tmp_path):
         for q in error_estimates.QUANTITIES:
             est = row[f"{q}_estimate"]
             assert est is not None and np.isfinite(est) and est >= 0.0, (row["kind"], q)
+    ic = s["intermediate_check"]
+    assert ic["pairs"] == 5 * len(out["maps"]) and 0.0 <= ic["share"] <= 1.0, ic
+    assert ic["cost"] > 0.0, "the extra solve's time over the default solve's"
     assert (tmp_path / "maps.csv").is_file() and (tmp_path / "estimates.png").is_file()
     (b,) = out["bearings"]
     assert b["status"] == "converged" and b["fine_status"] == "converged"
@@ -212,3 +215,18 @@ def test_row_smoothing_keeps_mu_at_the_thinnest_film():
     np.testing.assert_allclose(phi, 0.0, atol=1e-15, err_msg="root: a b = mu^2/2")
     np.testing.assert_allclose(a * b / s, (FB_SMOOTHING**2 / 2.0) * np.ones(4), rtol=1e-12,
                                err_msg="equal energy-balance share per row")
+
+
+def test_richardson_on_uneven_spacings():
+    # q_h = 1 + 0.1 h^2 on h = 1, 4/3, 2: the error of q(1) is 0.1, observed order 2
+    h = (1.0, 4.0 / 3.0, 2.0)
+    err, how = error_estimates.richardson_spacings(h, tuple(1.0 + 0.1 * x**2 for x in h))
+    assert how == "richardson"
+    np.testing.assert_allclose(err, 0.1, rtol=1e-9, err_msg="exact for h^2 data")
+    # order 3 capped at 2: |d12| / ((4/3)^2 - 1) = 0.1 (64/27 - 1) / (7/9)
+    err3, _ = error_estimates.richardson_spacings(h, tuple(1.0 + 0.1 * x**3 for x in h))
+    np.testing.assert_allclose(err3, 0.1 * (64 / 27 - 1) / (7 / 9), rtol=1e-9,
+                               err_msg="observed order above the cap 2 is capped")
+    err2, how2 = error_estimates.richardson_spacings(h, (1.0, 1.2, 1.1))
+    assert how2 == "level difference"
+    np.testing.assert_allclose(err2, 0.2, rtol=1e-12)
