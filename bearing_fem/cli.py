@@ -95,8 +95,9 @@ def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
 def failure_numbers(result: Any) -> str:
     """The numbers of an unsuccessful result whose meaning is known, with their units.
 
-    Newton iterations, the last scaled Newton residual (dimensionless, with the
-    tolerance) where Newton ran, the thermal fixed-point residual [K] of a thermal
+    Newton iterations, the scaled Newton residual of the returned fields (dimensionless,
+    with the tolerance; the last history entry where the solve did not record it) where
+    Newton ran, the thermal fixed-point residual [K] of a thermal
     solve, and the wall time [s]. Nothing else is printed: the result's own message
     carries the rest.
     """
@@ -105,11 +106,15 @@ def failure_numbers(result: Any) -> str:
     if its:
         parts.append(f"{its} Newton iteration{'' if its == 1 else 's'}")
     history = list(getattr(result, "history", []) or [])
-    if history and result.status != "no_solution":
-        last = float(history[-1])
+    own = getattr(result, "residual", None)
+    if (history or own is not None) and result.status != "no_solution":
+        # the residual of the returned fields where the solve recorded it (after a failed
+        # continuation the last history entry belongs to an easier step's problem)
+        last = float(own) if own is not None else float(history[-1])
         tol = result.scene.solver.tolerance
         thermal = result.scene.model.thermal == "patch"
         what = ("last scaled Newton residual of the isothermal solve" if thermal
+                else "scaled Newton residual of the returned fields" if own is not None
                 else "last scaled Newton residual")
         shown = f"{last:.3g}" if math.isfinite(last) else "not finite"
         parts.append(f"{what} {shown} (dimensionless; tolerance {tol:.1g})")

@@ -166,6 +166,11 @@ class Result:
     traction_model : str or None
         The shear-stress model of the sliding friction (``eyring-limiting``, ``eyring``,
         ``limiting``, ``newtonian``), None where friction was not computed.
+    residual : float or None
+        Scaled Newton residual (max norm, dimensionless) of the returned fields on the
+        scene's own problem; None where the solve does not record it. After a failed
+        continuation it differs from ``history[-1]``, the residual of the last step's
+        (easier) problem.
     """
 
     success: bool
@@ -187,6 +192,7 @@ class Result:
     warnings: list[str] = field(default_factory=list)
     error_estimate: dict[str, Any] | None = None
     traction_model: str | None = None
+    residual: float | None = None
 
     def __repr__(self) -> str:
         return (f"Result(message={self.message!r}, success={self.success}, "

@@ -323,11 +323,35 @@ def test_solve_exit_3_not_converged(tmp_path, capsys):
     assert "no converged solution" in err
     # only numbers whose meaning is known, each with its unit
     assert re.search(r"\d+ Newton iterations", err)
-    assert re.search(r"last scaled Newton residual \S+ \(dimensionless; tolerance 1e-08\)",
-                     err), err
+    m = re.search(r"scaled Newton residual of the returned fields (\S+) \(dimensionless; "
+                  r"tolerance 1e-08\)", err)
+    assert m, err
+    # the same number as the message's residual (that of the fields written)
+    msg = re.search(r"residual ([0-9.e+-]+) > tol", err)
+    assert msg, err
+    np.testing.assert_allclose(float(m.group(1)), float(msg.group(1)), rtol=5e-3,
+                               err_msg="one residual, printed to 3 digits in both")
     assert re.search(r"; [0-9.e+-]+ s\)", err), "wall time in s"
     summary = _summary(out)
     assert summary["success"] is False and summary["status"] != "no_solution"
+
+
+def test_exit_3_after_failed_continuation_prints_the_fields_residual(tmp_path, capsys):
+    """A 9-node heavy line contact stalls, then its continuation step (alpha = 0) stalls
+    too: the printed residual is that of the returned fields on the scene's own problem
+    (the message's), not the last continuation step's."""
+    data = {"contact": {"kind": "line", "rx": 0.01},
+            "materials": {"reduced_modulus": 2.2e11},
+            "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+            "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 2e6},
+            "mesh": {"nodes": 9}}
+    assert cli.main(["solve", _write(tmp_path, data), "--out", str(tmp_path / "o")]) == 3
+    err = capsys.readouterr().err
+    printed = re.search(r"scaled Newton residual of the returned fields (\S+) ", err)
+    msg = re.search(r"residual ([0-9.e+-]+) > tol", err)
+    assert printed and msg, err
+    np.testing.assert_allclose(float(printed.group(1)), float(msg.group(1)), rtol=5e-3,
+                               err_msg="the fields' residual in both places")
 
 
 def test_exit_3_thermal_names_the_temperature_residual(tmp_path, capsys):
@@ -452,3 +476,4 @@ def test_contact_length_gives_totals(tmp_path, capsys):
     out2 = tmp_path / "no_length"
     assert cli.main(["solve", _write(tmp_path, RIGID_OK, "b.toml"), "--out", str(out2)]) == 0
     assert not [k for k in _summary(out2) if k.endswith("_total")], "no length, no totals"
+

@@ -464,7 +464,8 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
            iterations: int = 0, linear_solves: int = 0, history: Sequence[float] = (),
            continuation_steps: Sequence[tuple[float, str, int]] = (),
            coarse: Sequence[Solution] = (), estimate_note: str = "",
-           warnings: Sequence[str] = (), estimate: bool = True) -> Result:
+           warnings: Sequence[str] = (), estimate: bool = True,
+           residual: float | None = None) -> Result:
     """Assemble the :class:`~bearing_fem.result.Result` of a solve.
 
     Parameters
@@ -490,6 +491,8 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
     estimate : bool
         False when the solve makes no error estimate by design (the instants of an
         elastic series share one grid): no estimate, and no warning that one is missing.
+    residual : float or None
+        Scaled residual (max norm) of the returned fields on the scene's own problem.
     """
     success = status in SUCCESS_STATUSES
     notes = list(warnings) + list(solution.warnings)
@@ -507,7 +510,8 @@ def finish(scene: Any, solution: Solution, *, status: str, message: str, t0: flo
                   continuation=list(continuation_steps),
                   extra_fields=dict(solution.extra_fields),
                   warnings=_unique(notes), error_estimate=error_estimate,
-                  traction_model=solution.traction_model)
+                  traction_model=solution.traction_model,
+                  residual=None if residual is None else float(residual))
 
 
 def _unique(items: Sequence[str]) -> list[str]:
@@ -620,7 +624,8 @@ def _solve_newton_model(model: Any, scene: Any, t0: float, *,
     return finish(scene, solution, status=outcome.status, message=message, t0=t0,
                   iterations=outcome.iterations, history=outcome.history,
                   continuation_steps=outcome.steps, coarse=coarse,
-                  estimate_note=_levels_note(coarse, solution), warnings=notes)
+                  estimate_note=_levels_note(coarse, solution), warnings=notes,
+                  residual=residual)
 
 
 def solve_linear_model(model: Any, scene: Any, t0: float) -> Result:

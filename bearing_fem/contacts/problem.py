@@ -1,7 +1,8 @@
 """Parts shared by the discretised contact problems (line, point, transient, Kodnir).
 
 * :func:`fischer_burmeister` - the smoothed Fischer-Burmeister function of the Reynolds
-  cavitation complementarity problem p >= 0, R >= 0, p R = 0 (semismooth Newton).
+  cavitation complementarity problem p >= 0, R >= 0, p R = 0 (semismooth Newton), and
+  :func:`row_smoothing`, its smoothing per row.
 * :class:`ScaledResidual` - the scaled residual (Reynolds rows or their FB functions,
   then the load row) and the admissibility test (finite unknowns, positive film).
 """
