@@ -352,6 +352,11 @@ def test_exit_3_after_failed_continuation_prints_the_fields_residual(tmp_path, c
     assert printed and msg, err
     np.testing.assert_allclose(float(printed.group(1)), float(msg.group(1)), rtol=5e-3,
                                err_msg="the fields' residual in both places")
+    # no step was accepted from the Hertzian start, whose film on 9 nodes is negative
+    # between them: the message does not promise an admissible iterate
+    assert "it is not admissible" in err and "last admissible iterate" not in err, err
+    s = _summary(tmp_path / "o")
+    assert s["h_min"] < 0.0, "the fields' own (negative) film minimum, explained above"
 
 
 def test_exit_3_thermal_names_the_temperature_residual(tmp_path, capsys):

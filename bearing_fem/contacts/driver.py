@@ -524,7 +524,7 @@ def _unique(items: Sequence[str]) -> list[str]:
 
 def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: Budget,
                  *, parameter: str | None = None, prefix: str = "",
-                 grid_note: str = "") -> str:
+                 grid_note: str = "", admissible: bool = True) -> str:
     """Status message of a Newton solve: iterations, grids, continuation (in
     ``parameter``), residual, and what was spent when the budget ran out."""
     note = ""
@@ -546,7 +546,8 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
                      f"; the finest grid failed alone, and so did {label} (half the spacing)")
     detail = f" (grids {grids}{grid_note}{note})" if outcome.labels else note
     msg = outcome_message(outcome.status, outcome.iterations, residual, solver.tolerance,
-                          prefix=prefix, detail=detail, cap=solver.max_iterations)
+                          prefix=prefix, detail=detail, cap=solver.max_iterations,
+                          admissible=admissible)
     if outcome.status in BUDGET_STATUSES:
         msg += f" Spent {budget.describe()}."
     return msg
@@ -611,7 +612,8 @@ def _solve_newton_model(model: Any, scene: Any, t0: float, *,
     residual = float(np.max(np.abs(problem.residual(z))))
     message = outcome_text(outcome, residual, scene.solver, budget,
                            parameter=model.continuation_parameter, prefix=prefix,
-                           grid_note=getattr(model, "grid_note", ""))
+                           grid_note=getattr(model, "grid_note", ""),
+                           admissible=outcome.converged or problem.admissible(z))
     solution = model.solution(problem, z)
     coarse: list[Solution] = []
     if outcome.converged:

@@ -314,7 +314,8 @@ def continuation(make_problem: Callable[[float], NonlinearProblem], z_start: np.
 
 
 def outcome_message(status: str, iterations: int, residual: float, tol: float, *,
-                    prefix: str = "", detail: str = "", cap: int | None = None) -> str:
+                    prefix: str = "", detail: str = "", cap: int | None = None,
+                    admissible: bool = True) -> str:
     """One-line status message of a damped-Newton solve (line, point, transient).
 
     Parameters
@@ -332,6 +333,10 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
         in a failure message, the last sentence ("Tried ...").
     cap : int, optional
         Iteration cap per attempt, quoted in a failure message.
+    admissible : bool
+        False when the returned iterate is not admissible (a starting guess from which
+        no step was accepted: negative film somewhere); a failure message then says so
+        instead of promising the last admissible iterate.
     """
     if status == "converged":
         return (f"{prefix}converged in {iterations} Newton iterations{detail}; residual "
@@ -340,9 +345,11 @@ def outcome_message(status: str, iterations: int, residual: float, tol: float, *
     tried = detail.strip().removeprefix("(").removesuffix(")").strip()
     resid = (f"residual {residual:.2e} > tol {tol:.1e}" if math.isfinite(residual) else
              "the residual of the last iterate is not finite")
+    fields = ("Fields hold the last admissible iterate." if admissible else
+              "Fields hold a starting guess from which no step was accepted; it is not "
+              "admissible (its film is negative somewhere), so its numbers describe no film.")
     return (f"{prefix}{status}: no converged solution after {iterations} Newton "
-            f"iterations{limit}; {resid}. Fields hold the "
-            "last admissible iterate." + (f" Tried: {tried}." if tried else ""))
+            f"iterations{limit}; {resid}. {fields}" + (f" Tried: {tried}." if tried else ""))
 
 
 class ForcingTerm:
