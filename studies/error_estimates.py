@@ -393,6 +393,7 @@ def main(outdir: str | Path = "out/error_estimates", quick: bool = False) -> dic
     both = [r for r in maps if r["status"] == "converged" and r["fine_status"] == "converged"]
     summary["estimator_ceiling"] = estimator_ceiling(both)
     summary["intermediate_check"] = intermediate_check(both)
+    summary["agreement_by_method"] = agreement_by_method(both)
     summary["bearing_agreement"] = {
         k: [r[f"{k}_agree"] for r in bearings] for k in BEARING_QUANTITIES}
     summary["seconds"] = time.perf_counter() - t0
@@ -560,6 +561,24 @@ def intermediate_check(rows: list[dict]) -> dict:
     return {"share": share(every), "line": share(hits["line"]),
             "point": share(hits["point"]), "pairs": len(every),
             "cost": float(np.median(cost)) if cost else None}
+
+
+def agreement_by_method(rows: list[dict]) -> dict:
+    """Share of map case-quantities within a factor FACTOR, per map kind and per method
+    of the estimate (``richardson``, ``level difference``): ``{kind: {method: {"pairs":
+    n, "agree": share}}}``, kind ``all`` over both maps."""
+    out: dict[str, dict[str, dict[str, float]]] = {}
+    for row in rows:
+        for k in QUANTITIES:
+            method = row[f"{k}_method"] or "none"
+            for kind in (row["kind"], "all"):
+                cell = out.setdefault(kind, {}).setdefault(method, {"pairs": 0, "agree": 0})
+                cell["pairs"] += 1
+                cell["agree"] += int(bool(row[f"{k}_agree"]))
+    for by_method in out.values():
+        for cell in by_method.values():
+            cell["agree"] = cell["agree"] / cell["pairs"]
+    return out
 
 
 def _best_constant(last: list[float], change: list[float]) -> tuple[int, float]:

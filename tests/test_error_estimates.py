@@ -51,6 +51,8 @@ def test_quick_study(tmp_path):
     ic = s["intermediate_check"]
     assert ic["pairs"] == 5 * len(out["maps"]) and 0.0 <= ic["share"] <= 1.0, ic
     assert ic["cost"] > 0.0, "the extra solve's time over the default solve's"
+    by = s["agreement_by_method"]["all"]
+    assert sum(c["pairs"] for c in by.values()) == 5 * len(out["maps"]), by
     assert (tmp_path / "maps.csv").is_file() and (tmp_path / "estimates.png").is_file()
     (b,) = out["bearings"]
     assert b["status"] == "converged" and b["fine_status"] == "converged"
