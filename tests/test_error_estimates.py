@@ -203,19 +203,25 @@ def _balance_rows(nodes):
 
 
 def test_row_smoothing_keeps_mu_at_the_thinnest_film():
+    from scipy.optimize import brentq
+
     from bearing_fem.contacts.problem import FB_SMOOTHING, fischer_burmeister, row_smoothing
 
     s = np.array([1e-9, 1e-3, 1.0, 0.25])
     mu = row_smoothing(s)
     np.testing.assert_allclose(mu, FB_SMOOTHING * np.sqrt(s), rtol=1e-14,
                                err_msg="mu_i = mu sqrt(s_i / max s)")
-    # at the root of the smoothed function a b = mu_i^2 / 2, so the unscaled p_i R_i =
-    # p_ref mu_i^2 / (2 s_i) is the same in every row
-    a = np.array([1e-9, 1e-6, 1e-3, 0.5])
-    b = mu**2 / (2.0 * a)
-    phi, _, _ = fischer_burmeister(a, b, mu)
-    np.testing.assert_allclose(phi, 0.0, atol=1e-15, err_msg="root: a b = mu^2/2")
-    np.testing.assert_allclose(a * b / s, (FB_SMOOTHING**2 / 2.0) * np.ones(4), rtol=1e-12,
+    # the root of the smoothed function in b, found numerically (a smoothing large
+    # enough for the root to be resolved in double precision): a b = mu^2
+    for m in (1e-3, 1e-4):
+        for a in (0.01, 0.3, 2.0):
+            b = brentq(lambda x: float(fischer_burmeister(np.array(a), np.array(x), m)[0]),
+                       0.0, 1.0, xtol=1e-30, rtol=1e-14)
+            np.testing.assert_allclose(a * b, m**2, rtol=1e-6,
+                                       err_msg="root of the smoothed FB: a b = mu^2")
+    # so the unscaled p_i R_i = p_ref a_i b_i / s_i = p_ref mu_i^2 / s_i is the same in
+    # every row
+    np.testing.assert_allclose(mu**2 / s, FB_SMOOTHING**2 * np.ones(4), rtol=1e-12,
                                err_msg="equal energy-balance share per row")
 
 

@@ -13,23 +13,23 @@ import numpy as np
 #: Smoothing of the Fischer-Burmeister function (scaled units). A degenerate node with
 #: p = R = 0 (the discrete free boundary) makes the plain FB Jacobian singular and lets
 #: the semismooth Newton cycle between two active sets; with mu > 0 the function is
-#: smooth and its root satisfies p >= 0, R >= 0, p R = mu^2 / 2, i.e. complementarity
-#: to 5e-21 in scaled units (p/p_ref times the scaled residual).
+#: smooth and its root satisfies p >= 0, R >= 0, p R = mu^2, i.e. complementarity
+#: to 1e-20 in scaled units (p/p_ref times the scaled residual).
 FB_SMOOTHING = 1e-10
 
 
 def row_smoothing(row_scale: np.ndarray, mu: float = FB_SMOOTHING) -> np.ndarray:
     """Smoothing of each row's Fischer-Burmeister function, mu_i = mu sqrt(s_i / max s).
 
-    At the root of the smoothed function every pressurised row carries the residual
-    R_i = mu_i^2 p_ref / (2 p_i s_i) [m^2/s] (``s_i`` the row scale, [1/Pa] per unit of
-    the nodal residual), so that p_i R_i, the row's share of the energy balance
-    (sum_i p_i R_i = 0 for an exact discrete solution), is mu_i^2 p_ref / (2 s_i). With a
-    single mu that share grows as h^3 / dx: on the far inlet of a heavily loaded line
-    contact (h a thousand times h_min) it summed to 1-2 % of the Poiseuille heat on fine
-    grids, growing as N^2. With mu_i it is the same in every row, that of the row with the
-    largest scale (the thinnest film, where the free boundary and its degenerate nodes
-    lie and the full mu is kept).
+    At the root of the smoothed function a b = mu_i^2 (a = p_i / p_ref, b = s_i R_i), so
+    every pressurised row carries the residual R_i = mu_i^2 p_ref / (p_i s_i) (``s_i`` the
+    row scale, of the inverse unit of the nodal residual R_i), and p_i R_i, the row's
+    share of the energy balance (sum_i p_i R_i = 0 for an exact discrete solution), is
+    mu_i^2 p_ref / s_i. With a single mu that share grows as h^3 / dx: on the far inlet
+    of a heavily loaded line contact (h a thousand times h_min) it summed to 1-2.4 % of
+    the Poiseuille heat on fine grids, growing as N^2. With mu_i it is the same in every
+    row, that of the row with the largest scale (the thinnest film, where the free
+    boundary and its degenerate nodes lie and the full mu is kept).
 
     Parameters
     ----------
