@@ -168,7 +168,8 @@ class Result:
         ``limiting``, ``newtonian``), None where friction was not computed.
     residual : float or None
         Scaled Newton residual (max norm, dimensionless) of the returned fields on the
-        scene's own problem; None where the solve does not record it. After a failed
+        scene's own problem (of a thermal scene: its last isothermal solve, at the contact
+        temperature's viscosity); None where the solve does not record it. After a failed
         continuation it differs from ``history[-1]``, the residual of the last step's
         (easier) problem.
     """

@@ -359,6 +359,27 @@ def test_exit_3_after_failed_continuation_prints_the_fields_residual(tmp_path, c
     assert s["h_min"] < 0.0, "the fields' own (negative) film minimum, explained above"
 
 
+def test_exit_3_thermal_after_failed_continuation_prints_the_fields_residual(tmp_path,
+                                                                             capsys):
+    """The isothermal solve of a thermal scene fails after its continuation step: the
+    printed residual is that of the returned fields (the message's), not the last
+    continuation step's."""
+    data = {"contact": {"kind": "line", "rx": 0.01},
+            "materials": {"reduced_modulus": 2.2e11},
+            "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+            "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 2e6},
+            "model": {"thermal": "patch"},
+            "thermal": {"oil_temperature": 60.0, "exponent": 2.93},
+            "mesh": {"nodes": 9}}
+    assert cli.main(["solve", _write(tmp_path, data), "--out", str(tmp_path / "o")]) == 3
+    err = capsys.readouterr().err
+    printed = re.search(r"scaled Newton residual of the isothermal solve (\S+) ", err)
+    msg = re.search(r"residual ([0-9.e+-]+) > tol", err)
+    assert printed and msg, err
+    np.testing.assert_allclose(float(printed.group(1)), float(msg.group(1)), rtol=5e-3,
+                               err_msg="the fields' residual in both places")
+
+
 def test_exit_3_thermal_names_the_temperature_residual(tmp_path, capsys):
     """A thermal loop stopped after one iteration: its residual is a temperature in K
     and is printed as one; the Newton residual is labelled as the isothermal solve's."""

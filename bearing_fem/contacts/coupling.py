@@ -442,4 +442,4 @@ def solve_thermal(scene: Scene) -> Result:
                   continuation=res.continuation, extra_fields=extra,
                   warnings=list(res.warnings) + notes,
                   error_estimate=res.error_estimate if success else None,
-                  traction_model=res.traction_model)
+                  traction_model=res.traction_model, residual=res.residual)
