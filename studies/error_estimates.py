@@ -508,7 +508,24 @@ def richardson_spacings(h: tuple[float, float, float], q: tuple[float, float, fl
     h[2] (any ratios): the observed order p solves
     (h3^p - h2^p) / (h2^p - h1^p) = (q3 - q2) / (q2 - q1), for p in [MIN_ORDER, 8];
     the error is |q2 - q1| / ((h2/h1)^min(p, cap) - 1) (Richardson), else (changes of
-    alternating sign, or no such p) the plain level difference |q2 - q1|."""
+    alternating sign, or no such p) the plain level difference |q2 - q1|.
+
+    Parameters
+    ----------
+    h : tuple of float
+        The three spacings, finest first (any unit; only their ratios matter).
+    q : tuple of float
+        The quantity on those spacings.
+    cap : float
+        Largest order used in the error (the formal order).
+
+    Returns
+    -------
+    error : float
+        Estimated absolute error of q[0] (unit of q).
+    method : str
+        ``"richardson"`` or ``"level difference"``.
+    """
     (h1, h2, h3), (q1, q2, q3) = h, q
     d12, d23 = q2 - q1, q3 - q2
     if d12 == 0.0:
@@ -529,6 +546,11 @@ def intermediate_check(rows: list[dict]) -> dict:
     (``{q}_between``), the estimate from the spacings h, 4h/3, 2h (default grid, that
     solve, the grid sequence's level below) by :func:`richardson_spacings`, against the
     same change to the twice-finer solve.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Map rows of :func:`map_row` (converged default and twice-finer solves).
 
     Returns
     -------
@@ -566,7 +588,19 @@ def intermediate_check(rows: list[dict]) -> dict:
 def agreement_by_method(rows: list[dict]) -> dict:
     """Share of map case-quantities within a factor FACTOR, per map kind and per method
     of the estimate (``richardson``, ``level difference``): ``{kind: {method: {"pairs":
-    n, "agree": share}}}``, kind ``all`` over both maps."""
+    n, "agree": share}}}``, kind ``all`` over both maps.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Map rows of :func:`map_row`.
+
+    Returns
+    -------
+    dict
+        Per kind (``line``, ``point``, ``all``) and method (``richardson``, ``level
+        difference``, ``none``): ``pairs`` (count) and ``agree`` (share in [0, 1]).
+    """
     out: dict[str, dict[str, dict[str, float]]] = {}
     for row in rows:
         for k in QUANTITIES:
