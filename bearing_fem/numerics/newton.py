@@ -169,7 +169,8 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
     Returns
     -------
     NewtonOutcome
-        The last admissible iterate is always returned (never NaNs).
+        The last accepted iterate (admissible, never NaNs), or the starting guess where
+        no step was accepted (not tested for admissibility: it may have a negative film).
     """
     t0 = time.perf_counter()
     z = np.array(z0, dtype=float)
