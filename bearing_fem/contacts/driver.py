@@ -526,7 +526,9 @@ def outcome_text(outcome: DriverOutcome, residual: float, solver: Any, budget: B
                  *, parameter: str | None = None, prefix: str = "",
                  grid_note: str = "", admissible: bool = True) -> str:
     """Status message of a Newton solve: iterations, grids, continuation (in
-    ``parameter``), residual, and what was spent when the budget ran out."""
+    ``parameter``), residual, and what was spent when the budget ran out; ``admissible``
+    False says that the returned iterate is not admissible
+    (:func:`~bearing_fem.numerics.newton.outcome_message`)."""
     note = ""
     if outcome.continuation_steps:
         n = outcome.continuation_steps

@@ -494,9 +494,10 @@ def _step_result(scene, model: ElasticGapModel, problem: TransientPointProblem,
     problem.prepare(z)
     resid = float(np.max(np.abs(problem.residual(z))))
     msg = outcome_message(status, iterations, resid, scene.solver.tolerance,
-                          prefix=f"{what}: ")
+                          prefix=f"{what}: ",
+                          admissible=status == "converged" or problem.admissible(z))
     res = finish(scene, model.solution(problem, z), status=status, message=msg, t0=t0,
-                 iterations=iterations, history=history, estimate=False)
+                 iterations=iterations, history=history, estimate=False, residual=resid)
     res.quantities["gmres_iterations"] = float(problem.linear_iterations)
     return res
 

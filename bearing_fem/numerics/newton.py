@@ -145,7 +145,9 @@ def damped_newton(problem: NonlinearProblem, z0: np.ndarray, *, tol: float = 1e-
     ----------
     problem : NonlinearProblem
     z0 : ndarray
-        Initial (scaled) unknowns; must be admissible.
+        Initial (scaled) unknowns, admissible for the iteration to move (a step is
+        accepted only to an admissible iterate; an inadmissible start is returned
+        as it is when no step is accepted).
     tol : float
         Convergence when max|F| <= tol.
     max_iterations : int
