@@ -29,7 +29,10 @@ def row_smoothing(row_scale: np.ndarray, mu: float = FB_SMOOTHING) -> np.ndarray
     of a heavily loaded line contact (h a thousand times h_min) it summed to 1-2.4 % of
     the Poiseuille heat on fine grids, growing as N^2. With mu_i it is the same in every
     row, that of the row with the largest scale (the thinnest film, where the free
-    boundary and its degenerate nodes lie and the full mu is kept).
+    boundary and its degenerate nodes lie and the full mu is kept). Used by line contacts,
+    whose free boundary is the outlet next to the film minimum; a point contact's
+    cavitation boundary also runs round the sides of the contact at larger films, and
+    keeps the one mu there.
 
     Parameters
     ----------
@@ -64,7 +67,7 @@ class ScaledResidual:
     admissibility test (finite unknowns, positive film at every quadrature point), the
     reduced-pressure gradient of the Poiseuille term and the elastic displacement with
     its last product kept. Needs ``unpack``, ``fields_q``, ``reynolds_residual``,
-    ``free``, ``_row_scale``, ``_fb_mu`` (:func:`row_smoothing` of the row scale),
+    ``free``, ``_row_scale``, ``_fb_mu`` (the FB smoothing: per row for line contacts),
     ``cavitation``, ``p_ref``, ``has_h0``, ``mass``, ``load``,
     ``flux``, ``ops`` (the quadrature operators) and ``compliance`` (an operator with
     ``apply(p) -> v``)."""
