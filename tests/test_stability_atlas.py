@@ -236,18 +236,19 @@ def test_isoviscous_line_at_the_node_cap_converges_on_a_narrow_domain(load_study
 
 
 def test_failed_single_grid_starts_from_a_finer_solution(load_study):
-    # circular M = 2000, L = 3.57 on the atlas' 97^2 grid (one level: it cannot be
-    # halved to 65^2 or more) stalled from the Hertzian start, with M = 2000.0000000000002
-    # (the atlas' log-spaced value; M = 2000 exactly converged: a knife edge). The driver
-    # now solves 193^2 and starts 97^2 from that solution restricted to it.
+    # circular M = 2000, L = 25 on the atlas' 97^2 grid (one level: it cannot be halved to
+    # 65^2 or more) runs out of iterations from the Hertzian start (residual ~1e-4). The
+    # driver then solves 193^2 and starts 97^2 from that solution restricted to it.
+    # (L = 3.57 took this path too on one machine and converged directly on another: a
+    # knife edge, not a test case.)
     mod = load_study("stability_atlas")
     events = []
-    r = bf.solve(mod.point_scene(2000.0000000000002, 25 / 7), progress=events.append)
+    r = bf.solve(mod.point_scene(2000.0000000000002, 25.0), progress=events.append)
     assert r.status == "converged", r.message
     assert [e["grid"] for e in events if e["event"] == "level"] == \
         ["97x97 nodes", "193x193 nodes", "97x97 nodes"]
     assert "started from the solution on 193x193 nodes" in r.message
-    assert r.newton_iterations <= 120, "measured 63 (33 failed + 18 + 12)"
+    assert r.newton_iterations <= 150, "measured 100 on two machines"
     s = r.summary()
     assert r.pressure.shape == (97, 97), "the result is on the requested grid"
     assert 0.0 < s["h_min"] <= s["h_central"]
