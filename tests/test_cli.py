@@ -336,22 +336,31 @@ def test_solve_exit_3_not_converged(tmp_path, capsys):
     assert summary["success"] is False and summary["status"] != "no_solution"
 
 
-def test_exit_3_after_failed_continuation_prints_the_fields_residual(tmp_path, capsys):
-    """A 9-node heavy line contact stalls, then its continuation step (alpha = 0) stalls
-    too: the printed residual is that of the returned fields on the scene's own problem
-    (the message's), not the last continuation step's."""
-    data = {"contact": {"kind": "line", "rx": 0.01},
+def _stalled_9_node_line(**sections) -> dict:
+    """A heavy line contact on 9 nodes: Newton stalls from the Hertzian start, and so does
+    its continuation step (alpha = 0)."""
+    return {"contact": {"kind": "line", "rx": 0.01},
             "materials": {"reduced_modulus": 2.2e11},
             "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
             "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 2e6},
-            "mesh": {"nodes": 9}}
-    assert cli.main(["solve", _write(tmp_path, data), "--out", str(tmp_path / "o")]) == 3
-    err = capsys.readouterr().err
-    printed = re.search(r"scaled Newton residual of the returned fields (\S+) ", err)
+            "mesh": {"nodes": 9}, **sections}
+
+
+def _printed_and_message_residuals(err: str, label: str) -> None:
+    printed = re.search(rf"scaled Newton residual {label} (\S+) ", err)
     msg = re.search(r"residual ([0-9.e+-]+) > tol", err)
     assert printed and msg, err
     np.testing.assert_allclose(float(printed.group(1)), float(msg.group(1)), rtol=5e-3,
                                err_msg="the fields' residual in both places")
+
+
+def test_exit_3_after_failed_continuation_prints_the_fields_residual(tmp_path, capsys):
+    """The printed residual is that of the returned fields on the scene's own problem
+    (the message's), not the last continuation step's."""
+    data = _stalled_9_node_line()
+    assert cli.main(["solve", _write(tmp_path, data), "--out", str(tmp_path / "o")]) == 3
+    err = capsys.readouterr().err
+    _printed_and_message_residuals(err, "of the returned fields")
     # no step was accepted from the Hertzian start, whose film on 9 nodes is negative
     # between them: the message does not promise an admissible iterate
     assert "it is not admissible" in err and "last admissible iterate" not in err, err
@@ -364,20 +373,11 @@ def test_exit_3_thermal_after_failed_continuation_prints_the_fields_residual(tmp
     """The isothermal solve of a thermal scene fails after its continuation step: the
     printed residual is that of the returned fields (the message's), not the last
     continuation step's."""
-    data = {"contact": {"kind": "line", "rx": 0.01},
-            "materials": {"reduced_modulus": 2.2e11},
-            "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
-            "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"force": 2e6},
-            "model": {"thermal": "patch"},
-            "thermal": {"oil_temperature": 60.0, "exponent": 2.93},
-            "mesh": {"nodes": 9}}
+    data = _stalled_9_node_line(model={"thermal": "patch"},
+                                thermal={"oil_temperature": 60.0, "exponent": 2.93})
     assert cli.main(["solve", _write(tmp_path, data), "--out", str(tmp_path / "o")]) == 3
     err = capsys.readouterr().err
-    printed = re.search(r"scaled Newton residual of the isothermal solve (\S+) ", err)
-    msg = re.search(r"residual ([0-9.e+-]+) > tol", err)
-    assert printed and msg, err
-    np.testing.assert_allclose(float(printed.group(1)), float(msg.group(1)), rtol=5e-3,
-                               err_msg="the fields' residual in both places")
+    _printed_and_message_residuals(err, "of the isothermal solve")
 
 
 def test_exit_3_thermal_names_the_temperature_residual(tmp_path, capsys):

@@ -224,6 +224,18 @@ def heated_half_length(x_nodes: np.ndarray, q_elements: np.ndarray,
     return 0.5 * float(hi - lo)
 
 
+def _isothermal_state(temperature: float, t_oil: float, eta0: float, alpha: float,
+                      iteration: int) -> dict[str, float | int]:
+    """Thermal numbers of a loop that stopped after an isothermal solve, before its flash
+    temperatures: the contact temperature [deg C] that solve used, its rise over the oil
+    [K], the viscosity [Pa s] and pressure-viscosity coefficient [1/Pa] there, and the
+    iteration."""
+    return {"contact_temperature": float(temperature),
+            "contact_temperature_rise": float(temperature - t_oil),
+            "contact_viscosity": eta0, "contact_piezo": alpha,
+            "thermal_iterations": int(iteration)}
+
+
 def solve_thermal(scene: Scene) -> Result:
     """Thermally coupled steady line-contact solve (see module docstring).
 
@@ -327,10 +339,7 @@ def solve_thermal(scene: Scene) -> Result:
                    f"{alpha:.4g} 1/Pa): {res.message}")
             # the returned fields are this solve's: describe it, not the previous
             # iteration (whose flash temperatures and heat fluxes belong to other fields)
-            info = {"contact_temperature": float(T), "contact_temperature_rise": float(T - t_oil),
-                    "contact_viscosity": eta0, "contact_piezo": alpha,
-                    "thermal_iterations": int(it)}
-            temps = []
+            info, temps = _isothermal_state(T, t_oil, eta0, alpha, it), []
             break
         elapsed = time.perf_counter() - t0
         if sol.time_limit is not None and elapsed >= sol.time_limit:
@@ -343,10 +352,7 @@ def solve_thermal(scene: Scene) -> Result:
                    f"temperatures, after {newton_its} Newton iterations (budget "
                    f"{sol.iteration_budget}) and {elapsed:.3g} s (time limit "
                    f"{sol.time_limit:.3g} s)")
-            info = {"contact_temperature": float(T), "contact_temperature_rise": float(T - t_oil),
-                    "contact_viscosity": eta0, "contact_piezo": alpha,
-                    "thermal_iterations": int(it)}
-            temps = []
+            info, temps = _isothermal_state(T, t_oil, eta0, alpha, it), []
             break
         q_e, _ = model.heat_flux(res.pressure, res.h0)
         xn = res.x
