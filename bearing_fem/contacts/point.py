@@ -832,7 +832,13 @@ class PointProblem(ScaledResidual):
         self._stiff_diag = ((4.0 / 3.0) * (hyy / hxx + hxx / hyy)).ravel()
         self.near_field_cells = near_field_cells
         self._row_scale = None
-        self._fb_mu = None
+        # one smoothing for every row: the cavitation boundary of a point contact wraps
+        # round its sides, at films well above h_min, where a smoothing shrunk with the
+        # row scale (as a line contact's, :func:`row_smoothing`) lets the semismooth
+        # Newton cycle on coarse grids (the 33^2 estimate level of the circular map's
+        # M = 500, L = 10 no longer converged); the circular map's energy balance
+        # closes to 2.5e-8 with it
+        self._fb_mu = FB_SMOOTHING
         self._pattern = None
         self._displacement_cache = None
         self._forcing_term = None
@@ -950,13 +956,6 @@ class PointProblem(ScaledResidual):
         eps0 = h**3 / (12.0 * self.eta0)
         self._row_scale = (1.0 / (self._stiff_diag * eps0 * self.p_ref))[self.free] \
             * self._row_weight
-        # one smoothing for every row: the cavitation boundary of a point contact wraps
-        # round its sides, at films well above h_min, where a smoothing shrunk with the
-        # row scale (as a line contact's, :func:`row_smoothing`) lets the semismooth
-        # Newton cycle on coarse grids (the 33^2 estimate level of the circular map's
-        # M = 500, L = 10 no longer converged); the circular map's energy balance
-        # closes to 2.5e-8 with it
-        self._fb_mu = FB_SMOOTHING
 
     def admissible(self, z: np.ndarray) -> bool:
         """Finite unknowns and a positive film at every quadrature point."""
