@@ -47,7 +47,7 @@ from ..post import (FilmDissipation, film_numbers, friction_and_heat,
                     full_film_indicator_line, outlet_position_line, reported_viscosity)
 from ..result import Result
 from ..scene import Scene
-from .driver import (DriverSettings, Progress, Solution, solve_linear_model,
+from .driver import (DriverSettings, Progress, Solution, finish, solve_linear_model,
                      solve_newton_model)
 from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
                      reduced_law)
@@ -1134,13 +1134,15 @@ def solve_line(scene: Scene, *, boundary_pressure: tuple[float, float] | None = 
     """
     t0 = time.perf_counter()
     bp = (0.0, 0.0) if boundary_pressure is None else boundary_pressure
+    over = _rigid_barus_overload(scene) if bp == (0.0, 0.0) else None
+    if over is not None:
+        return _overload_result(scene, *over, t0)
     if scene.mesh.grading == "outlet":
         return _solve_outlet_graded(scene, bp, t0, progress)
     model = LineModel(scene, bp)
     if is_linear(scene):
         return solve_linear_model(model, scene, t0)
-    return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress),
-                                    end_pressures=any(v != 0.0 for v in bp))
+    return rigid_barus_beyond_limit(solve_newton_model(model, scene, t0, progress=progress))
 
 
 #: ``mesh.grading = "outlet"``: the uniform grid whose solution locates the outlet spike
@@ -1345,55 +1347,73 @@ RIGID_BARUS_RESOLVABLE_ALPHA_P = 36.0
 RIGID_BARUS_LOAD_MARGIN = 1.1
 
 
-def rigid_barus_beyond_limit(result: Result, *, end_pressures: bool = False) -> Result:
-    """A rigid Barus solve of a load (not a gap) beyond what the contact can carry is no
-    solution (Kapitsa: alpha q_max < 1), with the reduced pressure q in its fields:
-
-    - a converged solve whose pressure peak lies beyond
-      :data:`RIGID_BARUS_RESOLVABLE_ALPHA_P` (a one-node spike set by rounding);
-    - a solve, failed or converged (incompressible, Reynolds outlet, zero end
-      pressures), of a load above :data:`RIGID_BARUS_LOAD_MARGIN` times the largest load
-      of Martin's cylinder (:func:`bearing_fem.analytic.martin_barus_load_limit`): no
-      iteration count could reach it, and a converged grid solution carries the excess
-      on a pressure spike of one element.
-
-    Other results are returned unchanged. ``end_pressures`` is True when the solve
-    imposed non-zero end pressures (the limit does not apply then).
-    """
+def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
+    """(W*, h0*) of :func:`bearing_fem.analytic.martin_barus_load_limit` when ``scene``
+    (rigid, incompressible, Barus, Reynolds cavitation, under load) asks for more than
+    :data:`RIGID_BARUS_LOAD_MARGIN` W* [N/m], else None."""
     from ..analytic import martin_barus_load_limit
 
+    lub, m = scene.lubricant, scene.model
+    if not (m.elasticity == "rigid" and scene.load.force is not None
+            and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
+            and lub.density == "incompressible" and m.cavitation == "reynolds"):
+        return None
+    limit, h_limit = martin_barus_load_limit(scene.contact.rx, lub.viscosity,
+                                             scene.kinematics.mean_speed, lub.effective_piezo)
+    return (limit, h_limit) if scene.load.force > RIGID_BARUS_LOAD_MARGIN * limit else None
+
+
+def _overload_message(force: float, why: str) -> str:
+    """The ``no_solution`` message of a rigid Barus roller loaded beyond its limit."""
+    return (f"no_solution: load.force = {force:.4g} N/m exceeds what the rigid Barus "
+            f"contact can carry: {why}: Kapitsa's existence limit alpha q_max < 1 "
+            "(docs/theory.md). Lower the load, give the gap (load.gap) instead, or model the "
+            "elasticity.")
+
+
+def _overload_result(scene: Scene, limit: float, h_limit: float, t0: float) -> Result:
+    """``no_solution`` for a rigid Barus load above :data:`RIGID_BARUS_LOAD_MARGIN` times
+    its limit, without Newton iterations: the fields are the reduced pressure q at a gap
+    5 % below h0* (one isoviscous linear solve on the scene's grid for that gap; alpha
+    q_max exceeds 1 there on the default domain)."""
+    gap = 0.95 * h_limit
+    # the isoviscous solve of the same gap is q itself
+    linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
+                     lubricant=replace(scene.lubricant, viscosity_law="constant"))
+    model = LineModel(linear)
+    _, solution, _, solves = model.linear(model.levels()[-1])  # one grid: no estimate
+    why = (f"the largest load of the rigid Barus cylinder is {limit:.4g} N/m, at the gap "
+           f"h0 = {h_limit:.4g} m where alpha q_max = 1 (Martin's film with the Reynolds "
+           "outlet; the reduced pressure grows as h0^(-3/2) as the gap closes)")
+    message = (_overload_message(scene.load.force, why) + " The pressure field holds the "
+               f"reduced pressure q at the gap {gap:.4g} m; no Newton iteration was run.")
+    return finish(scene, replace(solution, quantities={}, traction_model=None),
+                  status="no_solution", message=message, t0=t0, linear_solves=solves)
+
+
+def rigid_barus_beyond_limit(result: Result) -> Result:
+    """A converged rigid Barus solve of a load (not a gap) whose pressure peak lies
+    beyond :data:`RIGID_BARUS_RESOLVABLE_ALPHA_P` is no solution (a one-node spike set by
+    rounding, Kapitsa: alpha q_max < 1), with the reduced pressure q in its fields; other
+    results are returned unchanged. (Loads above :data:`RIGID_BARUS_LOAD_MARGIN` times the
+    limit of an incompressible Reynolds-outlet roller end before any Newton iteration,
+    :func:`solve_line`.)
+    """
     scene = result.scene
     lub = scene.lubricant
     if not (scene.model.elasticity == "rigid" and scene.load.force is not None
             and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
-            and result.status != "no_solution"):
+            and result.success):
         return result
-    alpha, force = lub.effective_piezo, scene.load.force
-    alpha_p = alpha * float(np.max(result.pressure)) if result.success else None
-    if alpha_p is not None and alpha_p > RIGID_BARUS_RESOLVABLE_ALPHA_P:
-        why = (f"the converged discrete pressure peaks at alpha p = {alpha_p:.4g} (> "
-               f"{RIGID_BARUS_RESOLVABLE_ALPHA_P:g}), where the reduced pressure "
-               "q = (1 - exp(-alpha p))/alpha equals 1/alpha to double precision")
-    else:
-        if (end_pressures or lub.density != "incompressible"
-                or scene.model.cavitation != "reynolds"):
-            return result
-        limit, h_limit = martin_barus_load_limit(scene.contact.rx, lub.viscosity,
-                                                 scene.kinematics.mean_speed, alpha)
-        if force <= RIGID_BARUS_LOAD_MARGIN * limit:
-            return result
-        how = (f"the solve converged on this grid only by carrying the excess on a pressure "
-               f"spike (alpha p_max = {alpha_p:.3g})" if alpha_p is not None else
-               f"the solve stopped with status {result.status} after "
-               f"{result.newton_iterations} Newton iterations")
-        why = (f"the largest load of the rigid Barus cylinder is {limit:.4g} N/m, at the "
-               f"gap h0 = {h_limit:.4g} m where alpha q_max = 1 (Martin's film with the "
-               f"Reynolds outlet; {how})")
-    message = (f"no_solution: load.force = {force:.4g} N/m exceeds what the rigid "
-               f"Barus contact can carry: {why}: Kapitsa's existence limit alpha q_max < 1 "
-               "(docs/theory.md). Lower the load, give the gap (load.gap) instead, or "
-               "model the elasticity. The pressure field holds the reduced pressure q of "
-               "the last iterate instead.")
+    alpha = lub.effective_piezo
+    alpha_p = alpha * float(np.max(result.pressure))
+    if alpha_p <= RIGID_BARUS_RESOLVABLE_ALPHA_P:
+        return result
+    why = (f"the converged discrete pressure peaks at alpha p = {alpha_p:.4g} (> "
+           f"{RIGID_BARUS_RESOLVABLE_ALPHA_P:g}), where the reduced pressure "
+           "q = (1 - exp(-alpha p))/alpha equals 1/alpha to double precision")
+    message = (_overload_message(scene.load.force, why) + " The pressure field holds the "
+               "reduced pressure q of the last iterate instead.")
     reduced = -np.expm1(-alpha * np.maximum(result.pressure, 0.0)) / alpha
     return replace(result, success=False, status="no_solution", message=message,
                    pressure=reduced, quantities={}, error_estimate=None,
