@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import logging
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Protocol, Sequence
 
 import numpy as np
@@ -660,6 +660,21 @@ def solve_linear_model(model: Any, scene: Any, t0: float) -> Result:
     return finish(scene, solution, status=status, message=message, t0=t0,
                   linear_solves=solves, coarse=coarse,
                   estimate_note=_levels_note(coarse, solution))
+
+
+def overload_result(model_class: Any, scene: Any, gap: float, message: str,
+                    t0: float) -> Result:
+    """``no_solution`` of a rigid Barus scene loaded beyond what it can carry, without
+    Newton iterations: its fields are the reduced pressure q at ``gap`` [m] (the
+    isoviscous solve of that gap is q itself: one linear solve on the scene's finest
+    grid, no error estimate), ``message`` its message. ``model_class(scene)`` builds the
+    contact model (``LineModel``, ``PointModel``)."""
+    linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
+                     lubricant=replace(scene.lubricant, viscosity_law="constant"))
+    model = model_class(linear)
+    _, solution, _, solves = model.linear(model.levels()[-1])
+    return finish(scene, replace(solution, quantities={}, traction_model=None),
+                  status="no_solution", message=message, t0=t0, linear_solves=solves)
 
 
 def _levels_note(coarse: Sequence[Solution], fine: Solution) -> str:

@@ -47,8 +47,8 @@ from ..post import (FilmDissipation, film_numbers, friction_and_heat,
                     full_film_indicator_line, outlet_position_line, reported_viscosity)
 from ..result import Result
 from ..scene import Scene
-from .driver import (DriverSettings, Progress, Solution, finish, solve_linear_model,
-                     solve_newton_model)
+from .driver import (DriverSettings, Progress, Solution, overload_result,
+                     solve_linear_model, solve_newton_model)
 from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
                      reduced_law)
 from .problem import ScaledResidual, fischer_burmeister, row_smoothing
@@ -1377,18 +1377,12 @@ def _overload_result(scene: Scene, limit: float, h_limit: float, t0: float) -> R
     5 % below h0* (one isoviscous linear solve on the scene's grid for that gap; alpha
     q_max exceeds 1 there on the default domain)."""
     gap = 0.95 * h_limit
-    # the isoviscous solve of the same gap is q itself
-    linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
-                     lubricant=replace(scene.lubricant, viscosity_law="constant"))
-    model = LineModel(linear)
-    _, solution, _, solves = model.linear(model.levels()[-1])  # one grid: no estimate
     why = (f"the largest load of the rigid Barus cylinder is {limit:.4g} N/m, at the gap "
            f"h0 = {h_limit:.4g} m where alpha q_max = 1 (Martin's film with the Reynolds "
            "outlet; the reduced pressure grows as h0^(-3/2) as the gap closes)")
     message = (_overload_message(scene.load.force, why) + " The pressure field holds the "
                f"reduced pressure q at the gap {gap:.4g} m; no Newton iteration was run.")
-    return finish(scene, replace(solution, quantities={}, traction_model=None),
-                  status="no_solution", message=message, t0=t0, linear_solves=solves)
+    return overload_result(LineModel, scene, gap, message, t0)
 
 
 def rigid_barus_beyond_limit(result: Result) -> Result:

@@ -68,8 +68,8 @@ from ..post import film_numbers, friction_and_heat, reported_viscosity
 from ..result import Result
 from ..validation import require_finite, require_int, require_positive
 from ..scene import Scene
-from .driver import (DriverSettings, Progress, Solution, finish, solve_linear_model,
-                     solve_newton_model)
+from .driver import (DriverSettings, Progress, Solution, overload_result,
+                     solve_linear_model, solve_newton_model)
 from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
                      reduced_law)
 from .point_grid import (LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates,
@@ -1727,12 +1727,6 @@ def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Re
     solve on the scene's grid, so q whatever its domain; on the default one alpha q_max
     exceeds 1 there), the message names the load and the limit."""
     gap = 0.95 * h_star
-    # the isoviscous solve of the same gap is q itself (a Barus solve returns p where
-    # alpha q_max < 1, as on a domain narrower than the default one)
-    linear = replace(scene, load=replace(scene.load, force=None, gap=gap),
-                     lubricant=replace(scene.lubricant, viscosity_law="constant"))
-    model = PointModel(linear)
-    _, solution, _, solves = model.linear(model.levels()[-1])  # one grid: no estimate
     message = (f"no_solution: load.force = {scene.load.force:.4g} N exceeds what the rigid "
                f"Barus point contact can carry: its largest load is {limit:.4g} N, at the "
                f"gap h0 = {h_star:.4g} m where alpha q_max = 1 (Kapitsa's existence limit "
@@ -1740,8 +1734,9 @@ def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Re
                "h0^(-3/2) as the gap closes). Lower the load, give the gap (load.gap) "
                "instead, or model the elasticity. The pressure field holds the reduced "
                f"pressure q at the gap {gap:.4g} m, no Newton iteration was run.")
-    return finish(scene, replace(solution, quantities={}, traction_model=None),
-                  status="no_solution", message=message, t0=t0, linear_solves=solves)
+    # the isoviscous solve of the same gap is q itself (a Barus solve returns p where
+    # alpha q_max < 1, as on a domain narrower than the default one)
+    return overload_result(PointModel, scene, gap, message, t0)
 
 
 def high_load_scene(scene: Scene, spent_iterations: int = 0,
