@@ -65,7 +65,7 @@ def test_point_linear_path_solves_coarse_to_fine():
     r = bf.solve(s)
     assert r.status == "linear"
     from bearing_fem.contacts.point import PointModel
-    model = PointModel(s)
+    model = PointModel(s, far_field=True)   # as solve_point builds it
     cold_status, cold, _, cold_solves = model.linear(model.levels()[-1])
     assert cold_status == "linear"
     assert r.linear_solves < cold_solves, (r.linear_solves, cold_solves)

@@ -482,3 +482,42 @@ def test_roelands_reduced_pressure_where_its_constant_overflows():
     np.testing.assert_allclose(q, ref, rtol=1e-7, err_msg="closed form against quadrature")
     np.testing.assert_allclose(roelands_from_reduced(q, eta0, alpha), ps, rtol=1e-7,
                                err_msg="round trip (eta/eta0 = O(1) here)")
+
+
+def test_kapitsa_exterior_load_matches_its_closed_form_strip_and_a_direct_sum():
+    """The load of Kapitsa's inlet film beyond a rectangle: with the rectangle as tall as
+    the plane only the strip x < x0 is left, -A pi/(2 a sqrt(b)) (h0 + a x0^2)^(-1/2) in
+    closed form; on the default rigid domain of a ball the side strips are summed
+    directly on a fine tensor grid (midpoints) as a second check."""
+    import math
+
+    from bearing_fem import analytic as an
+
+    h0, a, b, eta, u = 1e-6, 50.0, 12.5, 0.01, 1.0
+    lx, ly = math.sqrt(2 * h0 / (2 * a)), math.sqrt(2 * h0 / (2 * b))
+    x0, x1 = -30 * lx, 8 * lx
+    big_a, _ = an.kapitsa_point_coefficients(eta, u, a, b)
+    strip = -big_a * math.pi / (2 * a * math.sqrt(b)) / math.sqrt(h0 + a * x0**2)
+    tall = an.kapitsa_point_exterior_load((x0, x1), (-1e9 * ly, 1e9 * ly), h0, a, b, eta, u)
+    np.testing.assert_allclose(tall, strip, rtol=1e-10,
+                               err_msg="the strip x < x0 against its closed form")
+    box = an.kapitsa_point_exterior_load((x0, x1), (-30 * ly, 30 * ly), h0, a, b, eta, u)
+    # side strips x0 <= x <= 0, |y| >= 30 ly, by midpoints out to |y| = 3e4 ly (the rest
+    # of the tail, ~ 1/y^3 integrated, is below 1e-9 of it)
+    xs = x0 * (np.arange(1000) + 0.5) / 1000
+    t = np.linspace(math.log(30 * ly), math.log(3e4 * ly), 4001)
+    tm = 0.5 * (t[1:] + t[:-1])
+    ys = np.exp(tm)
+    q = np.maximum(big_a * xs[:, None] / (h0 + a * xs[:, None]**2 + b * ys[None, :]**2)**2,
+                   0.0)
+    sides = 2.0 * float(np.sum(q * (ys * np.diff(t))[None, :]) * abs(x0) / 1000)
+    np.testing.assert_allclose(box, strip + sides, rtol=1e-5,
+                               err_msg="the side strips against a direct midpoint sum")
+    barus = an.kapitsa_point_exterior_load((x0, x1), (-30 * ly, 30 * ly), h0, a, b, eta, u,
+                                           from_reduced=lambda v: an.barus_from_reduced(
+                                               v, 2e-8))
+    assert barus > box, "p(q) >= q for Barus"
+    with pytest.raises(ValueError, match="contain the origin"):
+        an.kapitsa_point_exterior_load((lx, x1), (-ly, ly), h0, a, b, eta, u)
+    with pytest.raises(ValueError, match="b must be > 0"):
+        an.kapitsa_point_exterior_load((x0, x1), (-ly, ly), h0, a, 0.0, eta, u)

@@ -58,6 +58,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from .. import units
+from ..analytic import kapitsa_point_exterior_load, kapitsa_point_pressure
 from ..errors import SceneError
 from ..formulas import point_central_film_nvm
 from ..mesh import every_other
@@ -507,6 +508,76 @@ def boundary_values(grid: PointGrid, boundary_pressure) -> np.ndarray:
     return out
 
 
+def far_field_applies(scene: Scene, grid: PointGrid) -> bool:
+    """True for a rigid point scene with the Reynolds outlet and a rolling speed on its
+    default domain (no ``mesh.x_range``, ``mesh.y_range`` or ``mesh.file``), which
+    contains the contact centre (x0 < 0 < x1, y0 < 0 < y1): the scenes whose film is
+    fully flooded, its far field Kapitsa's inlet film (:func:`far_field_data`). A given
+    domain keeps p = 0 on its edges: an inlet meniscus there, or a convergence study."""
+    mesh = scene.mesh
+    return (scene.model.elasticity == "rigid" and scene.model.cavitation == "reynolds"
+            and scene.kinematics.mean_speed > 0.0 and mesh.x_range is None
+            and mesh.y_range is None and mesh.file is None
+            and grid.x[0] < 0.0 < grid.x[-1] and grid.y[0] < 0.0 < grid.y[-1])
+
+
+def far_field_data(scene: Scene, grid: PointGrid, h0: float,
+                   from_reduced: Callable[[np.ndarray], np.ndarray]
+                   ) -> tuple[np.ndarray, float]:
+    """Edge data and the load beyond the domain of a rigid point film with the Reynolds
+    outlet (:func:`far_field_applies`).
+
+    Far from the contact the reduced pressure of the rigid film is Kapitsa's
+    full-Sommerfeld one on the inlet side, q = A x/h^2 ~ x/r^4, and zero (cavitated)
+    downstream. It decays so slowly that p = 0 on the edges of the default domain
+    [-30, 8] x [-30, 30] sqrt(2 rx h0), sqrt(2 ry h0) cost a ball 5 % of its load. So the
+    edges take max(q, 0) of Kapitsa's film, and the load of that film beyond the edges
+    (:func:`bearing_fem.analytic.kapitsa_point_exterior_load`, with the viscosity law's
+    p(q)) is added to the load. On the edges of a domain many film lengths long the gap
+    is x^2/(2 rx) + y^2/(2 ry) to within h0/(that): the data of a scene under a load,
+    whose gap is unknown, are taken at the gap that scaled its domain, which on the
+    default domain (h = 900 h_ref and more on the inlet and side edges) moves them by
+    about 0.1 % per factor 2 in h0.
+
+    Parameters
+    ----------
+    scene : Scene
+        Rigid.
+    grid : PointGrid
+    h0 : float
+        Central gap of the film [m] (the scene's gap, or the scale of its domain).
+    from_reduced : callable
+        The viscosity law's p(q) [Pa] (``linear.reduced_law(...).from_reduced``).
+
+    Returns
+    -------
+    q_bc : ndarray
+        Flat nodal reduced pressure [Pa] on the boundary nodes (zero elsewhere).
+    exterior : float
+        The film's load beyond the domain [N].
+    """
+    c, lub = scene.contact, scene.lubricant
+    u_m = scene.kinematics.mean_speed
+    q_bc = _kapitsa_edges(grid, h0, c.rx, c.ry, lub.viscosity, u_m)
+    exterior = kapitsa_point_exterior_load((float(grid.x[0]), float(grid.x[-1])),
+                                           (float(grid.y[0]), float(grid.y[-1])), h0,
+                                           0.5 / c.rx, 0.5 / c.ry, lub.viscosity, u_m,
+                                           from_reduced=from_reduced)
+    return q_bc, exterior
+
+
+def _kapitsa_edges(grid: PointGrid, h0: float, rx: float, ry: float, viscosity: float,
+                   mean_speed: float) -> np.ndarray:
+    """Flat nodal max(q, 0) of Kapitsa's isoviscous full-Sommerfeld film [Pa] on the
+    boundary nodes of ``grid`` (zero elsewhere)."""
+    q_bc = np.zeros(grid.size)
+    mask = grid.boundary_mask()
+    X, Y = grid.node_coordinates()
+    q_bc[mask] = np.maximum(kapitsa_point_pressure(X[mask], Y[mask], h0, 0.5 / rx,
+                                                   0.5 / ry, viscosity, mean_speed), 0.0)
+    return q_bc
+
+
 # ---------------------------------------------------------------------------------------
 # linear rigid path
 # ---------------------------------------------------------------------------------------
@@ -579,9 +650,12 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     h0* where alpha q_max = 1, and there W* = 2 sqrt(rx ry) h0* int -ln(1 - Q/Q_max)/alpha
     dX dY (a logarithmic, integrable singularity at the peak). No load above W* has a
     solution. Q comes from one reduced-pressure solve on a sinh-graded grid of ``nodes``
-    per direction over the default rigid domain (:data:`RIGID_RANGE_REYNOLDS`); the
-    integral is taken at the quadrature points, where Q < Q_max. Measured for a ball:
-    0.5028 N on 81^2, 0.5093 N on 161^2, 0.5099 N on 321^2. The line-contact counterpart in closed form is
+    per direction over the default rigid domain (:data:`RIGID_RANGE_REYNOLDS`) with
+    Kapitsa's inlet film on its edges, as a scene with a gap is solved
+    (:func:`far_field_data`); the integral is taken at the quadrature points, where
+    Q < Q_max, and the film's load beyond the domain is added. Measured for a ball:
+    0.5239 N on 81^2, 0.5305 N on 161^2, 0.5311 N on 321^2 (with p = 0 on the edges it
+    was 0.5028, 0.5093 and 0.5099 N). The line-contact counterpart in closed form is
     :func:`bearing_fem.analytic.martin_barus_load_limit`.
 
     Parameters
@@ -608,30 +682,41 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     piezo = require_positive("piezo", piezo, "1/Pa")
     nodes = require_int("nodes", nodes, 9, what="grid nodes per direction")
     h_n = 1e-6  # any gap: the solution is rescaled to h0* below
-    grid, q = _rigid_reduced_pressure(rx, ry, h_n, mean_speed, viscosity, nodes)
+    grid, q = _rigid_reduced_pressure(rx, ry, h_n, mean_speed, viscosity, nodes,
+                                      far_field=True)
     q_max = float(np.max(q))
     h_star = h_n * (piezo * q_max) ** (2.0 / 3.0)
     ops = grid.ops
     ratio = np.minimum(ops.value @ (q / q_max), 1.0 - 1e-16)
     load = (h_star / h_n) * float(ops.weights @ -np.log1p(-ratio)) / piezo
+    # the film beyond the domain at h0* (the domain in its own lengths, as the scene's)
+    (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
+    xu, yu = math.sqrt(2.0 * rx * h_star), math.sqrt(2.0 * ry * h_star)
+    load += kapitsa_point_exterior_load(
+        (x0 * xu, x1 * xu), (y0 * yu, y1 * yu), h_star, 0.5 / rx, 0.5 / ry, viscosity,
+        mean_speed, from_reduced=lambda v: -np.log1p(-piezo * np.minimum(
+            v, (1.0 - 1e-16) / piezo)) / piezo)
     return load, h_star
 
 
 def _rigid_reduced_pressure(rx: float, ry: float, h0: float, mean_speed: float,
-                            viscosity: float, nodes: int,
-                            ranges=RIGID_RANGE_REYNOLDS) -> tuple[PointGrid, np.ndarray]:
+                            viscosity: float, nodes: int, ranges=RIGID_RANGE_REYNOLDS,
+                            far_field: bool = False) -> tuple[PointGrid, np.ndarray]:
     """The isoviscous reduced pressure q >= 0 [Pa] of a rigid point contact with the
     Reynolds outlet at the gap ``h0`` [m], on a sinh-graded grid of ``nodes`` per
     direction over ``ranges`` (default :data:`RIGID_RANGE_REYNOLDS`; in units of
-    sqrt(2 rx h0), sqrt(2 ry h0)): the self-similar solution behind
+    sqrt(2 rx h0), sqrt(2 ry h0)), with q = 0 on the edges or (``far_field``) Kapitsa's
+    inlet film there (:func:`far_field_data`): the self-similar solution behind
     :func:`rigid_barus_point_load_limit` and :func:`rigid_isoviscous_load_integral`.
     Returns the grid and the nodal q."""
     xu, yu = math.sqrt(2.0 * rx * h0), math.sqrt(2.0 * ry * h0)
     (x0, x1), (y0, y1) = ranges
     grid = PointGrid.tensor(graded_coordinates(x0, x1, nodes, xu, stretch=1.5),
                             graded_coordinates(y0, y1, nodes, yu, stretch=1.5))
-    q, _, _ = reduced_pressure_solve(grid, h0, rx, ry, mean_speed, viscosity,
-                                     np.zeros(grid.size), "reynolds")
+    q_bc = (_kapitsa_edges(grid, h0, rx, ry, viscosity, mean_speed) if far_field
+            else np.zeros(grid.size))
+    q, _, _ = reduced_pressure_solve(grid, h0, rx, ry, mean_speed, viscosity, q_bc,
+                                     "reynolds")
     return grid, np.maximum(q, 0.0)
 
 
@@ -788,6 +873,10 @@ class PointProblem(ScaledResidual):
         Newton tolerance on max|F| the problem is solved to (scaled, -); bounds the GMRES
         accuracy asked for (see ``GMRES_TOLERANCE_FRACTION``). None: no such bound.
     """
+
+    #: Load of the film beyond the domain [N] (set by ``PointModel.problem`` from its
+    #: level; None: p = 0 beyond the edges, nothing added).
+    exterior_load: float | None = None
 
     def __init__(self, grid: PointGrid, flux: FluxModel, rx: float, ry: float, compliance,
                  cavitation: str, load: float | None, gap: float | None, p_ref: float,
@@ -1297,11 +1386,15 @@ class PointLevel:
         Whole-grid node counts (nx, ny).
     p_bc : ndarray
         Flat Dirichlet pressures of ``setup.grid`` [Pa].
+    exterior_load : float or None
+        Load of the film beyond the domain [N] where the edges carry Kapitsa's far field
+        (:func:`far_field_data`), else None.
     """
 
     setup: PointSetup
     nodes: tuple[int, int]
     p_bc: np.ndarray
+    exterior_load: float | None = None
 
     @property
     def label(self) -> str:
@@ -1348,12 +1441,17 @@ class PointModel:
     grid_scene : Scene, optional
         The scene whose scales set the grids (default ``scene``); a rigid squeeze series
         solves every instant on the grid of its mean gap.
+    far_field : bool
+        Rigid scenes with the Reynolds outlet (a gap or a load): impose Kapitsa's inlet
+        film on the domain's edges and add its load beyond them (:func:`far_field_data`)
+        instead of p = 0 on the edges; ignored where :func:`far_field_applies` is False.
     """
 
     def __init__(self, scene, boundary_pressure=None, squeeze_velocity: float = 0.0, *,
-                 grid_scene=None) -> None:
+                 grid_scene=None, far_field: bool = False) -> None:
         self.scene = scene
         self.boundary_pressure = boundary_pressure
+        self.far_field = bool(far_field)
         self.squeeze = float(squeeze_velocity)
         self.grid_scene = scene if grid_scene is None else grid_scene
         self.setup = point_setup(self.grid_scene)
@@ -1396,8 +1494,23 @@ class PointModel:
                 setup = self.setup
             else:
                 setup = point_setup(self.grid_scene, nodes=tuple(nodes), symmetric=half)
-            self._levels[key] = PointLevel(setup, tuple(nodes),
-                                           boundary_values(setup.grid, self.boundary_pressure))
+            far = self.far_field and far_field_applies(self.scene, setup.grid)
+            if far:
+                law = reduced_law(self.scene.lubricant)
+                gap = self.scene.load.gap
+                q_bc, beyond = far_field_data(self.scene, setup.grid,
+                                              setup.h_ref if gap is None else gap,
+                                              law.from_reduced)
+                # a load must exceed the film's load beyond the domain (not so on a domain
+                # far wider than the film: then p = 0 on its edges is right anyway)
+                force = self.scene.load.force
+                far = force is None or beyond < 0.5 * force
+            if far:
+                self._levels[key] = PointLevel(setup, tuple(nodes), law.from_reduced(q_bc),
+                                               beyond)
+            else:
+                self._levels[key] = PointLevel(
+                    setup, tuple(nodes), boundary_values(setup.grid, self.boundary_pressure))
         return self._levels[key]
 
     def levels(self) -> list[PointLevel]:
@@ -1436,12 +1549,16 @@ class PointModel:
             flux = flux_model(scene, setup, speed_scale=CONTINUATION_SPEED_FACTOR ** (1.0 - s))
         else:
             flux = flux_model(scene, setup, s)
+        force = scene.load.force
+        if force is not None and level.exterior_load is not None:
+            force = force - level.exterior_load  # the domain carries the rest
         problem = PointProblem(setup.grid, flux, scene.contact.rx,
                                scene.contact.ry, setup.compliance, scene.model.cavitation,
-                               scene.load.force, scene.load.gap, setup.p_ref, setup.h_ref,
+                               force, scene.load.gap, setup.p_ref, setup.h_ref,
                                scene.lubricant.viscosity, level.p_bc, self.squeeze,
                                tolerance=tolerance)
         problem.iteration_sink = self._linear_iterations
+        problem.exterior_load = level.exterior_load
         # a new problem means the earlier ones are done with their Newton iterations
         # (the driver moves on to a new level, continuation step or the finish): drop their
         # LU and cached products (they are rebuilt if an earlier problem is used again)
@@ -1518,7 +1635,9 @@ class PointModel:
                  post: bool = True, cavitated: np.ndarray | None = None) -> Solution:
         """Fields and post-processed numbers of unknowns ``z`` (or of a nodal pressure
         ``field`` at the offset ``h0``, for the linear path; ``cavitated`` marks the
-        nodes of its active set)."""
+        nodes of its active set). The film's load beyond the domain of a level with
+        Kapitsa's far field on its edges (``PointLevel.exterior_load``) is added to the
+        load and reported as ``load_beyond_domain`` [N]."""
         scene = self.scene
         grid = problem.grid
         ops = grid.ops
@@ -1536,8 +1655,10 @@ class PointModel:
         q = out.quantities
         o = np.array([0.0])
         v = problem.displacement(p)
-        load = float(problem.mass @ p)
-        gross = float(problem.mass @ np.abs(p))
+        exterior_load = problem.exterior_load
+        beyond = 0.0 if exterior_load is None else float(exterior_load)
+        load = float(problem.mass @ p) + beyond
+        gross = float(problem.mass @ np.abs(p)) + beyond
         h_c = float(h0 + grid.interpolate(v, o, o)[0])
         # integrals over the quadrature points: on the half grid a whole-grid solution
         # mirrors (``whole``; every cell lies in one half, so twice its integrals, and the
@@ -1555,6 +1676,8 @@ class PointModel:
         pq, h_q, gp, eta_q, gq, stab = qp.post_fields(qpress, h0)
         nums, notes = film_numbers(h_nodes, h_q, h_c, p, load, grid.x, grid.y)
         q.update(nums)
+        if exterior_load is not None:
+            q["load_beyond_domain"] = beyond
         if scene.model.cavitation == "reynolds":
             full = ~qcav if qcav is not None else qpress > 1e-12 * qp.p_ref
             full = full | qgrid.boundary_mask()
@@ -1670,10 +1793,10 @@ def solve_point(scene: Scene, *, boundary_pressure: Callable | np.ndarray | None
         scene = replace(scene, solver=replace(scene.solver, max_iterations=max_iterations))
     t0 = time.perf_counter()
     with blas_threads(BLAS_THREADS):
-        model = PointModel(scene, boundary_pressure, sq)
+        plain = boundary_pressure is None and sq == 0.0   # no Dirichlet data, no squeeze
+        model = PointModel(scene, boundary_pressure, sq, far_field=plain)
         if is_linear(scene):
             return solve_linear_model(model, scene, t0)
-        plain = boundary_pressure is None and sq == 0.0   # no Dirichlet data, no squeeze
         over = _rigid_barus_overload(scene) if plain else None
         if over is not None:
             return _overload_result(scene, *over, t0)
@@ -1736,7 +1859,8 @@ def _overload_result(scene: Scene, limit: float, h_star: float, t0: float) -> Re
                f"pressure q at the gap {gap:.4g} m, no Newton iteration was run.")
     # the isoviscous solve of the same gap is q itself (a Barus solve returns p where
     # alpha q_max < 1, as on a domain narrower than the default one)
-    return overload_result(PointModel, scene, gap, message, t0)
+    return overload_result(lambda sc: PointModel(sc, far_field=True), scene, gap, message,
+                           t0)
 
 
 def high_load_scene(scene: Scene, spent_iterations: int = 0,
