@@ -413,7 +413,8 @@ def kapitsa_point_exterior_load(x_range: tuple[float, float], y_range: tuple[flo
     Returns
     -------
     float
-        The load beyond the rectangle [N], >= 0.
+        The load beyond the rectangle [N], >= 0 (inf where ``from_reduced`` has no
+        pressure, e.g. alpha q >= 1 for Barus).
 
     Raises
     ------

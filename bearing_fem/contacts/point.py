@@ -1444,7 +1444,10 @@ class PointModel:
     far_field : bool
         Rigid scenes with the Reynolds outlet (a gap or a load): impose Kapitsa's inlet
         film on the domain's edges and add its load beyond them (:func:`far_field_data`)
-        instead of p = 0 on the edges; ignored where :func:`far_field_applies` is False.
+        instead of p = 0 on the edges; ignored where :func:`far_field_applies` is False,
+        where the film's pressure on the edges or its load beyond them is not finite
+        (reduced pressure at the viscosity law's limit there) and where a load does not
+        exceed twice the load beyond the domain.
     """
 
     def __init__(self, scene, boundary_pressure=None, squeeze_velocity: float = 0.0, *,
@@ -1501,13 +1504,17 @@ class PointModel:
                 q_bc, beyond = far_field_data(self.scene, setup.grid,
                                               setup.h_ref if gap is None else gap,
                                               law.from_reduced)
+                p_edges = law.from_reduced(q_bc)
                 # a load must exceed the film's load beyond the domain (not so on a domain
-                # far wider than the film: then p = 0 on its edges is right anyway)
+                # far wider than the film: then p = 0 on its edges is right anyway); where
+                # the edges' reduced pressure reaches the law's limit (a gap far below the
+                # film's existence limit) no pressure exists there (inf): p = 0 edges, and
+                # the solve says no_solution as it did before the far field
                 force = self.scene.load.force
-                far = force is None or beyond < 0.5 * force
+                far = (math.isfinite(beyond) and bool(np.all(np.isfinite(p_edges)))
+                       and (force is None or beyond < 0.5 * force))
             if far:
-                self._levels[key] = PointLevel(setup, tuple(nodes), law.from_reduced(q_bc),
-                                               beyond)
+                self._levels[key] = PointLevel(setup, tuple(nodes), p_edges, beyond)
             else:
                 self._levels[key] = PointLevel(
                     setup, tuple(nodes), boundary_values(setup.grid, self.boundary_pressure))
