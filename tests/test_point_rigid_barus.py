@@ -90,7 +90,9 @@ def test_loaded_rigid_film_carries_its_load_on_the_documented_domain(ry):
 
     Both solves put Kapitsa's inlet film on the edges and add its load beyond them; the
     loaded one takes those data at the gap that scaled its domain, not at its solution's
-    (measured: the gap-driven solve carries the load to 4e-5 and 3e-4)."""
+    (measured on 81^2 at the loaded film's central gap: the gap-driven solve carries the
+    load to 4e-5 and 3e-4; at the smallest nodal film, 0.2 % above it where no node lies
+    on x = 0, to 7e-4 and 9e-4)."""
     base = {"contact": {"kind": "point", "rx": RX, "ry": ry},
             "materials": {"reduced_modulus": 2.2e11},
             "lubricant": {"viscosity": ETA, "viscosity_law": "constant"},
@@ -102,11 +104,12 @@ def test_loaded_rigid_film_carries_its_load_on_the_documented_domain(ry):
                                err_msg="the load balance, the film beyond the edges included")
     # measured 3.7 % (ball) and 3.5 % (ry = 4 rx) of the load beyond the edges
     assert 0.02 < loaded.quantities["load_beyond_domain"] / 0.3 < 0.06
-    gap = float(np.min(loaded.film))
+    gap = loaded.quantities["h_central"]
     driven = bf.solve(bf.Scene.from_dict({**base, "load": {"gap": gap}}))
-    np.testing.assert_allclose(driven.quantities["load"], 0.3, rtol=0.002,
+    np.testing.assert_allclose(driven.quantities["load"], 0.3, rtol=5e-4,
                                err_msg="the film under 0.3 N does not carry 0.3 N on the "
-                                       "domain of its own gap")
+                                       "domain of its own gap (measured 4e-5, 3e-4: the "
+                                       "edge data at the domain's scale gap, not at h0)")
 
 
 def test_overload_fields_are_the_reduced_pressure_on_a_narrow_domain():
