@@ -38,6 +38,7 @@ def json_safe(value: Any) -> Any:
 #: the scene decides, see :func:`summary_units`).
 _UNITS_POINT = {
     "h_min": "m", "h_central": "m", "p_max": "Pa", "h0": "m", "load": "N",
+    "load_beyond_domain": "N",
     "friction_force": "N", "friction_force_surface2": "N", "rolling_resistance": "N",
     "sliding_friction": "N", "friction_coefficient": "1", "heat_power": "W",
     "heat_power_couette": "W", "heat_power_poiseuille": "W",

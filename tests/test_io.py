@@ -332,8 +332,9 @@ def test_field_unit(name, unit):
 
 
 def test_every_dimensional_summary_number_has_a_unit():
-    """Every float in the summary of an elastic line and point solve has its unit in
-    summary["units"] (heat_power_poiseuille_direct and heat_power_stabilisation had none);
+    """Every float in the summary of an elastic line and point solve, and of a rigid point
+    solve, has its unit in summary["units"] (heat_power_poiseuille_direct and
+    heat_power_stabilisation had none, nor had the rigid point's load_beyond_domain);
     counts (iterations, unknowns) are whole numbers."""
     import bearing_fem as bf
 
@@ -346,8 +347,16 @@ def test_every_dimensional_summary_number_has_a_unit():
             "load": {"force": 2e5 if kind == "line" else 50.0},
             "mesh": {"nodes": 401 if kind == "line" else [33, 33]}})
 
-    for kind in ("line", "point"):
-        s = bf.solve(base(kind)).summary()
+    rigid = bf.Scene.from_dict({
+        "contact": {"kind": "point", "rx": 0.01, "ry": 0.01},
+        "lubricant": {"viscosity": 0.01, "piezo": 2e-8},
+        "kinematics": {"u1": 1.0, "u2": 1.0}, "load": {"gap": 1e-6},
+        "mesh": {"nodes": [33, 33]}, "model": {"elasticity": "rigid"}})
+    rigid_summary = bf.solve(rigid).summary()
+    assert "load_beyond_domain" in rigid_summary, "the rigid default domain's far field"
+    for kind, s in (("line", bf.solve(base("line")).summary()),
+                    ("point", bf.solve(base("point")).summary()),
+                    ("rigid point", rigid_summary)):
         missing = [k for k, v in s.items() if isinstance(v, float) and k not in s["units"]]
         assert not missing, f"{kind}: summary numbers without a unit: {missing}"
         for k in ("newton_iterations", "dofs"):
