@@ -217,3 +217,36 @@ def test_far_field_edges_beyond_the_laws_limit_keep_p_zero(law):
         "no finite far field: p = 0 on the edges"
     r = bf.solve(compressible)
     assert not r.success and np.all(np.isfinite(r.pressure)), r.status
+
+
+def test_far_field_only_on_the_default_rigid_reynolds_domain():
+    """Kapitsa's far field (edge data and load_beyond_domain) applies to a plain rigid
+    point scene with the Reynolds outlet on its default domain only: a given mesh range
+    (an inlet meniscus there), full-Sommerfeld, a squeeze velocity or user boundary data
+    keep p = 0 (or the given data) on the edges, and an elastic scene is not touched."""
+    from bearing_fem.contacts.point import far_field_applies, point_setup, solve_point
+
+    def scene(**over):
+        d = {"contact": {"kind": "point", "rx": RX, "ry": RY},
+             "materials": {"reduced_modulus": 2.2e11},
+             "lubricant": {"viscosity": ETA, "viscosity_law": "constant"},
+             "kinematics": {"u1": UM, "u2": UM}, "load": {"gap": 1e-6},
+             "mesh": {"nodes": [33, 33]},
+             "model": {"elasticity": "rigid", "cavitation": "reynolds"}}
+        for k, v in over.items():
+            d[k] = {**d[k], **v}
+        return bf.Scene.from_dict(d)
+
+    plain = bf.solve(scene())
+    assert plain.quantities["load_beyond_domain"] > 0.0
+    for why, sc in (("a given x_range", scene(mesh={"x_range": [-30.0, 8.0]})),
+                    ("a given y_range", scene(mesh={"y_range": [-30.0, 30.0]})),
+                    ("full-Sommerfeld", scene(model={"cavitation": "none"}))):
+        r = bf.solve(sc)
+        assert r.success and "load_beyond_domain" not in r.quantities, why
+    for why, kwargs in (("squeeze", {"squeeze_velocity": -1e-6}),
+                        ("boundary data", {"boundary_pressure": lambda x, y: 0.0 * x})):
+        r = solve_point(scene(), **kwargs)
+        assert r.success and "load_beyond_domain" not in r.quantities, why
+    elastic = scene(model={"elasticity": "half-space"}, load={"gap": None, "force": 10.0})
+    assert not far_field_applies(elastic, point_setup(elastic).grid), "elastic"
