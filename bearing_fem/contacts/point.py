@@ -536,8 +536,9 @@ def far_field_data(scene: Scene, grid: PointGrid, h0: float,
     p(q)) is added to the load. On the edges of a domain many film lengths long the gap
     is x^2/(2 rx) + y^2/(2 ry) to within h0/(that): the data of a scene under a load,
     whose gap is unknown, are taken at the gap that scaled its domain, which on the
-    default domain (h = 900 h_ref and more on the inlet and side edges) moves them by
-    about 0.1 % per factor 2 in h0.
+    default domain (h = 900 h_ref and more on the inlet and side edges) moves the edge
+    values by 0.1 to 0.2 % (q ~ 1/h^2) and the load beyond the domain by 0.06 % per
+    factor 2 in h0 (tests/test_point_rigid_barus.py).
 
     Parameters
     ----------
