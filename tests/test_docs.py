@@ -333,7 +333,7 @@ DOCUMENTED_CONSTANTS = [
               _module("bearing_fem.contacts.line").DENSE_MESH_MOES_M)),
     ("scenes.md", r"([0-9]+) nodes per unit, at least 801 and at most ([0-9]+) nodes",
      lambda: (_module("bearing_fem.contacts.line").NODES_PER_RIGID_LENGTH, 20001)),
-    ("scenes.md", r"a load above ([0-9.]+) times it\s+\(`RIGID_BARUS_LOAD_MARGIN`\)",
+    ("scenes.md", r"a load above it \(([0-9.]+) times it,\s+`RIGID_BARUS_LOAD_MARGIN`",
      lambda: (_module("bearing_fem.contacts.line").RIGID_BARUS_LOAD_MARGIN,)),
     ("theory.md", r"converged pressure peaks beyond alpha p = ([0-9.]+),",
      lambda: (_module("bearing_fem.contacts.line").RIGID_BARUS_RESOLVABLE_ALPHA_P,)),

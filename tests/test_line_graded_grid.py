@@ -121,8 +121,9 @@ def test_converged_spike_beyond_the_resolvable_pressure_is_no_solution():
 
 def test_failed_rigid_barus_line_above_the_load_limit_is_no_solution():
     """A rigid Barus roller at a realistic load (1e5 N/m, 5 m/s) cannot exist: the
-    largest load of the contact is 21.5 kN/m. Newton ran out of its budget and said
-    'budget_exhausted' (a larger budget would not help); the result now says why."""
+    largest load of the contact is 21.5 kN/m (checked here against Martin's film). Newton
+    once ran out of its budget and said 'budget_exhausted'; the solve now ends, naming
+    the limit, before any Newton iteration, and half the limit still converges."""
     import bearing_fem as bf
     from bearing_fem import analytic
 
@@ -165,6 +166,13 @@ def test_converged_rigid_barus_line_above_the_load_limit_is_no_solution():
     assert r.status == "no_solution" and not r.success, (r.status, r.message)
     assert f"{limit:.4g} N/m" in r.message and r.newton_iterations == 0, r.message
     assert r.x.size == 401, "the fields are on the scene's grid"
+    # just above the limit on the default grid: 1.02 and 1.05 times it converged there
+    # (alpha p_max 16 and 21) while the refusal waited for 1.1 times it
+    for factor in (1.02, 1.05):
+        over = bf.solve(bf.Scene.from_dict({**scene.to_dict(), "mesh": {},
+                                            "load": {"force": factor * limit}}))
+        assert over.status == "no_solution" and over.newton_iterations == 0, \
+            (factor, over.status, over.message)
 
 
 def _moes_line(mesh=None, **over):

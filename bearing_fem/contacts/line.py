@@ -1338,13 +1338,14 @@ def _solve_outlet_graded(scene: Scene, bp, t0: float, progress) -> Result:
 #: to double precision (exp(-36) = 2e-16): a rigid Barus solution there sits at Kapitsa's
 #: existence limit alpha q_max = 1, its pressure set by rounding, not by the equations.
 RIGID_BARUS_RESOLVABLE_ALPHA_P = 36.0
-#: A rigid Barus solve, failed or converged, of a load above this multiple of the largest
-#: load the contact can carry (:func:`bearing_fem.analytic.martin_barus_load_limit`, on an
-#: infinite inlet; a finite domain carries less) is reported as no solution; the margin
-#: covers the discretisation of the limit. Above the limit a load-driven Newton solve can
-#: still converge on a grid, the excess carried by a one-element pressure spike (1.3 times
-#: the limit on 201..801 nodes at alpha p_max = 9..24): an artefact of the grid.
-RIGID_BARUS_LOAD_MARGIN = 1.1
+#: A rigid Barus load above this multiple of the largest load the contact can carry
+#: (:func:`bearing_fem.analytic.martin_barus_load_limit`, exact in closed form on an
+#: infinite inlet; a finite domain carries less) has no solution, and the solve ends so
+#: before any Newton iteration. Above the limit a load-driven Newton solve can still
+#: converge on a grid, the excess carried by a one-element pressure spike: 1.3 times the
+#: limit on 201..801 nodes at alpha p_max = 9..24, and on the default grid 1.02 and 1.05
+#: times it at alpha p_max = 16 and 21 when this factor was 1.1. So it is 1.
+RIGID_BARUS_LOAD_MARGIN = 1.0
 
 
 def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
