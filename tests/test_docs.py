@@ -335,6 +335,10 @@ DOCUMENTED_CONSTANTS = [
      lambda: (_module("bearing_fem.contacts.line").NODES_PER_RIGID_LENGTH, 20001)),
     ("scenes.md", r"a load above it \(([0-9.]+) times it,\s+`RIGID_BARUS_LOAD_MARGIN`",
      lambda: (_module("bearing_fem.contacts.line").RIGID_BARUS_LOAD_MARGIN,)),
+    ("scenes.md", r"above ([0-9.]+) times it \(`RIGID_BARUS_POINT_LOAD_MARGIN`",
+     lambda: (_module("bearing_fem.contacts.point").RIGID_BARUS_POINT_LOAD_MARGIN,)),
+    ("theory.md", r"whose load exceeds ([0-9.]+) times its largest load",
+     lambda: (_module("bearing_fem.contacts.point").RIGID_BARUS_POINT_LOAD_MARGIN,)),
     ("theory.md", r"converged pressure peaks beyond alpha p = ([0-9.]+),",
      lambda: (_module("bearing_fem.contacts.line").RIGID_BARUS_RESOLVABLE_ALPHA_P,)),
     # default point grids (point.md)
