@@ -658,7 +658,7 @@ def rigid_barus_point_load_limit(rx: float, ry: float, viscosity: float,
     (:func:`far_field_data`); the integral is taken at the quadrature points, where
     Q < Q_max, and the film's load beyond the domain is added. The shape Q is that of every
     contact with the same ry/rx, so its numbers are cached by ry/rx and ``nodes`` (the
-    161^2 solve takes about 2 s once). Measured for a ball: 0.5239 N on 81^2, 0.5305 N on
+    161^2 solve takes about 1.6 s once). Measured for a ball: 0.5239 N on 81^2, 0.5305 N on
     161^2, 0.5311 N on 321^2 (with p = 0 on the edges it was 0.5028, 0.5093 and
     0.5099 N). The line-contact counterpart in closed form is
     :func:`bearing_fem.analytic.martin_barus_load_limit`.
