@@ -700,17 +700,32 @@ def _barus_limit_shape(ratio: float, nodes: int) -> tuple[float, float]:
     on the default rigid domain with Kapitsa's film on its edges, the integral at the
     quadrature points (where Q < Q_max) plus Kapitsa's film beyond the edges (cached: the
     shape is that of every rigid Barus point contact with this ry/rx)."""
-    grid, q = _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, far_field=True)
+    grid, q = _unit_flooded_film(ratio, nodes)
     q_max = float(np.max(q))
     ops = grid.ops
     share = np.minimum(ops.value @ (q / q_max), 1.0 - 1e-16)
     inside = float(ops.weights @ -np.log1p(-share))
+    beyond = _unit_film_beyond(
+        ratio, lambda v: -np.log1p(-np.minimum(v / q_max, 1.0 - 1e-16)))
+    return q_max, inside + beyond
+
+
+@functools.lru_cache(maxsize=8)
+def _unit_flooded_film(ratio: float, nodes: int) -> tuple[PointGrid, np.ndarray]:
+    """The grid and nodal reduced pressure of the flooded rigid isoviscous film at
+    rx = h0 = eta0 = u_m = 1, ry = ``ratio`` (SI units) on the default rigid domain with
+    Kapitsa's film on its edges (cached: the self-similar shape of every rigid point film
+    with this ry/rx, :func:`_rigid_reduced_pressure`)."""
+    return _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, far_field=True)
+
+
+def _unit_film_beyond(ratio: float, from_reduced=None) -> float:
+    """Load of Kapitsa's film beyond the default rigid domain of :func:`_unit_flooded_film`
+    (:func:`bearing_fem.analytic.kapitsa_point_exterior_load`; ``from_reduced`` p(q))."""
     (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
     xu, yu = math.sqrt(2.0), math.sqrt(2.0 * ratio)
-    beyond = kapitsa_point_exterior_load(
-        (x0 * xu, x1 * xu), (y0 * yu, y1 * yu), 1.0, 0.5, 0.5 / ratio, 1.0, 1.0,
-        from_reduced=lambda v: -np.log1p(-np.minimum(v / q_max, 1.0 - 1e-16)))
-    return q_max, inside + beyond
+    return kapitsa_point_exterior_load((x0 * xu, x1 * xu), (y0 * yu, y1 * yu), 1.0, 0.5,
+                                       0.5 / ratio, 1.0, 1.0, from_reduced=from_reduced)
 
 
 def _rigid_reduced_pressure(rx: float, ry: float, h0: float, mean_speed: float,
@@ -841,12 +856,8 @@ def _flooded_load(ratio: float, nodes: int) -> float:
     rx = h0 = 1 m, ry = ``ratio`` m, eta0 = u_m = 1: the default domain with Kapitsa's
     inlet film on its edges plus that film's load beyond them (:func:`far_field_data`;
     cached)."""
-    grid, q = _rigid_reduced_pressure(1.0, ratio, 1.0, 1.0, 1.0, nodes, far_field=True)
-    (x0, x1), (y0, y1) = RIGID_RANGE_REYNOLDS
-    xu, yu = math.sqrt(2.0), math.sqrt(2.0 * ratio)
-    beyond = kapitsa_point_exterior_load((x0 * xu, x1 * xu), (y0 * yu, y1 * yu), 1.0, 0.5,
-                                         0.5 / ratio, 1.0, 1.0)
-    return float(grid.ops.weights @ (grid.ops.value @ q)) + beyond
+    grid, q = _unit_flooded_film(ratio, nodes)
+    return float(grid.ops.weights @ (grid.ops.value @ q)) + _unit_film_beyond(ratio)
 
 
 def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
