@@ -49,8 +49,8 @@ from ..result import Result
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, overload_result,
                      solve_linear_model, solve_newton_model)
-from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
-                     reduced_law)
+from .linear import (active_set_solve, is_linear_scene, is_rigid_barus_load,
+                     pressure_from_reduced, reduced_law)
 from .problem import ScaledResidual, fischer_burmeister, row_smoothing
 
 
@@ -1354,11 +1354,9 @@ def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
     :data:`RIGID_BARUS_LOAD_MARGIN` W* [N/m], else None."""
     from ..analytic import martin_barus_load_limit
 
-    lub, m = scene.lubricant, scene.model
-    if not (m.elasticity == "rigid" and scene.load.force is not None
-            and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
-            and lub.density == "incompressible" and m.cavitation == "reynolds"):
+    if not is_rigid_barus_load(scene):
         return None
+    lub = scene.lubricant
     limit, h_limit = martin_barus_load_limit(scene.contact.rx, lub.viscosity,
                                              scene.kinematics.mean_speed, lub.effective_piezo)
     return (limit, h_limit) if scene.load.force > RIGID_BARUS_LOAD_MARGIN * limit else None

@@ -81,6 +81,17 @@ def is_linear_scene(scene) -> bool:
             and roelands_index(lub.viscosity, lub.effective_piezo)
             >= ROELANDS_REDUCED_MIN_INDEX)
 
+def is_rigid_barus_load(scene) -> bool:
+    """True for a rigid, incompressible Barus (alpha > 0) scene with the Reynolds outlet
+    under a load: the scenes whose largest load is Kapitsa's existence limit
+    alpha q_max = 1 at its own gap (line: ``analytic.martin_barus_load_limit``, point:
+    ``contacts.point.rigid_barus_point_load_limit``)."""
+    m, lub = scene.model, scene.lubricant
+    return (m.elasticity == "rigid" and scene.load.force is not None
+            and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
+            and lub.density == "incompressible" and m.cavitation == "reynolds")
+
+
 def active_set_solve(a: sp.spmatrix, f: np.ndarray, q_bc: np.ndarray, free: np.ndarray,
                      cavitation: str, max_sweeps: int = 200,
                      active: np.ndarray | None = None

@@ -71,8 +71,8 @@ from ..validation import require_finite, require_int, require_positive
 from ..scene import Scene
 from .driver import (DriverSettings, Progress, Solution, overload_result,
                      solve_linear_model, solve_newton_model)
-from .linear import (active_set_solve, is_linear_scene, pressure_from_reduced,
-                     reduced_law)
+from .linear import (active_set_solve, is_linear_scene, is_rigid_barus_load,
+                     pressure_from_reduced, reduced_law)
 from .point_grid import (LU_PIVOT_THRESHOLD, FreePattern, PointGrid, graded_coordinates,
                          require_finite_factor_data)
 from .problem import FB_SMOOTHING, ScaledResidual, fischer_burmeister
@@ -864,11 +864,9 @@ def _rigid_barus_overload(scene: Scene) -> tuple[float, float] | None:
     """(W*, h0*) of :func:`rigid_barus_point_load_limit` when ``scene`` (rigid,
     incompressible, Barus, Reynolds cavitation, under load) asks for more than
     :data:`RIGID_BARUS_POINT_LOAD_MARGIN` W*, else None."""
-    lub, m = scene.lubricant, scene.model
-    if not (m.elasticity == "rigid" and scene.load.force is not None
-            and lub.viscosity_law == "barus" and lub.effective_piezo > 0.0
-            and lub.density == "incompressible" and m.cavitation == "reynolds"):
+    if not is_rigid_barus_load(scene):
         return None
+    lub = scene.lubricant
     limit, h_star = rigid_barus_point_load_limit(
         scene.contact.rx, scene.contact.ry, lub.viscosity, scene.kinematics.mean_speed,
         lub.effective_piezo)
