@@ -286,7 +286,8 @@ def test_far_field_only_on_the_default_rigid_reynolds_domain():
     """Kapitsa's far field (edge data and load_beyond_domain) applies to a plain rigid
     point scene with the Reynolds outlet on its default domain only: a given mesh range
     (an inlet meniscus there), full-Sommerfeld, a squeeze velocity or user boundary data
-    keep p = 0 (or the given data) on the edges, and an elastic scene is not touched."""
+    keep p = 0 (or the given data) on the edges, and an elastic scene above Moes
+    M = 15 (here M = 87) is not touched (tests/test_point_far_field.py)."""
     from bearing_fem.contacts.point import far_field_applies, point_setup, solve_point
 
     def scene(**over):
