@@ -127,7 +127,8 @@ LIGHT_LOAD_MOES_M = 8.0
 #: the maps (M = 20 and more) do: against a domain 4 times longer and wider (p = 0 too)
 #: its h_central differs by -1.4 %, -1.3 %, -0.6 %, -0.5 % at M = 17.4, 20, 30, 60
 #: isoviscous (Barus: -0.6 %, -0.7 %, -0.9 % at M = 17.4, 20, 30), an error the error
-#: estimate does not contain.
+#: estimate does not contain; h_central steps by -1.3 % isoviscous (Barus -0.2 %) from
+#: M = 14.999 to 15.001.
 FAR_FIELD_MOES_M = 15.0
 #: Moes M above which isoviscous scenes take a narrower default domain (below).
 HIGH_LOAD_MOES_M = 1000.0
