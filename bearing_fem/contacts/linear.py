@@ -81,6 +81,7 @@ def is_linear_scene(scene) -> bool:
             and roelands_index(lub.viscosity, lub.effective_piezo)
             >= ROELANDS_REDUCED_MIN_INDEX)
 
+
 def is_rigid_barus_load(scene) -> bool:
     """True for a rigid, incompressible Barus (alpha > 0) scene with the Reynolds outlet
     under a load: the scenes whose largest load is Kapitsa's existence limit

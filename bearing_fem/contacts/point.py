@@ -552,11 +552,11 @@ def far_field_applies(scene: Scene, grid: PointGrid) -> bool:
     film (:func:`far_field_data`). A given domain keeps p = 0 on its edges: an inlet
     meniscus there, or a convergence study."""
     mesh = scene.mesh
-    y0 = -grid.y[-1] if grid.mirror_y else grid.y[0]
+    y0, y1 = grid.whole_y_range
     return (_far_field_model(scene) and scene.model.cavitation == "reynolds"
             and scene.kinematics.mean_speed > 0.0 and mesh.x_range is None
             and mesh.y_range is None and mesh.file is None
-            and grid.x[0] < 0.0 < grid.x[-1] and y0 < 0.0 < grid.y[-1])
+            and grid.x[0] < 0.0 < grid.x[-1] and y0 < 0.0 < y1)
 
 
 def _far_field_model(scene: Scene) -> bool:
@@ -614,9 +614,8 @@ def far_field_data(scene: Scene, grid: PointGrid, h0: float,
     c, lub = scene.contact, scene.lubricant
     u_m = scene.kinematics.mean_speed
     q_bc = _kapitsa_edges(grid, h0, c.rx, c.ry, lub.viscosity, u_m)
-    y0 = -grid.y[-1] if grid.mirror_y else grid.y[0]  # a half grid stands for the whole
     exterior = kapitsa_point_exterior_load((float(grid.x[0]), float(grid.x[-1])),
-                                           (float(y0), float(grid.y[-1])), h0,
+                                           grid.whole_y_range, h0,
                                            0.5 / c.rx, 0.5 / c.ry, lub.viscosity, u_m,
                                            from_reduced=from_reduced)
     return q_bc, exterior

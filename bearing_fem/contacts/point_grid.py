@@ -570,6 +570,13 @@ class PointGrid:
         xx, yy = np.meshgrid(self.x, self.y)
         return xx.ravel(), yy.ravel()
 
+    @property
+    def whole_y_range(self) -> tuple[float, float]:
+        """(y0, y1) [m] of the whole domain: a half grid y >= 0 stands for
+        [-y[-1], y[-1]]."""
+        y0 = -self.y[-1] if self.mirror_y else self.y[0]
+        return float(y0), float(self.y[-1])
+
     def boundary_mask(self) -> np.ndarray:
         """Flat boolean mask of the boundary nodes."""
         m = np.zeros(self.shape, dtype=bool)
