@@ -1,6 +1,7 @@
 """Shared test helpers."""
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 from pathlib import Path
 from types import ModuleType
@@ -22,3 +23,21 @@ def load_study() -> Callable[[str], ModuleType]:
         return mod
 
     return load
+
+
+
+@pytest.fixture
+def far_field_on_given_domain(monkeypatch) -> Callable[[], None]:
+    """A call that lets point scenes with a given ``mesh.x_range``/``mesh.y_range`` take
+    Kapitsa's far field on their edges from then on, as the default domain does (a given
+    range otherwise keeps p = 0): the wider reference domains that check the default
+    domain's far field need it."""
+    import bearing_fem.contacts.point as point
+
+    original = point.far_field_applies
+
+    def applies(scene, grid) -> bool:
+        mesh = dataclasses.replace(scene.mesh, x_range=None, y_range=None)
+        return original(dataclasses.replace(scene, mesh=mesh), grid)
+
+    return lambda: monkeypatch.setattr(point, "far_field_applies", applies)

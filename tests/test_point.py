@@ -633,7 +633,7 @@ def test_xi_complex_step_equals_analytic_derivative():
                                err_msg="real part of the complex step is the real value")
 
 
-def test_lightly_loaded_ball_keeps_its_outlet_in_the_domain(monkeypatch):
+def test_lightly_loaded_ball_keeps_its_outlet_in_the_domain(far_field_on_given_domain):
     """A 12.7 mm steel ball at 0.3 N, 2 m/s, 0.05 Pa s (Moes M = 0.81, L = 15.7): the
     pressure zone reaches about 10 Hertz radii downstream; the default domain ended at
     1.5 a_x, cut it there and gave h_central 2.405e-6 m against 2.558e-6 m with the outlet
@@ -642,7 +642,6 @@ def test_lightly_loaded_ball_keeps_its_outlet_in_the_domain(monkeypatch):
     tests/test_point_far_field.py): h_central 3.903e-6 m, and with the outlet 4 times
     further (the same far field) 3.904e-6 m."""
     import bearing_fem as bf
-    import bearing_fem.contacts.point as point
     from bearing_fem.contacts.point import default_ranges
 
     def scene(x_range=None, nodes=None, y_range=None):
@@ -662,10 +661,7 @@ def test_lightly_loaded_ball_keeps_its_outlet_in_the_domain(monkeypatch):
     assert r.success and "load_beyond_domain" in r.quantities, r.message
     # the longer domain with the default domain's far field on its edges too (a given
     # range otherwise keeps p = 0)
-    original = point.far_field_applies
-    monkeypatch.setattr(point, "far_field_applies", lambda sc, grid: original(
-        dataclasses.replace(sc, mesh=dataclasses.replace(sc.mesh, x_range=None,
-                                                         y_range=None)), grid))
+    far_field_on_given_domain()
     long = bf.solve(scene((x0, 4.0 * x1), [193, 129], y_range))
     assert long.success and "load_beyond_domain" in long.quantities, long.message
     np.testing.assert_allclose(r.quantities["h_central"], long.quantities["h_central"],

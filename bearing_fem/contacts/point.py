@@ -111,7 +111,10 @@ OUTLET_HYDRO_LENGTHS = 1.0
 #: domain 4 times longer at the inlet and 4 times wider (257^2), both with p = 0 on the
 #: edges: Reynolds outlet, isoviscous -28.2 %, -24.5 %, -5.7 %, -2.1 %, -1.4 % at
 #: M = 0.87, 2.6, 5.2, 8.7, 17.4 (which the far field now removes); full-Sommerfeld
-#: -69 %, -23 %, -2.1 % at M = 0.52, 2.6, 8.7.
+#: -69 %, -23 %, -2.1 % at M = 0.52, 2.6, 8.7 (129^2 against 257^2). Between this M and
+#: FAR_FIELD_MOES_M full-Sommerfeld balls go unwarned: -2.1 %, -1.5 %, -1.4 % at M = 8.7,
+#: 12.2, 14.8 (tests/test_point_far_field.py), below the 5 % at which a quantity's error
+#: is warned and like the Reynolds-outlet balls above FAR_FIELD_MOES_M.
 LIGHT_LOAD_MOES_M = 8.0
 #: Moes M below which a loaded elastic scene on the default domain (with the Reynolds
 #: outlet) takes Kapitsa's far field on its edges and adds that film's load beyond them,
