@@ -447,8 +447,13 @@ def _xdmf_item(h5name: str, path: str, shape: tuple[int, ...], kind: str) -> str
 def export_series(series: Any, outdir: str | Path, name: str | None = None) -> dict[str, Path]:
     """Write a squeeze series as VTU files with a PVD index and as one XDMF/HDF5 series.
 
-    Fields per node and step: ``pressure_Pa``, ``film_m``. Every file is written under a
-    temporary name and moved into place when all are complete (as :func:`export`).
+    Fields per node and step: ``pressure_Pa``, ``film_m``. The failed step of an elastic
+    series that stopped (``series.failure``, its last admissible iterate) is written
+    apart, as ``<name>_failed.vtu`` and the group ``failed`` of the HDF5 file, outside
+    the time series: it is not a solution. Every file is written under a temporary name
+    and moved into place when all are complete (as :func:`export`); a ``<name>_failed.vtu``
+    left by an earlier export into the same folder is removed when this series has no
+    failed step.
 
     Parameters
     ----------
@@ -465,8 +470,9 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     -------
     dict[str, Path]
         ``{"pvd": ..., "xdmf": ..., "h5": ..., "summary": .../summary.json}`` (the series'
-        :meth:`summary`); a series with no solved instant writes its summary (with the
-        status) alone: ``{"summary": ...}``.
+        :meth:`summary`), with ``"failed": .../<name>_failed.vtu`` where a step failed; a
+        series with no solved instant writes its summary (with the status) and its failed
+        step's VTU, if any, alone: ``{"summary": ...[, "failed": ...]}``.
     """
     import h5py
     import meshio
@@ -475,21 +481,30 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     outdir.mkdir(parents=True, exist_ok=True)
     clean_stale_temporaries(outdir)
     summary_text = json.dumps(json_safe(series.summary()), indent=2, allow_nan=False) + "\n"
+    if name is None:
+        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
+    failure = getattr(series, "failure", None)
+    failed_name = f"{name}_failed.vtu"
     if not series.results:  # nothing solved: the summary (with the status) alone
         stage = _Staging(outdir)
         try:
             stage.temp(FILES["summary"]).write_text(summary_text, encoding="utf-8")
+            if failure is not None:
+                _write_failed_step(stage.temp(failed_name), *_series_mesh(failure), failure)
             stage.commit()
         except BaseException:
             stage.discard()
             raise
-        return {"summary": outdir / FILES["summary"]}
-    if name is None:
-        name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
+        written = {"summary": outdir / FILES["summary"]}
+        if failure is not None:
+            written["failed"] = outdir / failed_name
+        return written
     points, quads = _series_mesh(series.results[0])
     stage = _Staging(outdir)
     final = {"pvd": outdir / f"{name}.pvd", "xdmf": outdir / f"{name}.xdmf",
              "h5": outdir / f"{name}.h5", "summary": outdir / FILES["summary"]}
+    if failure is not None:
+        final["failed"] = outdir / failed_name
     try:
         entries, grids = [], []
         h5name = final["h5"].name
@@ -498,7 +513,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
             f.create_dataset("cells", data=quads.astype(np.int64))
             for k, (t, r) in enumerate(zip(series.times, series.results)):
                 fname = f"{name}_{k:04d}.vtu"
-                data = {"pressure_Pa": np.ravel(r.pressure), "film_m": np.ravel(r.film)}
+                data = _series_fields(r)
                 meshio.write(str(stage.temp(fname)), meshio.Mesh(points, [("quad", quads)],
                                                                  point_data=data),
                              file_format="vtu")
@@ -518,6 +533,13 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
                     '<Geometry GeometryType="XYZ">'
                     + _xdmf_item(h5name, "/points", points.shape, "float") + "</Geometry>"
                     + "".join(attrs) + "</Grid>")
+            if failure is not None:
+                group = f.create_group("failed")
+                for key, arr in _series_fields(failure).items():
+                    group.create_dataset(key, data=arr)
+                group.attrs["status"] = failure.status
+        if failure is not None:
+            _write_failed_step(stage.temp(failed_name), points, quads, failure)
         stage.temp(final["summary"].name).write_text(summary_text, encoding="utf-8")
         stage.temp(final["pvd"].name).write_text(
             '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
@@ -531,7 +553,23 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     except BaseException:
         stage.discard()
         raise
+    if failure is None:  # an earlier export's failed step is not this series'
+        (outdir / failed_name).unlink(missing_ok=True)
     return final
+
+
+def _series_fields(result: Any) -> dict[str, np.ndarray]:
+    """The nodal fields of one instant of a series, flattened in node order."""
+    return {"pressure_Pa": np.ravel(result.pressure), "film_m": np.ravel(result.film)}
+
+
+def _write_failed_step(path: Path, points: np.ndarray, quads: np.ndarray, result: Any) -> None:
+    """The failed step's fields (its last iterate, not a solution) as one VTU file."""
+    import meshio
+
+    meshio.write(str(path), meshio.Mesh(points, [("quad", quads)],
+                                        point_data=_series_fields(result)),
+                 file_format="vtu")
 
 
 #: Columns of a series summary: the prescribed ones (every instant has them) and the

@@ -5,9 +5,12 @@ Grids are coarse (25^2 to 57^2) to keep the module fast; every tolerance says wh
 """
 from __future__ import annotations
 
+import json
 import math
 import pathlib
 
+import h5py
+import meshio
 import numpy as np
 import pytest
 
@@ -81,8 +84,6 @@ def test_stiff_transient_reproduces_kapitsa_each_step(tmp_path):
     assert np.all(np.isfinite(series.p_max))
 
     paths = {k: str(v) for k, v in bf.io.export_series(series, tmp_path / "stiff").items()}
-    import meshio
-
     assert paths["pvd"].endswith(".pvd") and "DataSet" in open(paths["pvd"]).read()
     with meshio.xdmf.TimeSeriesReader(paths["xdmf"]) as reader:
         reader.read_points_cells()
@@ -235,7 +236,7 @@ def test_newton_step_consistent_with_time_residual(monkeypatch):
 # ---------------------------------------------------------------------------------------
 # status contract and bad input
 # ---------------------------------------------------------------------------------------
-def test_failed_step_stops_series_with_status(monkeypatch):
+def test_failed_step_stops_series_with_status(monkeypatch, tmp_path):
     import bearing_fem.contacts.transient as tr
 
     real = tr.damped_newton
@@ -257,6 +258,28 @@ def test_failed_step_stops_series_with_status(monkeypatch):
     for arr in (series.p_max, series.h_min, series.h_central, series.load):
         assert arr.shape == (3,) and np.all(np.isfinite(arr))
     assert np.all(np.isfinite(series.failure.pressure))
+    assert series.failure_time == pytest.approx(3 * series.time_step, rel=1e-12)
+    # the failed step's fields are exported apart from the solved steps
+    files = bf.io.export_series(series, tmp_path / "series")
+    failed = meshio.read(files["failed"])
+    np.testing.assert_array_equal(failed.point_data["pressure_Pa"],
+                                  np.ravel(series.failure.pressure),
+                                  err_msg="the failed step's VTU holds its last iterate")
+    pvd = files["pvd"].read_text()
+    assert pvd.count("<DataSet") == 3 and "failed" not in pvd, "not in the time series"
+    with h5py.File(files["h5"]) as f:
+        assert f["failed"].attrs["status"] == "max_iterations"
+        np.testing.assert_array_equal(f["failed/film_m"][()], np.ravel(series.failure.film))
+    summary = json.loads(files["summary"].read_text())
+    assert summary["failed_step"]["step"] == 3 and summary["failed_step"]["status"] == \
+        "max_iterations", summary["failed_step"]
+    # a later export of a complete series into the same folder removes that file
+    monkeypatch.setattr(tr, "damped_newton", real)
+    whole = solve_elastic_squeeze_series(scene(nodes=25), eps=0.3, n_steps=8)
+    assert whole.success and whole.summary()["failed_step"] is None, whole.message
+    again = bf.io.export_series(whole, tmp_path / "series")
+    assert "failed" not in again and not files["failed"].exists(), \
+        "a stale failed step would be taken for this series'"
 
 
 def test_start_falls_back_to_compliance_continuation(monkeypatch):
@@ -288,18 +311,19 @@ def test_start_falls_back_to_compliance_continuation(monkeypatch):
                                        "tolerance 1e-8 on scaled rows)")
 
 
-def test_start_failure_has_nothing_to_export(tmp_path):
+def test_start_failure_exports_its_summary_and_failed_fields(tmp_path):
     series = solve_elastic_squeeze_series(scene(nodes=25), eps=0.3, n_steps=4,
                                           max_iterations=1)
     assert series.status == "max_iterations" and series.results == []
     assert "step 0" in series.message
     files = bf.io.export_series(series, tmp_path)
-    assert set(files) == {"summary"}, "nothing solved: the summary alone"
-    import json
-
+    assert set(files) == {"summary", "failed"}, "nothing solved: no time series"
     summary = json.loads(files["summary"].read_text())
     assert summary["status"] == "max_iterations" and summary["success"] is False
     assert summary["instants"] == 0 and "step 0" in summary["message"]
+    assert summary["failed_step"] == {"step": 0, "time": 0.0, "gap": pytest.approx(1.3 * H0),
+                                      "status": "max_iterations"}, summary["failed_step"]
+    assert np.all(np.isfinite(meshio.read(files["failed"]).point_data["film_m"]))
 
 
 @pytest.mark.parametrize("kwargs, match", [

@@ -270,6 +270,8 @@ class ElasticSqueezeSeries(SqueezeSeries):
         Steps planned, including the start (``len(times)`` when complete).
     failure : Result or None
         The failed step (last admissible iterate), if any.
+    failure_time, failure_gap : float or None
+        t [s] and h0(t) [m] of the failed step, if any.
     """
 
     h_min: np.ndarray = field(default_factory=lambda: np.zeros(0))
@@ -285,6 +287,8 @@ class ElasticSqueezeSeries(SqueezeSeries):
     omega: float = 0.0
     n_planned: int = 0
     failure: Result | None = None
+    failure_time: float | None = None
+    failure_gap: float | None = None
 
     ESTIMATE_NOTE = ("no error estimate: the instants of an elastic series are solved on one "
                      "grid, so their discretisation error is unknown; compare with a series "
@@ -293,6 +297,17 @@ class ElasticSqueezeSeries(SqueezeSeries):
     @property
     def success(self) -> bool:
         return self.status == "converged"
+
+    def summary(self) -> dict:
+        """As :meth:`SqueezeSeries.summary`, with ``failed_step``: None, or the failed
+        step's number (0 = the start), ``time`` [s], ``gap`` [m] and ``status`` (its
+        fields, the last admissible iterate, are exported apart from the solved steps:
+        :func:`bearing_fem.io.export_series`)."""
+        out = super().summary()
+        out["failed_step"] = None if self.failure is None else {
+            "step": len(self.results), "time": self.failure_time, "gap": self.failure_gap,
+            "status": self.failure.status}
+        return out
 
 
 # ---------------------------------------------------------------------------------------
@@ -609,7 +624,7 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
     results: list[Result] = []
     masses: list[np.ndarray] = []   # (rho h) at the quadrature points, latest first
     zs: list[np.ndarray] = []
-    failure = None
+    failure, failed_at = None, (None, None)
     status, message = "converged", ""
     for n, (t, g, rate) in enumerate(zip(times, gaps, rates)):
         clock = time.perf_counter()
@@ -641,7 +656,7 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
         if n == 0:  # the series' domain: said once, with its start
             res.warnings += domain_load_warnings(scene)
         if not res.success:
-            failure = res
+            failure, failed_at = res, (float(t), float(g))
             status = st
             spent = (f"; this instant spent {budget.describe()}; solver.iteration_budget "
                      "applies to each instant, solver.time_limit to the whole series"
@@ -672,7 +687,8 @@ def solve_elastic_squeeze_series(scene: Scene, eps: float = 0.3, omega: float | 
         newton_iterations=np.array([r.newton_iterations for r in results], dtype=int),
         wall_time_s=np.array([r.wall_time_s for r in results]),
         status=status, message=message, scheme=scheme, time_step=dt, eps=eps,
-        omega=omega, n_planned=n_total + 1, failure=failure, scene=scene)
+        omega=omega, n_planned=n_total + 1, failure=failure, failure_time=failed_at[0],
+        failure_gap=failed_at[1], scene=scene)
 
 
 def _guess(problem: TransientPointProblem, zs: list[np.ndarray]) -> np.ndarray:
