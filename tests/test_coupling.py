@@ -432,3 +432,24 @@ def test_time_limit_stops_before_an_iteration_that_would_overrun(monkeypatch):
     assert r.status == "time_limit" and not r.success, r.message
     assert "stopped before iteration 2" in r.message and "previous iteration took" in r.message
     assert r.quantities["thermal_iterations"] == 1, "the first iteration's result is kept"
+
+
+def test_default_grid_follows_the_contact_temperature():
+    """Each isothermal solve of the loop is the scene with eta0(T) (docs/coupling.md,
+    section 1), so its default grid is the grid rule's for the contact solved: the hot,
+    thin film of a sliding 2e6 N/m roller (Moes M grows as eta0 falls) gets more nodes
+    than line_setup gives for the thermal scene itself, which sizes from the oil at the
+    reference temperature (measured: 2289 nodes against 1801)."""
+    from bearing_fem.contacts.line import line_setup
+
+    scene = replace(_scene(nodes=None), load=Load(force=2e6))
+    r = bf.solve(scene)
+    assert r.success, r.message
+    q = r.quantities
+    solved = replace(scene, model=replace(scene.model, thermal="none"), thermal=None,
+                     lubricant=replace(scene.lubricant, viscosity=q["contact_viscosity"],
+                                       piezo=q["contact_piezo"]))
+    assert r.x.size == line_setup(solved).disc.x.size, \
+        "the returned grid is the default grid of the contact at its own temperature"
+    assert r.x.size > line_setup(scene).disc.x.size, \
+        "hotter and thinner than the oil at the reference temperature: a finer grid"
