@@ -405,3 +405,26 @@ def test_ball_bearing_narrower_than_its_balls_is_refused():
     with pytest.raises(SceneError, match=r"bearing\.width = 0\.001 m is narrower than the "
                                          r"balls \(bearing\.element_diameter = 0\.0127"):
         Bearing.from_dict(d)
+
+
+@pytest.mark.parametrize("example, dm, side", [
+    ("6209", 0.055, "inner raceway d_m - D_w cos(alpha) = 0.0423 m lies inside the bore"),
+    ("6209", 0.075, "outer raceway d_m + D_w cos(alpha) = 0.0877 m lies beyond the outside"),
+    # tapered rollers at 13.9 deg: 46 + 6.75 cos(13.9 deg) = 52.55 mm beyond the 52 mm ring
+    ("30205", 0.046, "outer raceway d_m + D_w cos(alpha) = 0.05255 m lies beyond the outside"),
+])
+def test_pitch_diameter_that_puts_the_raceways_outside_the_rings_is_refused(example, dm,
+                                                                            side):
+    """A pitch diameter between d and D but off-centre (0.030 m for a 6205, d = 25 mm,
+    D_w = 7.94 mm) was accepted: its inner raceway, d_m - D_w = 22 mm, lay inside the bore,
+    and the bearing was solved on that geometry."""
+    d = load_example(example).to_dict()
+    g = load_example(example).geometry
+    d["bearing"]["pitch_diameter"] = g.mean_diameter
+    assert Bearing.from_dict(d).geometry.mean_diameter == g.mean_diameter, \
+        "the example's own pitch diameter stays valid"
+    d["bearing"]["pitch_diameter"] = dm
+    with pytest.raises(SceneError, match=rf"bearing\.pitch_diameter = {dm:g} m puts the "
+                                         r"elements \(D_w = .* m\) outside the rings") as err:
+        Bearing.from_dict(d)
+    assert side in str(err.value), str(err.value)

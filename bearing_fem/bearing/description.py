@@ -379,6 +379,7 @@ class Geometry:
         if self.width is not None:
             _length(self, "width")
         alpha = self._contact_angle()
+        self._check_raceways_in_rings(d, big_d, dm, dw, alpha)
         c_r = field_number(self, "radial_clearance", "m")
         if c_r < 0.0:
             raise SceneError(f"bearing.radial_clearance must be >= 0 m, got {c_r:g} m: a "
@@ -407,6 +408,26 @@ class Geometry:
                 f"{MIN_STATIC_LOAD_RATING_FRACTION:.0%} of the static load rating of this "
                 f"geometry, about {iso:.3g} N by ISO 76; C0 is in N, not kN "
                 f"({c0:g} kN is {c0 * 1e3:g} N)")
+
+    def _check_raceways_in_rings(self, d: float, big_d: float, dm: float, dw: float,
+                                 alpha: float) -> None:
+        """The raceway diameters d_m -+ D_w cos(alpha) (section 3 of docs/bearing.md) lie
+        between the bore and the outside diameter. Without a pitch diameter (d_m = (d + D)/2)
+        the element check above implies it; a given pitch diameter off the middle of the
+        section can put a raceway inside the bore or beyond the outer ring."""
+        reach = dw * math.cos(math.radians(alpha))
+        inner, outer = dm - reach, dm + reach
+        if inner > d and outer < big_d:
+            return
+        name = "pitch_diameter" if self.pitch_diameter is not None else "element_diameter"
+        side = (f"the inner raceway d_m - D_w cos(alpha) = {inner:.4g} m lies inside the bore "
+                f"{d:g} m" if inner <= d else
+                f"the outer raceway d_m + D_w cos(alpha) = {outer:.4g} m lies beyond the "
+                f"outside diameter {big_d:g} m")
+        raise SceneError(f"bearing.{name} = {getattr(self, name):g} m puts the elements "
+                         f"(D_w = {dw:g} m) outside the rings: {side}; the raceways must lie "
+                         f"between the bore and the outside diameter (d_m = {dm:g} m; "
+                         "dimensions are in metres)")
 
     def _contact_angle(self) -> float:
         """The nominal contact angle [deg]: required (and at least
