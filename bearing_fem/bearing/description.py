@@ -743,7 +743,8 @@ class Operation:
     oil_temperature : float or None
         Oil (and bearing) temperature [deg C], in [-60, 500] deg C
         (:data:`OIL_TEMPERATURE_RANGE`: cold starts allowed); required by a temperature law
-        and by the thermal model, which need it > 0 deg C. Above
+        and by the thermal model, which need it > 0 deg C. Without a temperature law it
+        changes no result: ``lubricant.viscosity`` and ``piezo`` are taken as given. Above
         :data:`KELVIN_WARNING_TEMPERATURE` the bearing's warnings say it looks like kelvin
         (:func:`input_warnings`).
     """
