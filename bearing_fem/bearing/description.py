@@ -1262,6 +1262,9 @@ def input_warnings(bearing: Bearing) -> list[str]:
     * ``operation.oil_temperature`` more than
       :data:`bearing_fem.contacts.coupling.PIEZO_TABLE_EXTRAPOLATION_K` outside the
       ``piezo_temperatures`` table: alpha is extrapolated there;
+    * ``lubricant.piezo`` = 0 (its default) without a ``piezo_values`` table and with a
+      Barus or Roelands law: the contacts are isoviscous (``viscosity_law = "constant"``
+      says that this is meant);
     * a tapered roller bearing with an odd number of rows and no axial load: the model
       takes its rows in opposed pairs (docs/bearing.md 2.3), so a single row is treated as
       one row of such a pair, its induced axial force reacted by the opposed bearing.
@@ -1284,6 +1287,12 @@ def input_warnings(bearing: Bearing) -> list[str]:
                    "the slicing error along the roller, which with so few slices is several "
                    "per cent (docs/bearing.md, \"Slicing error\")")
     lub = bearing.lubricant
+    if lub.piezo == 0.0 and lub.piezo_values is None and lub.viscosity_law != "constant":
+        out.append("lubricant.piezo = 0 1/Pa (its default when left out): every contact is "
+                   "isoviscous, with films several times thinner than those of a "
+                   "piezo-viscous oil (mineral oils have 1e-8..3e-8 1/Pa); give the oil's "
+                   "pressure-viscosity coefficient in 1/Pa, or lubricant.viscosity_law = "
+                   "\"constant\" for an isoviscous lubricant")
     if lub.temperature_law != "none":
         from ..contacts.coupling import piezo_table_warning
 
