@@ -282,6 +282,25 @@ def _cmd_plot_series(path: Path, args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _refuse_bearing_output(path: Path) -> None:
+    """The folder of 'bearing-fem bearing' (or its bearing_summary.json) is no contact
+    result: say so, with its figures and a contact folder to plot instead."""
+    from .io import BEARING_FILES
+    from .plot_bearing import FIGURES
+
+    folder = path if path.is_dir() else path.parent
+    if not (folder / BEARING_FILES["summary"]).is_file() or not (
+            path.is_dir() or path.name == BEARING_FILES["summary"]):
+        return
+    contacts = sorted(p for p in folder.glob("contact_*") if p.is_dir())
+    example = (f"bearing-fem plot {contacts[0]}" if contacts
+               else "bearing-fem plot DIR/contact_<element>_<raceway>")
+    raise _InputError(f"{str(path)!r} is the output of 'bearing-fem bearing', not a contact "
+                      f"result: its figures ({', '.join(FIGURES.values())}) are written "
+                      "there by that command; plot one of its contacts with "
+                      f"'{example}'")
+
+
 def _cmd_plot(args: argparse.Namespace) -> int:
     from .io import read_result
 
@@ -292,6 +311,7 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         raise _InputError(f"--compare applies to squeeze series; {str(path)!r} is not a "
                           "series export (a folder with the summary.json of a "
                           "[transient] scene)")
+    _refuse_bearing_output(path)
     if path.is_dir():
         path = path / "result.h5"
     if not path.is_file():

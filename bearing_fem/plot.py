@@ -356,7 +356,7 @@ def _save(fig: Any, ax: Any, d: PlotData, what: str, out: Path) -> None:
     """Title (with the status stamp of an unsuccessful result), save as PNG, close."""
     import matplotlib.pyplot as plt
 
-    ax.set_title(figure_title(d, what), fontsize=10)
+    ax.set_title(figure_title(d, what), fontsize=10, wrap=True)
     _stamp(fig, d)
     fig.savefig(out, dpi=100)
     plt.close(fig)

@@ -405,3 +405,51 @@ def test_ball_bearing_narrower_than_its_balls_is_refused():
     with pytest.raises(SceneError, match=r"bearing\.width = 0\.001 m is narrower than the "
                                          r"balls \(bearing\.element_diameter = 0\.0127"):
         Bearing.from_dict(d)
+
+
+@pytest.mark.parametrize("example, dm, side", [
+    ("6209", 0.055, "inner raceway d_m - D_w cos(alpha) = 0.0423 m lies inside the bore"),
+    ("6209", 0.075, "outer raceway d_m + D_w cos(alpha) = 0.0877 m lies beyond the outside"),
+    # tapered rollers at 13.9 deg: 46 + 6.75 cos(13.9 deg) = 52.55 mm beyond the 52 mm ring
+    ("30205", 0.046, "outer raceway d_m + D_w cos(alpha) = 0.05255 m lies beyond the outside"),
+])
+def test_pitch_diameter_that_puts_the_raceways_outside_the_rings_is_refused(example, dm,
+                                                                            side):
+    """A pitch diameter between d and D but off-centre (0.030 m for a 6205, d = 25 mm,
+    D_w = 7.94 mm) was accepted: its inner raceway, d_m - D_w = 22 mm, lay inside the bore,
+    and the bearing was solved on that geometry."""
+    d = load_example(example).to_dict()
+    g = load_example(example).geometry
+    d["bearing"]["pitch_diameter"] = g.mean_diameter
+    assert Bearing.from_dict(d).geometry.mean_diameter == g.mean_diameter, \
+        "the example's own pitch diameter stays valid"
+    d["bearing"]["pitch_diameter"] = dm
+    with pytest.raises(SceneError, match=rf"bearing\.pitch_diameter = {dm:g} m puts the "
+                                         r"elements \(D_w = .* m\) outside the rings") as err:
+        Bearing.from_dict(d)
+    assert side in str(err.value), str(err.value)
+
+
+def test_left_out_piezo_coefficient_warns_that_the_contacts_are_isoviscous():
+    """lubricant.piezo defaults to 0: a bearing file without it was solved isoviscous with
+    no word (a 6205 at 6000 rpm: h_min 0.054 um instead of 0.33 um with 2.1e-8 1/Pa).
+    The warning names the field and the unit; an isoviscous oil says so with
+    viscosity_law = "constant", and a piezo table (Prokofiev law) needs no piezo."""
+    for name in EXAMPLES:
+        assert not any("lubricant.piezo" in w for w in input_warnings(load_example(name))), \
+            f"{name}: the shipped examples give a pressure-viscosity coefficient"
+    d = load_example("6209").to_dict()
+    del d["lubricant"]["piezo"]
+    notes = [w for w in input_warnings(Bearing.from_dict(d)) if "lubricant.piezo" in w]
+    assert len(notes) == 1 and notes[0].startswith(
+        "lubricant.piezo = 0 1/Pa (its default when left out): every contact is isoviscous"), \
+        notes
+    d["lubricant"]["viscosity_law"] = "constant"
+    assert not any("lubricant.piezo" in w for w in input_warnings(Bearing.from_dict(d))), \
+        "an isoviscous oil given as such"
+    d = load_example("nncf5040").to_dict()
+    assert d["lubricant"].get("piezo", 0.0) == 0.0 and d["lubricant"]["piezo_values"], \
+        "the NNCF 5040 takes alpha from its table"
+    del d["lubricant"]["piezo_temperatures"], d["lubricant"]["piezo_values"]
+    assert any(w.startswith("lubricant.piezo = 0 1/Pa")
+               for w in input_warnings(Bearing.from_dict(d))), "no table and no piezo"

@@ -462,6 +462,22 @@ def test_plot_exit_2_on_missing_or_foreign_file(tmp_path, capsys):
     assert "synchronously" not in err and "Traceback" not in err, err
 
 
+def test_plot_of_a_bearing_output_points_to_its_contact_folders(tmp_path, capsys):
+    """'bearing-fem plot OUT' on the folder of 'bearing-fem bearing' (or its
+    bearing_summary.json) said "no result file 'OUT/result.h5'" or "not an HDF5 file":
+    the message now says what the folder is and names a contact folder to plot."""
+    out = tmp_path / "b"
+    (out / "contact_000_inner").mkdir(parents=True)
+    (out / "contact_000_outer").mkdir()
+    (out / "bearing_summary.json").write_text("{}")
+    for arg in (out, out / "bearing_summary.json"):
+        assert cli.main(["plot", str(arg)]) == 2
+        err = capsys.readouterr().err
+        assert "is the output of 'bearing-fem bearing'" in err, err
+        assert f"bearing-fem plot {out / 'contact_000_inner'}" in err, err
+        assert "load_distribution.png" in err and "Traceback" not in err, err
+
+
 def test_solve_series_prints_its_warnings(tmp_path, capsys):
     """A [transient] scene's summary lists its warnings as 'warning' lines, as a single
     solve's does (docs/cli.md); an elastic series says it has no error estimate."""

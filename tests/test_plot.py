@@ -481,3 +481,21 @@ def test_series_compare_and_cli_refusals(rigid_series, mixed_series, tmp_path, f
         read_series(tmp_path / "single")  # a contact result's summary.json
     assert len(figures.saved) == n_figures and not list(tmp_path.glob("[kcs].png")), \
         "a refused plot writes nothing"
+
+
+@pytest.mark.parametrize("kind", ["map", "line"])
+def test_long_title_stays_inside_the_figure(point_result, tmp_path, figures, kind):
+    """A title longer than the figure is wide (a bearing contact's map, 5 inches wide for
+    the slender ellipse of a deep-groove race, "... element 0 inner (psi = 0.0 deg)", or a
+    long scene title) ran off the figure's edge, cut; it is wrapped onto more lines."""
+    scene = replace(point_result.scene, title="a long scene title " * 8)
+    plot_result(replace(point_result, scene=scene), tmp_path / f"{kind}.png", kind=kind)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = figures.saved[-1]
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    box = fig.axes[0].title.get_window_extent(renderer)
+    width = fig.get_figwidth() * fig.dpi
+    assert box.x0 >= -1.0 and box.x1 <= width + 1.0, \
+        (box, width, "title within the figure's width (1 px: rounding)")

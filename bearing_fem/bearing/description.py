@@ -379,6 +379,7 @@ class Geometry:
         if self.width is not None:
             _length(self, "width")
         alpha = self._contact_angle()
+        self._check_raceways_in_rings(d, big_d, dm, dw, alpha)
         c_r = field_number(self, "radial_clearance", "m")
         if c_r < 0.0:
             raise SceneError(f"bearing.radial_clearance must be >= 0 m, got {c_r:g} m: a "
@@ -407,6 +408,26 @@ class Geometry:
                 f"{MIN_STATIC_LOAD_RATING_FRACTION:.0%} of the static load rating of this "
                 f"geometry, about {iso:.3g} N by ISO 76; C0 is in N, not kN "
                 f"({c0:g} kN is {c0 * 1e3:g} N)")
+
+    def _check_raceways_in_rings(self, d: float, big_d: float, dm: float, dw: float,
+                                 alpha: float) -> None:
+        """The raceway diameters d_m -+ D_w cos(alpha) (section 3 of docs/bearing.md) lie
+        between the bore and the outside diameter. Without a pitch diameter (d_m = (d + D)/2)
+        the element check above implies it; a given pitch diameter off the middle of the
+        section can put a raceway inside the bore or beyond the outer ring."""
+        reach = dw * math.cos(math.radians(alpha))
+        inner, outer = dm - reach, dm + reach
+        if inner > d and outer < big_d:
+            return
+        name = "pitch_diameter" if self.pitch_diameter is not None else "element_diameter"
+        side = (f"the inner raceway d_m - D_w cos(alpha) = {inner:.4g} m lies inside the bore "
+                f"{d:g} m" if inner <= d else
+                f"the outer raceway d_m + D_w cos(alpha) = {outer:.4g} m lies beyond the "
+                f"outside diameter {big_d:g} m")
+        raise SceneError(f"bearing.{name} = {getattr(self, name):g} m puts the elements "
+                         f"(D_w = {dw:g} m) outside the rings: {side}; the raceways must lie "
+                         f"between the bore and the outside diameter (d_m = {dm:g} m; "
+                         "dimensions are in metres)")
 
     def _contact_angle(self) -> float:
         """The nominal contact angle [deg]: required (and at least
@@ -722,7 +743,8 @@ class Operation:
     oil_temperature : float or None
         Oil (and bearing) temperature [deg C], in [-60, 500] deg C
         (:data:`OIL_TEMPERATURE_RANGE`: cold starts allowed); required by a temperature law
-        and by the thermal model, which need it > 0 deg C. Above
+        and by the thermal model, which need it > 0 deg C. Without a temperature law it
+        changes no result: ``lubricant.viscosity`` and ``piezo`` are taken as given. Above
         :data:`KELVIN_WARNING_TEMPERATURE` the bearing's warnings say it looks like kelvin
         (:func:`input_warnings`).
     """
@@ -1240,6 +1262,9 @@ def input_warnings(bearing: Bearing) -> list[str]:
     * ``operation.oil_temperature`` more than
       :data:`bearing_fem.contacts.coupling.PIEZO_TABLE_EXTRAPOLATION_K` outside the
       ``piezo_temperatures`` table: alpha is extrapolated there;
+    * ``lubricant.piezo`` = 0 (its default) without a ``piezo_values`` table and with a
+      Barus or Roelands law: the contacts are isoviscous (``viscosity_law = "constant"``
+      says that this is meant);
     * a tapered roller bearing with an odd number of rows and no axial load: the model
       takes its rows in opposed pairs (docs/bearing.md 2.3), so a single row is treated as
       one row of such a pair, its induced axial force reacted by the opposed bearing.
@@ -1262,6 +1287,12 @@ def input_warnings(bearing: Bearing) -> list[str]:
                    "the slicing error along the roller, which with so few slices is several "
                    "per cent (docs/bearing.md, \"Slicing error\")")
     lub = bearing.lubricant
+    if lub.piezo == 0.0 and lub.piezo_values is None and lub.viscosity_law != "constant":
+        out.append("lubricant.piezo = 0 1/Pa (its default when left out): every contact is "
+                   "isoviscous, with films several times thinner than those of a "
+                   "piezo-viscous oil (mineral oils have 1e-8..3e-8 1/Pa); give the oil's "
+                   "pressure-viscosity coefficient in 1/Pa, or lubricant.viscosity_law = "
+                   "\"constant\" for an isoviscous lubricant")
     if lub.temperature_law != "none":
         from ..contacts.coupling import piezo_table_warning
 
