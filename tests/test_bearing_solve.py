@@ -553,3 +553,21 @@ def test_palmgren_f1_of_angular_contact_uses_the_iso76_static_load():
     f1 = empirical_models(b)["palmgren"]["parameters"]["f1"]
     np.testing.assert_allclose(f1, 0.001 * (1170.0 / 12000.0) ** 0.33, rtol=1e-12,
                                err_msg="f1 = z (P0/C0)^y with the ISO 76 angular-contact P0")
+
+
+def test_low_speed_ball_film_far_below_the_fit_is_warned(r6209):
+    """6209 at 500 rpm: the most loaded inner contact (ry/rx = 32) solves to h_min
+    3.6e-8 m on the default 129^2 grid, 1.05e-7 m on 257^2, against Hamrock-Dowson's
+    1.02e-7 m, with no error estimate (its 65^2 level failed). The bearing names the
+    contact and the fit; at the example's own speed nothing is said."""
+    from bearing_fem.bearing.solve import FILM_FIT_WARNING_RATIO
+
+    b = load_example("6209")
+    slow = solve_bearing(replace(b, operation=replace(b.operation, inner_rpm=500.0)))
+    notes = [w for w in slow.warnings if "Hamrock-Dowson" in w]
+    assert len(notes) == 1 and notes[0].startswith("element 0 inner: h_min"), slow.warnings
+    s = slow.summary()
+    fit = s["film_formulas"]["inner"]["Hamrock-Dowson"]["h_min"]
+    assert s["elements"][0]["inner"]["h_min"] < FILM_FIT_WARNING_RATIO * fit, \
+        "the warned film is below half the fit (measured 0.35 times)"
+    assert not any("Hamrock-Dowson" in w for w in r6209.warnings), r6209.warnings
