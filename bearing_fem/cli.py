@@ -288,9 +288,13 @@ def _refuse_bearing_output(path: Path) -> None:
     from .io import BEARING_FILES
     from .plot_bearing import FIGURES
 
-    folder = path if path.is_dir() else path.parent
-    if not (folder / BEARING_FILES["summary"]).is_file() or not (
-            path.is_dir() or path.name == BEARING_FILES["summary"]):
+    if path.is_dir():
+        folder = path
+    elif path.name == BEARING_FILES["summary"]:
+        folder = path.parent
+    else:
+        return
+    if not (folder / BEARING_FILES["summary"]).is_file():
         return
     contacts = sorted(p for p in folder.glob("contact_*") if p.is_dir())
     example = (f"bearing-fem plot {contacts[0]}" if contacts

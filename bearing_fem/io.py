@@ -475,7 +475,6 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
         step's VTU, if any, alone: ``{"summary": ...[, "failed": ...]}``.
     """
     import h5py
-    import meshio
 
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -490,7 +489,8 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
         try:
             stage.temp(FILES["summary"]).write_text(summary_text, encoding="utf-8")
             if failure is not None:
-                _write_failed_step(stage.temp(failed_name), *_series_mesh(failure), failure)
+                _write_quad_vtu(stage.temp(failed_name), *_series_mesh(failure),
+                                _series_fields(failure))
             stage.commit()
         except BaseException:
             stage.discard()
@@ -514,9 +514,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
             for k, (t, r) in enumerate(zip(series.times, series.results)):
                 fname = f"{name}_{k:04d}.vtu"
                 data = _series_fields(r)
-                meshio.write(str(stage.temp(fname)), meshio.Mesh(points, [("quad", quads)],
-                                                                 point_data=data),
-                             file_format="vtu")
+                _write_quad_vtu(stage.temp(fname), points, quads, data)
                 entries.append(f'    <DataSet timestep="{float(t):.9g}" part="0" '
                                f'file="{fname}"/>')
                 attrs = []
@@ -539,7 +537,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
                     group.create_dataset(key, data=arr)
                 group.attrs["status"] = failure.status
         if failure is not None:
-            _write_failed_step(stage.temp(failed_name), points, quads, failure)
+            _write_quad_vtu(stage.temp(failed_name), points, quads, _series_fields(failure))
         stage.temp(final["summary"].name).write_text(summary_text, encoding="utf-8")
         stage.temp(final["pvd"].name).write_text(
             '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
@@ -563,12 +561,13 @@ def _series_fields(result: Any) -> dict[str, np.ndarray]:
     return {"pressure_Pa": np.ravel(result.pressure), "film_m": np.ravel(result.film)}
 
 
-def _write_failed_step(path: Path, points: np.ndarray, quads: np.ndarray, result: Any) -> None:
-    """The failed step's fields (its last iterate, not a solution) as one VTU file."""
+def _write_quad_vtu(path: Path, points: np.ndarray, quads: np.ndarray,
+                    fields: dict[str, np.ndarray]) -> None:
+    """One instant of a series (a solved step, or the failed step's last iterate) as a VTU
+    file of quads with its nodal fields."""
     import meshio
 
-    meshio.write(str(path), meshio.Mesh(points, [("quad", quads)],
-                                        point_data=_series_fields(result)),
+    meshio.write(str(path), meshio.Mesh(points, [("quad", quads)], point_data=fields),
                  file_format="vtu")
 
 

@@ -736,13 +736,14 @@ def _thin_film_warnings(bearing: Bearing, films: dict[str, Any],
     below :data:`FILM_FIT_WARNING_RATIO` times Hamrock-Dowson's minimum film (the fit of
     ``films``, :func:`_films_at_most_loaded`): a sign of a grid too coarse for the
     contact, which the error estimate may not show."""
+    if not bearing.geometry.is_ball:
+        return []
     out = []
-    j = films.get("element")
+    j = films["element"]
     for raceway in ("inner", "outer"):
         fit = ((films.get(raceway) or {}).get("Hamrock-Dowson") or {}).get("h_min")
-        contact = elements[j][raceway] if j is not None else None
-        if (not fit or not isinstance(contact, dict) or contact.get("ry") is None
-                or not contact.get("success")):
+        contact = elements[j][raceway]
+        if not fit or not contact.get("success"):
             continue
         h_min = contact.get("h_min")
         if h_min is not None and h_min < FILM_FIT_WARNING_RATIO * fit:
