@@ -571,3 +571,43 @@ def test_low_speed_ball_film_far_below_the_fit_is_warned(r6209):
     assert s["elements"][0]["inner"]["h_min"] < FILM_FIT_WARNING_RATIO * fit, \
         "the warned film is below half the fit (measured 0.35 times)"
     assert not any("Hamrock-Dowson" in w for w in r6209.warnings), r6209.warnings
+
+
+
+@pytest.mark.parametrize("load, pressure", [(40000.0, None), (60000.0, "4.63")])
+def test_roller_loads_beyond_the_iso76_static_capacity_are_warned(load, pressure):
+    """NU 206-size roller bearing: 40 kN radial gives 3.79 GPa at the most loaded contact,
+    60 kN 4.63 GPa, above the 4.0 GPa that defines C0 of roller bearings (the contacts
+    themselves warn only above 5 GPa)."""
+    r = solve_bearing(small_roller(operation={"radial_load": load}))
+    assert r.success, r.message
+    notes = [w for w in r.warnings if "ISO 76" in w]
+    if pressure is None:
+        assert notes == [], notes
+    else:
+        assert len(notes) == 1 and notes[0].startswith(
+            f"element 0 inner: the Hertz pressure {pressure} GPa is above the 4 GPa"), notes
+
+
+@pytest.mark.parametrize("factor, pressure", [(5.0, None), (8.0, "4.71")])
+def test_ball_loads_beyond_the_iso76_static_capacity_are_warned(factor, pressure):
+    """6209 (catalogue C0 21.6 kN): 20 kN radial gives 4.04 GPa at the most loaded contact,
+    32 kN 4.71 GPa, above the 4.2 GPa of ball bearings. Checked on the contact scenes the
+    bearing solve builds, before they are solved (as solve_bearing does; a solve of these
+    heavily loaded contacts takes 13 s even on 65^2)."""
+    from bearing_fem.bearing.contacts import contact_specs
+    from bearing_fem.bearing.kinematics import element_kinematics
+    from bearing_fem.bearing.loads import distribute_loads
+    from bearing_fem.bearing.solve import _static_capacity_warning
+
+    b = load_example("6209")
+    b = replace(b, operation=replace(b.operation, radial_load=factor * b.operation.radial_load))
+    g, dist = b.geometry, distribute_loads(b)
+    kin = element_kinematics(b.operation.inner_speed, g.mean_diameter, g.element_diameter,
+                             dist.alpha_inner, dist.alpha_outer)
+    notes = _static_capacity_warning(b, contact_specs(b, dist, kin))
+    if pressure is None:
+        assert notes == [], notes
+    else:
+        assert len(notes) == 1 and notes[0].startswith(
+            f"element 0 inner: the Hertz pressure {pressure} GPa is above the 4.2 GPa"), notes

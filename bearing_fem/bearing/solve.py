@@ -48,6 +48,13 @@ ENERGY_BALANCE_RTOL = 1e-3
 #: on 257^2 and 1.02e-7 m by Hamrock-Dowson, with no error estimate (its 65^2 level
 #: failed; tests/test_bearing_solve.py).
 FILM_FIT_WARNING_RATIO = 0.5
+#: Hertz pressure at which ISO 76 sets the basic static load rating C0 of ball bearings
+#: (self-aligning ones excepted) and of roller bearings [Pa]: the load at which the most
+#: loaded contact deforms the raceway permanently by 1e-4 of the element diameter. A
+#: contact above it is named in the bearing's warnings (the contacts themselves warn
+#: only above :data:`bearing_fem.checks.HERTZ_PRESSURE_HIGH`, 5 GPa).
+ISO76_BALL_PRESSURE = 4.2e9
+ISO76_ROLLER_PRESSURE = 4.0e9
 #: With ``model.centrifugal`` off, the bearing's warnings name an element centrifugal force
 #: above this fraction of the largest element load (the outer contacts' extra load).
 CENTRIFUGAL_WARNING_FRACTION = 0.1
@@ -415,6 +422,7 @@ def solve_bearing(bearing: Bearing, *,
                              dist.alpha_inner, dist.alpha_outer)
     specs = contact_specs(bearing, dist, kin)
     warnings.extend(_truncated_domain_warnings(bearing, specs))
+    warnings.extend(_static_capacity_warning(bearing, specs))
     results = solve_unique(specs, progress=progress, blas_threads=blas_threads)
     by_element: dict[int, dict[str, Any]] = {}
     for spec in specs:
@@ -728,6 +736,31 @@ def _missing_estimate_warning(bearing: Bearing, specs: list[ContactSpec],
             f"the spacing did not converge{example}, when the grid cannot be halved (an even "
             "node count, or fewer than 17 nodes per direction) or when a quantity is zero "
             f"on the finest grid; finer contact grids ([mesh] {key}) give estimates")
+
+
+def _static_capacity_warning(bearing: Bearing, specs: list[ContactSpec]) -> list[str]:
+    """One warning when the largest Hertz pressure of the solved contacts (of their most
+    loaded slice, for rollers) exceeds the ISO 76 limit of the bearing's kind
+    (:data:`ISO76_BALL_PRESSURE`, :data:`ISO76_ROLLER_PRESSURE`): the loads exceed the
+    bearing's basic static load rating C0."""
+    ball = bearing.geometry.is_ball
+    limit = ISO76_BALL_PRESSURE if ball else ISO76_ROLLER_PRESSURE
+    worst = None
+    for spec in specs:
+        if spec.excluded is not None:
+            continue
+        for sc in spec.scenes:
+            hertz = sc.hertz_scales()
+            if hertz is not None and (worst is None or hertz["p_h"] > worst[0]):
+                worst = (hertz["p_h"], spec)
+    if worst is None or worst[0] <= limit:
+        return []
+    p_h, spec = worst
+    return [f"element {spec.element} {spec.raceway}: the Hertz pressure {p_h / 1e9:.3g} GPa is "
+            f"above the {limit / 1e9:g} GPa at which ISO 76 sets the basic static load "
+            f"rating C0 of {'ball' if ball else 'roller'} bearings (a permanent raceway "
+            "deformation of 1e-4 of the element diameter): the loads exceed the bearing's "
+            "static capacity; check operation.radial_load and operation.axial_load (N)"]
 
 
 def _thin_film_warnings(bearing: Bearing, films: dict[str, Any],
