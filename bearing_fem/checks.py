@@ -19,7 +19,7 @@ from .scene import Scene
 __all__ = ["input_warnings", "VISCOSITY_HIGH", "VISCOSITY_LOW", "E_PRIME_LOW",
            "ALPHA_PH_HIGH", "HERTZ_PRESSURE_HIGH", "LINE_PRESSURE_LOW", "HARD_E_PRIME",
            "HERTZ_RATIO_HIGH", "GAP_RATIO_HIGH", "OIL_TEMPERATURE_HIGH", "OIL_DENSITY",
-           "HYDRODYNAMIC_RANGE_LOW", "TRACTION_PARAMETERS"]
+           "HYDRODYNAMIC_RANGE_LOW", "TRACTION_PARAMETERS", "thick_film_warning"]
 
 #: Viscosity above which no lubricating oil runs at its working temperature [Pa s]
 #: (an ISO VG 1500 gear oil at 40 deg C is about 1.3 Pa s).
@@ -183,6 +183,31 @@ def _thick_gap(scene: Scene) -> str | None:
         return None
     return (f"load.gap = {gap:.4g} m is {gap / rx:.3g} x contact.rx: the Reynolds equation "
             f"assumes a film much thinner than the radius (below {GAP_RATIO_HIGH:g})")
+
+
+def thick_film_warning(scene: Scene, h_central: float | None) -> str | None:
+    """The solved counterpart of the thick-gap check: a sentence when the central film of
+    a solve under a load exceeds :data:`GAP_RATIO_HIGH` times ``contact.rx`` (the Reynolds
+    equation and the parabolic gap assume a film much thinner than the radius), else None.
+
+    Parameters
+    ----------
+    scene : Scene
+        The solved scene (a prescribed gap is left to :func:`input_warnings`).
+    h_central : float or None
+        The solved central film [m].
+
+    Returns
+    -------
+    str or None
+    """
+    rx = scene.contact.rx
+    if scene.load.force is None or h_central is None or not h_central > GAP_RATIO_HIGH * rx:
+        return None
+    return (f"the central film {h_central:.4g} m is {h_central / rx:.3g} x contact.rx: the "
+            "Reynolds equation and the parabolic gap assume a film much thinner than the "
+            f"radius (below {GAP_RATIO_HIGH:g}); check the viscosity, speed and load and "
+            "their units")
 
 
 def _elastic_line_gap(scene: Scene) -> str | None:

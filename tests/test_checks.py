@@ -152,6 +152,31 @@ def test_thick_gap():
     assert "load.gap = 0.0005 m" in text and "0.05 x contact.rx" in text
 
 
+@pytest.mark.parametrize("base, changes, ratio", [
+    (BALL, {"lubricant__viscosity": 40.0}, "0.0392"),
+    (ROLLER, {"lubricant__viscosity": 4.0, "kinematics__u1": 20.0, "kinematics__u2": 20.0,
+              "load__force": 1e4}, "0.0393"),
+], ids=["ball-40-Pa-s", "roller-fast-light"])
+def test_thick_solved_film(base, changes, ratio):
+    """A film solved under a load that is not thin against the radius (a ball at 40 Pa s:
+    0.5 mm, 3.9 % of rx) is named after the solve, as a prescribed thick gap is before it."""
+    import bearing_fem as bf
+
+    r = bf.solve(_scene(base, **changes))
+    assert r.success, r.message
+    notes = [w for w in r.warnings if w.startswith("the central film")]
+    assert len(notes) == 1 and f"is {ratio} x contact.rx" in notes[0], r.warnings
+    assert checks.thick_film_warning(r.scene, 0.99 * checks.GAP_RATIO_HIGH
+                                     * r.scene.contact.rx) is None, "quiet below the limit"
+
+
+def test_plausible_solved_film_is_not_thick():
+    import bearing_fem as bf
+
+    r = bf.solve(Scene.from_dict(BALL))
+    assert r.success and not any("central film" in w for w in r.warnings), r.warnings
+
+
 def test_gap_on_an_elastic_line_contact():
     """The plane-strain displacement is defined up to a constant (that of ln|x - s| in
     metres): a prescribed gap on a half-space line contact gives a film that depends on

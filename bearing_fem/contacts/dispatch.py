@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
-from ..checks import input_warnings
+from ..checks import input_warnings, thick_film_warning
 from ..errors import SceneError
 from ..result import Result
 from ..scene import Scene
@@ -85,6 +85,9 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
     for w in caught:
         log.debug("suppressed during the solve: %s: %s", w.category.__name__, w.message)
     notes = input_warnings(scene)
+    if result.success:
+        thick = thick_film_warning(scene, result.quantities.get("h_central"))
+        notes += [thick] if thick else []
     if notes:
         result.warnings = notes + [w for w in result.warnings if w not in notes]
     return result
