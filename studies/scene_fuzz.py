@@ -920,7 +920,8 @@ def _check_bearing(case: Case, summary: dict, res: Outcome) -> None:
     limit = case.time_limit
     walls = [c["wall_time_s"] / n for c, n in zip(contacts, per)
              if isinstance(c.get("wall_time_s"), (int, float))]
-    solves = (summary.get("contact_solves") or {}).get("distinct_solved") or 0
+    counts = summary.get("contact_solves") or {}
+    solves = (counts.get("distinct_solved") or 0) + (counts.get("solved_again") or 0)
     ratios = [w / limit for w in walls]
     if isinstance(res.summary_wall_s, (int, float)):
         ratios.append(res.summary_wall_s / (limit * max(1, solves)))

@@ -272,7 +272,9 @@ def contact_specs(bearing: Bearing, dist: LoadDistribution,
 
 def solve_unique(specs: list[ContactSpec],
                  progress: Callable[[int, int, str], None] | None = None,
-                 blas_threads: int | None = 1) -> dict[str, Any]:
+                 blas_threads: int | None = 1,
+                 refine: Callable[[Scene, Any], tuple[Scene, str] | None] | None = None,
+                 refined: dict[str, tuple[int, int]] | None = None) -> dict[str, Any]:
     """Solve every distinct scene of ``specs`` once with :func:`bearing_fem.solve`.
 
     Parameters
@@ -280,6 +282,14 @@ def solve_unique(specs: list[ContactSpec],
     specs : list of ContactSpec
     progress : callable, optional
         ``progress(done, total, title)`` after each solve.
+    refine : callable, optional
+        ``refine(scene, result)`` after each solve: None, or a scene to solve instead (a
+        finer grid) and why, a clause such as "its h_min ... was below ...". Its result
+        replaces the first when it succeeds; either result carries a warning with the
+        reason.
+    refined : dict, optional
+        Filled with scene key -> the first grid's nodes of each scene solved again
+        successfully.
     blas_threads : int or None
         BLAS threads during the contact solves (threadpoolctl); None: leave as is. One
         thread by default: the dense line-contact Jacobians are small, and on a shared
@@ -310,9 +320,29 @@ def solve_unique(specs: list[ContactSpec],
         for i, key in enumerate(order):
             scene = unique[key]
             res = solve(scene)
+            again = refine(scene, res) if refine is not None else None
+            if again is not None:
+                first = res
+                res = _solved_again(solve, *again, first)
+                if res is not first and refined is not None:
+                    refined[key] = (first.x.size, first.y.size)
             results[key] = res
             log.info("contact %d/%d (%s): %s in %.2f s", i + 1, len(order), scene.title,
                      res.status, res.wall_time_s)
             if progress is not None:
                 progress(i + 1, len(order), scene.title)
     return results
+
+
+def _solved_again(solve: Callable[[Scene], Any], finer: Scene, why: str, first: Any) -> Any:
+    """The solution of ``finer`` with a warning that says why it was solved, or ``first``
+    (with a warning that the second solve failed) when it does not succeed."""
+    nodes = "x".join(str(n) for n in finer.mesh.nodes)
+    res = solve(finer)
+    if res.success:
+        res.warnings.append(f"solved again on {nodes} nodes: {why}; the results are those "
+                            f"on {nodes} (h_min {res.quantities['h_min']:.3g} m)")
+        return res
+    first.warnings.append(f"{why}, and a second solve on {nodes} nodes did not succeed "
+                          f"({res.status})")
+    return first

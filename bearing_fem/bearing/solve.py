@@ -19,35 +19,31 @@ from __future__ import annotations
 import logging
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable
 
 import numpy as np
 
 from ..errors import SceneError
+from ..formulas import point_films_hamrock_dowson
 from ..post import ERROR_WARNING_THRESHOLD, parse_estimate_warning
 from ..result import json_safe
+from ..scene import Scene
 from .contacts import ContactSpec, contact_specs, solve_unique
 from .description import Bearing, input_warnings, kelvin_like_temperatures
-from .empirical import empirical_models, film_formulas
+from .empirical import FIT_MIN_MATERIALS_PARAMETER, empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, centrifugal_force, distribute_loads, row_axial_force
 from .totals import bearing_totals, contact_summary, slice_label
 
-__all__ = ["BearingResult", "solve_bearing", "BEARING_UNITS"]
+__all__ = ["BearingResult", "solve_bearing", "thin_film_refinement", "BEARING_UNITS",
+           "FILM_FIT_WARNING_RATIO", "THIN_FILM_REFINE_MAX_NODES", "ISO76_BALL_PRESSURE",
+           "ISO76_ROLLER_PRESSURE"]
 
 log = logging.getLogger(__name__)
 
 #: Relative tolerance of the reported energy balance check (torque x omega vs heat).
 ENERGY_BALANCE_RTOL = 1e-3
-#: A ball contact of the most loaded element whose h_min falls below this fraction of
-#: Hamrock-Dowson's minimum film is named in the bearing's warnings. The FE films lie up
-#: to 38 % below that fit where they are grid-converged (docs/point.md, the circular map),
-#: so a factor 2 marks a film the grid does not resolve: 6209 at 500 rpm, the most loaded
-#: inner contact (ry/rx = 32) had h_min 3.6e-8 m on the default 129^2 against 1.05e-7 m
-#: on 257^2 and 1.02e-7 m by Hamrock-Dowson, with no error estimate (its 65^2 level
-#: failed; tests/test_bearing_solve.py).
-FILM_FIT_WARNING_RATIO = 0.5
 #: Hertz pressure at which ISO 76 sets the basic static load rating C0 of ball bearings
 #: (self-aligning ones excepted) and of roller bearings [Pa]: the load at which the most
 #: loaded contact deforms the raceway permanently by 1e-4 of the element diameter. A
@@ -55,6 +51,18 @@ FILM_FIT_WARNING_RATIO = 0.5
 #: only above :data:`bearing_fem.checks.HERTZ_PRESSURE_HIGH`, 5 GPa).
 ISO76_BALL_PRESSURE = 4.2e9
 ISO76_ROLLER_PRESSURE = 4.0e9
+#: A ball contact whose solved h_min falls below this fraction of Hamrock-Dowson's minimum
+#: film is solved again on the grid of half the spacing (:func:`thin_film_refinement`), and
+#: named in the bearing's warnings if it stays below. The FE films lie up to 38 % below
+#: that fit where they are grid-converged (docs/point.md, the circular map), so a factor 2
+#: marks a film the grid does not resolve: 6209 at 500 rpm, the most loaded inner contact
+#: (ry/rx = 32, Moes M = 2.4e4) had h_min 3.6e-8 m on the default 129^2 against
+#: 1.05e-7 m on 257^2 and 1.02e-7 m by Hamrock-Dowson, with no error estimate (its 65^2
+#: level failed; tests/test_bearing_solve.py).
+FILM_FIT_WARNING_RATIO = 0.5
+#: Largest node count per direction of that second solve (257^2 costs about 2-6 s per
+#: contact; a finer grid than that is left to ``[mesh] point_nodes``).
+THIN_FILM_REFINE_MAX_NODES = 257
 #: With ``model.centrifugal`` off, the bearing's warnings name an element centrifugal force
 #: above this fraction of the largest element load (the outer contacts' extra load).
 CENTRIFUGAL_WARNING_FRACTION = 0.1
@@ -104,6 +112,7 @@ BEARING_UNITS = {
     "h_min_location.element": "1", "p_max_location.element": "1",
     "load_distribution.elements_loaded": "1", "contact_solves.scenes": "1",
     "contact_solves.distinct_solved": "1", "contact_solves.reused": "1",
+    "contact_solves.solved_again": "1",
     # the empirical models' parts and parameters
     "empirical.*.torque_viscous": "N m", "empirical.*.torque_load": "N m",
     "empirical.*.torque_rolling": "N m", "empirical.*.torque_sliding": "N m",
@@ -158,6 +167,11 @@ class BearingResult:
     films : dict
         Film formulas at the most loaded element's inner and outer contacts.
     warnings : list of str
+    refined : dict
+        Scene key -> the nodes of its first grid, for each ball contact solved again on
+        the grid of half the spacing because its film lay far below Hamrock-Dowson's
+        (:func:`thin_film_refinement`); ``contacts`` holds
+        the finer result.
     wall_time_s : float
     """
 
@@ -174,6 +188,7 @@ class BearingResult:
     empirical: dict[str, Any] = field(default_factory=dict)
     films: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    refined: dict[str, tuple[int, int]] = field(default_factory=dict)
     wall_time_s: float = 0.0
 
     def __repr__(self) -> str:
@@ -291,7 +306,8 @@ class BearingResult:
                 "note": "pure rolling; values of the most loaded element"}
         n_scenes = sum(len(s.keys) for s in self.specs)
         out["contact_solves"] = {"scenes": n_scenes, "distinct_solved": len(self.contacts),
-                                 "reused": n_scenes - len(self.contacts)}
+                                 "reused": n_scenes - len(self.contacts),
+                                 "solved_again": len(self.refined)}
         out["units"] = dict(BEARING_UNITS)
         out["version"] = __version__
         out["bearing"] = self.bearing.to_dict()
@@ -423,7 +439,10 @@ def solve_bearing(bearing: Bearing, *,
     specs = contact_specs(bearing, dist, kin)
     warnings.extend(_truncated_domain_warnings(bearing, specs))
     warnings.extend(_static_capacity_warning(bearing, specs))
-    results = solve_unique(specs, progress=progress, blas_threads=blas_threads)
+    refined: dict[str, tuple[int, int]] = {}
+    results = solve_unique(specs, progress=progress, blas_threads=blas_threads,
+                           refine=thin_film_refinement if g.is_ball else None,
+                           refined=refined)
     by_element: dict[int, dict[str, Any]] = {}
     for spec in specs:
         by_element.setdefault(spec.element, {})[spec.raceway] = contact_summary(
@@ -486,7 +505,8 @@ def solve_bearing(bearing: Bearing, *,
     return BearingResult(bearing=bearing, success=success, status=status, message=message,
                          distribution=dist, kinematics=kin, specs=specs, contacts=results,
                          elements=elements, totals=totals, empirical=emp, films=films,
-                         warnings=warnings, wall_time_s=time.perf_counter() - t0)
+                         warnings=warnings, refined=refined,
+                         wall_time_s=time.perf_counter() - t0)
 
 
 def _nodes_key(bearing: Bearing) -> str:
@@ -736,6 +756,45 @@ def _missing_estimate_warning(bearing: Bearing, specs: list[ContactSpec],
             f"the spacing did not converge{example}, when the grid cannot be halved (an even "
             "node count, or fewer than 17 nodes per direction) or when a quantity is zero "
             f"on the finest grid; finer contact grids ([mesh] {key}) give estimates")
+
+
+def thin_film_refinement(scene: Scene, result: Any) -> tuple[Scene, str] | None:
+    """The scene to solve again when a ball contact's film is far below the fit, or None.
+
+    A successful point contact whose h_min lies below :data:`FILM_FIT_WARNING_RATIO` times
+    Hamrock-Dowson's minimum film (piezo-viscous oils only: the fit is one in
+    G = alpha E') is returned on the grid of half the spacing (2 n - 1 nodes per
+    direction), unless that grid exceeds :data:`THIN_FILM_REFINE_MAX_NODES` per direction.
+
+    Parameters
+    ----------
+    scene : Scene
+        A bearing contact's scene.
+    result : Result
+        Its solution.
+
+    Returns
+    -------
+    (Scene, str) or None
+        The finer scene and why (for
+        :func:`~bearing_fem.bearing.contacts.solve_unique`), or None.
+    """
+    c, lub = scene.contact, scene.lubricant
+    if (c.kind != "point" or not result.success or result.y is None
+            or lub.effective_piezo * scene.e_prime < FIT_MIN_MATERIALS_PARAMETER):
+        return None
+    fit, _ = point_films_hamrock_dowson(scene.load.force, c.rx, c.ry, scene.e_prime,
+                                        lub.viscosity, scene.kinematics.mean_speed,
+                                        lub.effective_piezo)
+    h_min = result.quantities.get("h_min")
+    nodes = (2 * result.x.size - 1, 2 * result.y.size - 1)
+    if h_min is None or h_min >= FILM_FIT_WARNING_RATIO * fit \
+            or max(nodes) > THIN_FILM_REFINE_MAX_NODES:
+        return None
+    why = (f"on {result.x.size}x{result.y.size} its h_min {h_min:.3g} m was below "
+           f"{FILM_FIT_WARNING_RATIO:g} times Hamrock-Dowson's minimum film {fit:.3g} m (a "
+           "film the grid does not resolve)")
+    return replace(scene, mesh=replace(scene.mesh, nodes=nodes, file=None)), why
 
 
 def _static_capacity_warning(bearing: Bearing, specs: list[ContactSpec]) -> list[str]:
