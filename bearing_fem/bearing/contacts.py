@@ -34,7 +34,7 @@ from .kinematics import ElementKinematics
 from .loads import LoadDistribution
 
 __all__ = ["ContactSpec", "contact_specs", "lubricant_at_oil_temperature", "scene_key",
-           "solve_unique", "KEY_DIGITS"]
+           "solve_unique", "grid_nodes", "KEY_DIGITS"]
 
 log = logging.getLogger(__name__)
 
@@ -273,8 +273,8 @@ def contact_specs(bearing: Bearing, dist: LoadDistribution,
 def solve_unique(specs: list[ContactSpec],
                  progress: Callable[[int, int, str], None] | None = None,
                  blas_threads: int | None = 1,
-                 refine: Callable[[Scene, Any], tuple[Scene, str] | None] | None = None,
-                 refined: dict[str, tuple[int, int]] | None = None) -> dict[str, Any]:
+                 refine: Callable[[Scene, Any], tuple[Scene, str | None] | None] | None = None,
+                 refined: dict[str, tuple[int, ...]] | None = None) -> dict[str, Any]:
     """Solve every distinct scene of ``specs`` once with :func:`bearing_fem.solve`.
 
     Parameters
@@ -284,12 +284,13 @@ def solve_unique(specs: list[ContactSpec],
         ``progress(done, total, title)`` after each solve.
     refine : callable, optional
         ``refine(scene, result)`` after each solve: None, or a scene to solve instead (a
-        finer grid) and why, a clause such as "its h_min ... was below ...". Its result
-        replaces the first when it succeeds; either result carries a warning with the
-        reason.
+        finer grid) and why, a clause such as "its h_min ... was below ..." for the
+        result's warnings (None: no warning). Its result replaces the last when it
+        succeeds, and ``refine`` is asked again about it; a failed solve ends the
+        refinement with a warning on the last result.
     refined : dict, optional
-        Filled with scene key -> the first grid's nodes of each scene solved again
-        successfully.
+        Filled with scene key -> the first grid's nodes (:func:`grid_nodes`) of each scene
+        solved again successfully.
     blas_threads : int or None
         BLAS threads during the contact solves (threadpoolctl); None: leave as is. One
         thread by default: the dense line-contact Jacobians are small, and on a shared
@@ -320,12 +321,16 @@ def solve_unique(specs: list[ContactSpec],
         for i, key in enumerate(order):
             scene = unique[key]
             res = solve(scene)
+            first = res
             again = refine(scene, res) if refine is not None else None
-            if again is not None:
-                first = res
-                res = _solved_again(solve, *again, first)
-                if res is not first and refined is not None:
-                    refined[key] = (first.x.size, first.y.size)
+            while again is not None:
+                finer, why = again
+                res, solved = _solved_again(solve, finer, why, res)
+                if not solved:  # the finer grid failed: the last success stays
+                    break
+                again = refine(finer, res)
+            if res is not first and refined is not None:
+                refined[key] = grid_nodes(first)
             results[key] = res
             log.info("contact %d/%d (%s): %s in %.2f s", i + 1, len(order), scene.title,
                      res.status, res.wall_time_s)
@@ -334,15 +339,27 @@ def solve_unique(specs: list[ContactSpec],
     return results
 
 
-def _solved_again(solve: Callable[[Scene], Any], finer: Scene, why: str, first: Any) -> Any:
-    """The solution of ``finer`` with a warning that says why it was solved, or ``first``
-    (with a warning that the second solve failed) when it does not succeed."""
-    nodes = "x".join(str(n) for n in finer.mesh.nodes)
+def grid_nodes(result: Any) -> tuple[int, ...]:
+    """The node counts of a contact result's grid: (n,) for a line, (nx, ny) for a point."""
+    return (result.x.size,) if result.y is None else (result.x.size, result.y.size)
+
+
+def _label(nodes: tuple[int, ...] | int) -> str:
+    return "x".join(str(n) for n in np.atleast_1d(nodes))
+
+
+def _solved_again(solve: Callable[[Scene], Any], finer: Scene, why: str | None,
+                  last: Any) -> tuple[Any, bool]:
+    """(the solution of ``finer``, True), with a warning that says why it was solved (none
+    when ``why`` is None), or (``last``, False) with a warning that the solve failed."""
+    nodes = _label(finer.mesh.nodes)
     res = solve(finer)
     if res.success:
-        res.warnings.append(f"solved again on {nodes} nodes: {why}; the results are those "
-                            f"on {nodes} (h_min {res.quantities['h_min']:.3g} m)")
-        return res
-    first.warnings.append(f"{why}, and a second solve on {nodes} nodes did not succeed "
-                          f"({res.status})")
-    return first
+        if why is not None:
+            res.warnings.append(f"solved again on {nodes} nodes: {why}; the results are "
+                                f"those on {nodes} (h_min {res.quantities['h_min']:.3g} m)")
+        return res, True
+    last.warnings.append(f"{why or 'a finer grid was asked for'}, and a solve on {nodes} "
+                         f"nodes did not succeed ({res.status}); the results are those on "
+                         f"{_label(grid_nodes(last))}")
+    return last, False

@@ -839,6 +839,16 @@ def _roughness_hint(value: float) -> str:
     return reading or "e.g. 0.2 um is 2e-07"
 
 
+#: Accepted ``[mesh] target_error`` [-].
+TARGET_ERROR_RANGE = (1e-3, 0.5)
+#: Finest grid a ``target_error`` refinement reaches: nodes per direction of a point
+#: contact (513^2 costs 10-17 s per heavily loaded ball contact) ...
+TARGET_ERROR_MAX_POINT_NODES = 513
+#: ... and nodes of a line contact (the cap of the default line grids: the dense
+#: compliance's memory and LU time grow as N^2 and N^3).
+TARGET_ERROR_MAX_LINE_NODES = 4001
+
+
 @dataclass(frozen=True, kw_only=True)
 class BearingMesh:
     """Mesh of every contact scene (defaults: the contact solver's own).
@@ -856,6 +866,13 @@ class BearingMesh:
         Node spacing of each line-contact scene (``mesh.grading`` of a scene: "outlet"
         refines the grid at the outlet spike, docs/line_contact.md "Automatic grading");
         half-space, isothermal roller bearings only. None: uniform.
+    target_error : float or None
+        Largest estimated relative discretisation error [-] of each contact's
+        friction force, heat power, h_min and h_central, in [1e-3, 0.5]: a contact above
+        it, or without an estimate, is solved again on the grid of half the spacing,
+        until it meets it or the grid reaches :data:`TARGET_ERROR_MAX_POINT_NODES` per
+        direction (points) or :data:`TARGET_ERROR_MAX_LINE_NODES` (lines). None (the
+        default): each contact is solved once on its grid.
     """
 
     _section = "mesh"
@@ -864,8 +881,14 @@ class BearingMesh:
     x_range: tuple[float, float] | None = None
     y_range: tuple[float, float] | None = None
     line_grading: str | None = None
+    target_error: float | None = None
 
     def __post_init__(self) -> None:
+        if self.target_error is not None:
+            field_bounded(self, "target_error", "(dimensionless; 0.05 is 5 %)",
+                          *TARGET_ERROR_RANGE,
+                          why="a relative error; below 1e-3 the estimate is at its noise, "
+                              "above 0.5 it is no error bar")
         if self.line_grading is not None:
             field_choice(self, "line_grading", GRADINGS)
             if self.line_grading == "uniform":
