@@ -267,6 +267,8 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
                          "h_central_vs_nvm": (hc / e["inner"]["h_central_formula"]
                                               if hc else None),
                          "elements_loaded": s["load_distribution"]["elements_loaded"],
+                         "solved_again": s["contact_solves"]["solved_again"],
+                         "wall_time_s": s["wall_time_s"],
                          "load_zone_half_angle_deg":
                              s["load_distribution"]["load_zone_half_angle_deg"]})
             print(f"209 {oil:6s} v={v:5.2f} m/s {r.status}: h_min={s['h_min']} m "
@@ -288,6 +290,8 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
         rigid = "-" if c["h_central_m"] is None else (
             "no solution" if kap is None else f"{kap / 1e6:.2f}")
         mesh = c["mesh"].get("point_nodes", "129x129 default")
+        if c["solved_again"]:
+            mesh = f"{mesh}; {c['solved_again']} solved again twice as fine"
         lines.append(
             f"| {c['oil']} | {c['speed_m_s']:g} | {c['inner_rpm']:.0f} | "
             f"{f(c['max_moes_M'], '.0f')} | {c['status']} ({mesh}) | "

@@ -673,6 +673,7 @@ def test_target_error_refines_contacts_until_met():
     assert r.success, r.message
     assert r.summary()["contact_solves"]["solved_again"] == len(r.refined) > 0
     assert set(r.refined.values()) == {(401,)}, r.refined
+    assert f"reused by symmetry, {len(r.refined)} solved again on finer grids)" in r.message
     for key, res in r.contacts.items():
         est = res.error_estimate
         assert all(est[q] <= 0.002 for q in TARGET_ERROR_QUANTITIES), (key, est)

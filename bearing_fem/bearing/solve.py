@@ -503,8 +503,8 @@ def solve_bearing(bearing: Bearing, *,
         m = totals["friction_torque"]
         message = (f"{int(np.count_nonzero(loaded))} of {dist.azimuth.size} elements loaded; "
                    f"{n_solved} distinct contact scenes solved ({n_scenes - n_solved} reused by "
-                   f"symmetry); friction torque {m:.4g} N m, heat power "
-                   f"{totals['heat_power']:.4g} W")
+                   f"symmetry{_solved_again_note(refined)}); friction torque {m:.4g} N m, "
+                   f"heat power {totals['heat_power']:.4g} W")
     return BearingResult(bearing=bearing, success=success, status=status, message=message,
                          distribution=dist, kinematics=kin, specs=specs, contacts=results,
                          elements=elements, totals=totals, empirical=emp, films=films,
@@ -893,6 +893,11 @@ def _target_error_warning(bearing: Bearing, specs: list[ContactSpec],
             "stays above it on the finest grid reached (a grid of half the spacing failed, "
             f"or would exceed {TARGET_ERROR_MAX_POINT_NODES}^2 nodes for points, "
             f"{TARGET_ERROR_MAX_LINE_NODES} for lines)"]
+
+
+def _solved_again_note(refined: dict[str, tuple[int, ...]]) -> str:
+    """", n solved again on finer grids" for the bearing's message, or ""."""
+    return f", {len(refined)} solved again on finer grids" if refined else ""
 
 
 def _grid_label(result: Any) -> str:
