@@ -728,3 +728,20 @@ def test_target_error_on_a_low_speed_ball_bearing():
     assert r.summary()["contact_solves"]["solved_again"] >= 4
     change = abs(r.totals["friction_torque"] / plain.totals["friction_torque"] - 1.0)
     assert change > 0.05, f"the refined torque differs from the default grid's by {change:.3g}"
+
+
+def test_refine_thin_films_can_be_switched_off():
+    """6209 on 33^2 contact grids: two contacts' films fall below half of Hamrock-Dowson's
+    and are solved again on 65^2; with refine_thin_films = false none is solved again and
+    the thin film of the most loaded element is only warned."""
+    b = load_example("6209")
+    coarse = replace(b, mesh=replace(b.mesh, point_nodes=(33, 33)))
+    r = solve_bearing(coarse)
+    assert r.success and set(r.refined.values()) == {(33, 33)}, r.refined
+    fixed = solve_bearing(replace(coarse, mesh=replace(coarse.mesh, refine_thin_films=False)))
+    assert fixed.success and fixed.refined == {}
+    assert not any("solved again" in w for w in fixed.warnings), fixed.warnings
+    assert any("times Hamrock-Dowson's" in w and "the solved films lie within" in w
+               for w in fixed.warnings), fixed.warnings
+    with pytest.raises(SceneError, match="mesh.refine_thin_films"):
+        replace(b.mesh, refine_thin_films="no")

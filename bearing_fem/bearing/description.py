@@ -872,7 +872,14 @@ class BearingMesh:
         it, or without an estimate, is solved again on the grid of half the spacing,
         until it meets it or the grid reaches :data:`TARGET_ERROR_MAX_POINT_NODES` per
         direction (points) or :data:`TARGET_ERROR_MAX_LINE_NODES` (lines). None (the
-        default): each contact is solved once on its grid.
+        default): each contact is solved once on its grid (but see
+        ``refine_thin_films``).
+    refine_thin_films : bool
+        Ball contacts whose h_min lies below half of Hamrock-Dowson's are solved again on
+        the grid of half the spacing, up to 257^2 (default true;
+        :func:`bearing_fem.bearing.solve.thin_film_refinement`). false keeps every contact
+        on its grid (work-precision studies of a fixed grid); such films are then only
+        warned.
     """
 
     _section = "mesh"
@@ -882,8 +889,10 @@ class BearingMesh:
     y_range: tuple[float, float] | None = None
     line_grading: str | None = None
     target_error: float | None = None
+    refine_thin_films: bool = True
 
     def __post_init__(self) -> None:
+        field_bool(self, "refine_thin_films")
         if self.target_error is not None:
             field_bounded(self, "target_error", "(dimensionless; 0.05 is 5 %)",
                           *TARGET_ERROR_RANGE,

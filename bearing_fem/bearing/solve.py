@@ -848,9 +848,11 @@ def target_error_refinement(scene: Scene, result: Any,
 
 def _refinement(bearing: Bearing) -> Callable[[Scene, Any], Any] | None:
     """The ``refine`` of :func:`~bearing_fem.bearing.contacts.solve_unique` for a bearing:
-    :func:`thin_film_refinement` for ball contacts, then
+    :func:`thin_film_refinement` for ball contacts (unless ``mesh.refine_thin_films`` is
+    false), then
     :func:`target_error_refinement` when ``mesh.target_error`` is given."""
-    ball, target = bearing.geometry.is_ball, bearing.mesh.target_error
+    ball = bearing.geometry.is_ball and bearing.mesh.refine_thin_films
+    target = bearing.mesh.target_error
     if not ball and target is None:
         return None
 
