@@ -274,7 +274,7 @@ def solve_unique(specs: list[ContactSpec],
                  progress: Callable[[int, int, str], None] | None = None,
                  blas_threads: int | None = 1,
                  refine: Callable[[Scene, Any], tuple[Scene, str | None] | None] | None = None,
-                 refined: dict[str, tuple[int, ...]] | None = None) -> dict[str, Any]:
+                 refined: dict[str, dict[str, Any]] | None = None) -> dict[str, Any]:
     """Solve every distinct scene of ``specs`` once with :func:`bearing_fem.solve`.
 
     Parameters
@@ -289,8 +289,8 @@ def solve_unique(specs: list[ContactSpec],
         succeeds, and ``refine`` is asked again about it; a failed solve ends the
         refinement with a warning on the last result.
     refined : dict, optional
-        Filled with scene key -> the first grid's nodes (:func:`grid_nodes`) of each scene
-        solved again successfully.
+        Filled with scene key -> ``{"nodes": the first grid's nodes (:func:`grid_nodes`),
+        "h_min": its h_min [m]}`` for each scene solved again successfully.
     blas_threads : int or None
         BLAS threads during the contact solves (threadpoolctl); None: leave as is. One
         thread by default: the dense line-contact Jacobians are small, and on a shared
@@ -330,7 +330,8 @@ def solve_unique(specs: list[ContactSpec],
                     break
                 again = refine(finer, res)
             if res is not first and refined is not None:
-                refined[key] = grid_nodes(first)
+                refined[key] = {"nodes": grid_nodes(first),
+                                "h_min": first.quantities.get("h_min")}
             results[key] = res
             log.info("contact %d/%d (%s): %s in %.2f s", i + 1, len(order), scene.title,
                      res.status, res.wall_time_s)

@@ -170,7 +170,8 @@ class BearingResult:
         Film formulas at the most loaded element's inner and outer contacts.
     warnings : list of str
     refined : dict
-        Scene key -> the nodes of its first grid ((n,) or (nx, ny)), for each contact
+        Scene key -> ``{"nodes": (n,) or (nx, ny), "h_min": [m]}`` of its first grid, for
+        each contact
         solved again on a grid of half the spacing: a ball contact whose film lay far
         below Hamrock-Dowson's (:func:`thin_film_refinement`), or one above
         ``mesh.target_error`` (:func:`target_error_refinement`); ``contacts`` holds the
@@ -191,7 +192,7 @@ class BearingResult:
     empirical: dict[str, Any] = field(default_factory=dict)
     films: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
-    refined: dict[str, tuple[int, ...]] = field(default_factory=dict)
+    refined: dict[str, dict[str, Any]] = field(default_factory=dict)
     wall_time_s: float = 0.0
 
     def __repr__(self) -> str:
@@ -442,7 +443,7 @@ def solve_bearing(bearing: Bearing, *,
     specs = contact_specs(bearing, dist, kin)
     warnings.extend(_truncated_domain_warnings(bearing, specs))
     warnings.extend(_static_capacity_warning(bearing, specs))
-    refined: dict[str, tuple[int, ...]] = {}
+    refined: dict[str, dict[str, Any]] = {}
     results = solve_unique(specs, progress=progress, blas_threads=blas_threads,
                            refine=_refinement(bearing), refined=refined)
     by_element: dict[int, dict[str, Any]] = {}
@@ -897,7 +898,7 @@ def _target_error_warning(bearing: Bearing, specs: list[ContactSpec],
             f"{TARGET_ERROR_MAX_LINE_NODES} for lines)"]
 
 
-def _solved_again_note(refined: dict[str, tuple[int, ...]]) -> str:
+def _solved_again_note(refined: dict[str, dict[str, Any]]) -> str:
     """", n solved again on finer grids" for the bearing's message, or ""."""
     return f", {len(refined)} solved again on finer grids" if refined else ""
 
