@@ -171,9 +171,8 @@ class BearingResult:
     warnings : list of str
     refined : dict
         Scene key -> ``{"nodes": (n,) or (nx, ny), "h_min": [m]}`` of its first grid, for
-        each contact
-        solved again on a grid of half the spacing: a ball contact whose film lay far
-        below Hamrock-Dowson's (:func:`thin_film_refinement`), or one above
+        each contact solved again on a grid of half the spacing: a ball contact whose film
+        lay far below Hamrock-Dowson's (:func:`thin_film_refinement`), or one above
         ``mesh.target_error`` (:func:`target_error_refinement`); ``contacts`` holds the
         finer result.
     wall_time_s : float
@@ -850,8 +849,7 @@ def target_error_refinement(scene: Scene, result: Any,
 def _refinement(bearing: Bearing) -> Callable[[Scene, Any], Any] | None:
     """The ``refine`` of :func:`~bearing_fem.bearing.contacts.solve_unique` for a bearing:
     :func:`thin_film_refinement` for ball contacts (unless ``mesh.refine_thin_films`` is
-    false), then
-    :func:`target_error_refinement` when ``mesh.target_error`` is given."""
+    false), then :func:`target_error_refinement` when ``mesh.target_error`` is given."""
     ball = bearing.geometry.is_ball and bearing.mesh.refine_thin_films
     target = bearing.mesh.target_error
     if not ball and target is None:
