@@ -268,11 +268,10 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
                                               if hc else None),
                          "elements_loaded": s["load_distribution"]["elements_loaded"],
                          "solved_again": s["contact_solves"]["solved_again"],
-                         # the most loaded inner contact's h_min on its first grid, when it
-                         # was solved again on a finer one
-                         "h_min_first_grid_m": (r.refined.get(r.contact_spec(j, "inner")
-                                                              .keys[0], {}).get("h_min")
-                                                if r.specs else None),
+                         # the smallest first-grid h_min of the contacts solved again on
+                         # a finer grid (None if none was)
+                         "h_min_first_grid_m": min((v["h_min"] for v in r.refined.values()),
+                                                   default=None),
                          "wall_time_s": s["wall_time_s"],
                          "load_zone_half_angle_deg":
                              s["load_distribution"]["load_zone_half_angle_deg"]})
@@ -298,7 +297,7 @@ def whole_bearing(outdir, quick: bool = False, speed_is_sum: bool = True) -> dic
         if c["solved_again"]:
             mesh = f"{mesh}; {c['solved_again']} solved again twice as fine"
             if c["h_min_first_grid_m"] is not None:
-                mesh += f", h_min {c['h_min_first_grid_m'] * 1e6:.3f} um on the first grid"
+                mesh += f", its h_min {c['h_min_first_grid_m'] * 1e6:.3f} um on the first grid"
         lines.append(
             f"| {c['oil']} | {c['speed_m_s']:g} | {c['inner_rpm']:.0f} | "
             f"{f(c['max_moes_M'], '.0f')} | {c['status']} ({mesh}) | "
