@@ -556,6 +556,7 @@ def test_palmgren_f1_of_angular_contact_uses_the_iso76_static_load():
                                err_msg="f1 = z (P0/C0)^y with the ISO 76 angular-contact P0")
 
 
+@pytest.mark.slow  # 16 s; test_refine_thin_films_can_be_switched_off covers it in 4 s
 def test_low_speed_ball_film_far_below_the_fit_is_solved_again(r6209):
     """6209 at 500 rpm: the most loaded inner contact (ry/rx = 32, Moes M = 2.4e4) solves
     to h_min 3.6e-8 m on the default 129^2 grid, against Hamrock-Dowson's 1.02e-7 m, with
