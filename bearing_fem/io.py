@@ -483,6 +483,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
     if name is None:
         name = "elastic_squeeze" if hasattr(series, "scheme") else "squeeze"
     failure = getattr(series, "failure", None)
+    failed_fields = None if failure is None else _series_fields(failure)
     failed_name = f"{name}_failed.vtu"
     if not series.results:  # nothing solved: the summary (with the status) alone
         stage = _Staging(outdir)
@@ -490,7 +491,7 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
             stage.temp(FILES["summary"]).write_text(summary_text, encoding="utf-8")
             if failure is not None:
                 _write_quad_vtu(stage.temp(failed_name), *_series_mesh(failure),
-                                _series_fields(failure))
+                                failed_fields)
             stage.commit()
         except BaseException:
             stage.discard()
@@ -533,11 +534,11 @@ def export_series(series: Any, outdir: str | Path, name: str | None = None) -> d
                     + "".join(attrs) + "</Grid>")
             if failure is not None:
                 group = f.create_group("failed")
-                for key, arr in _series_fields(failure).items():
+                for key, arr in failed_fields.items():
                     group.create_dataset(key, data=arr)
                 group.attrs["status"] = failure.status
         if failure is not None:
-            _write_quad_vtu(stage.temp(failed_name), points, quads, _series_fields(failure))
+            _write_quad_vtu(stage.temp(failed_name), points, quads, failed_fields)
         stage.temp(final["summary"].name).write_text(summary_text, encoding="utf-8")
         stage.temp(final["pvd"].name).write_text(
             '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'

@@ -34,7 +34,7 @@ from .kinematics import ElementKinematics
 from .loads import LoadDistribution
 
 __all__ = ["ContactSpec", "contact_specs", "lubricant_at_oil_temperature", "scene_key",
-           "solve_unique", "grid_nodes", "KEY_DIGITS"]
+           "solve_unique", "grid_nodes", "grid_label", "finer_grid", "KEY_DIGITS"]
 
 log = logging.getLogger(__name__)
 
@@ -345,15 +345,26 @@ def grid_nodes(result: Any) -> tuple[int, ...]:
     return (result.x.size,) if result.y is None else (result.x.size, result.y.size)
 
 
-def _label(nodes: tuple[int, ...] | int) -> str:
+def grid_label(nodes: tuple[int, ...] | int) -> str:
+    """Node counts as written in messages: "801", "129x129"."""
     return "x".join(str(n) for n in np.atleast_1d(nodes))
+
+
+def finer_grid(scene: Scene, result: Any) -> tuple[Scene, int | tuple[int, int]]:
+    """``scene`` on the grid of half the spacing of ``result`` (2 n - 1 nodes per
+    direction), and those nodes (an int for a line, (nx, ny) for a point)."""
+    from dataclasses import replace
+
+    nodes = tuple(2 * n - 1 for n in grid_nodes(result))
+    nodes = nodes[0] if len(nodes) == 1 else nodes
+    return replace(scene, mesh=replace(scene.mesh, nodes=nodes, file=None)), nodes
 
 
 def _solved_again(solve: Callable[[Scene], Any], finer: Scene, why: str | None,
                   last: Any) -> tuple[Any, bool]:
     """(the solution of ``finer``, True), with a warning that says why it was solved (none
     when ``why`` is None), or (``last``, False) with a warning that the solve failed."""
-    nodes = _label(finer.mesh.nodes)
+    nodes = grid_label(finer.mesh.nodes)
     res = solve(finer)
     if res.success:
         if why is not None:
@@ -362,5 +373,5 @@ def _solved_again(solve: Callable[[Scene], Any], finer: Scene, why: str | None,
         return res, True
     last.warnings.append(f"{why or 'a finer grid was asked for'}, and a solve on {nodes} "
                          f"nodes did not succeed ({res.status}); the results are those on "
-                         f"{_label(grid_nodes(last))}")
+                         f"{grid_label(grid_nodes(last))}")
     return last, False

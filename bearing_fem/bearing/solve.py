@@ -19,7 +19,7 @@ from __future__ import annotations
 import logging
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any, Callable
 
 import numpy as np
@@ -29,7 +29,8 @@ from ..formulas import point_films_hamrock_dowson
 from ..post import ERROR_WARNING_THRESHOLD, parse_estimate_warning
 from ..result import json_safe
 from ..scene import Scene
-from .contacts import ContactSpec, contact_specs, grid_nodes, solve_unique
+from .contacts import (ContactSpec, contact_specs, finer_grid, grid_label, grid_nodes,
+                       solve_unique)
 from .description import (TARGET_ERROR_MAX_LINE_NODES, TARGET_ERROR_MAX_POINT_NODES, Bearing,
                           input_warnings, kelvin_like_temperatures)
 from .empirical import FIT_MIN_MATERIALS_PARAMETER, empirical_models, film_formulas
@@ -783,21 +784,21 @@ def thin_film_refinement(scene: Scene, result: Any) -> tuple[Scene, str] | None:
         :func:`~bearing_fem.bearing.contacts.solve_unique`), or None.
     """
     c, lub = scene.contact, scene.lubricant
-    if (c.kind != "point" or not result.success or result.y is None
+    if (c.kind != "point" or not result.success
             or lub.effective_piezo * scene.e_prime < FIT_MIN_MATERIALS_PARAMETER):
         return None
     fit, _ = point_films_hamrock_dowson(scene.load.force, c.rx, c.ry, scene.e_prime,
                                         lub.viscosity, scene.kinematics.mean_speed,
                                         lub.effective_piezo)
     h_min = result.quantities.get("h_min")
-    nodes = (2 * result.x.size - 1, 2 * result.y.size - 1)
+    finer, nodes = finer_grid(scene, result)
     if h_min is None or h_min >= FILM_FIT_WARNING_RATIO * fit \
             or max(nodes) > THIN_FILM_REFINE_MAX_NODES:
         return None
-    why = (f"on {result.x.size}x{result.y.size} its h_min {h_min:.3g} m was below "
+    why = (f"on {grid_label(grid_nodes(result))} its h_min {h_min:.3g} m was below "
            f"{FILM_FIT_WARNING_RATIO:g} times Hamrock-Dowson's minimum film {fit:.3g} m (a "
            "film the grid does not resolve)")
-    return replace(scene, mesh=replace(scene.mesh, nodes=nodes, file=None)), why
+    return finer, why
 
 
 #: The quantities ``mesh.target_error`` applies to (p_max is left out: at the outlet
@@ -829,21 +830,22 @@ def target_error_refinement(scene: Scene, result: Any,
     (Scene, None) or None
         The finer scene (no warning: the user asked for it), or None.
     """
-    if not result.success:
+    if not result.success or not _misses(_target_errors(result), target):
         return None
+    finer, nodes = finer_grid(scene, result)
+    cap = TARGET_ERROR_MAX_LINE_NODES if result.y is None else TARGET_ERROR_MAX_POINT_NODES
+    return None if max(np.atleast_1d(nodes)) > cap else (finer, None)
+
+
+def _target_errors(result: Any) -> list[float | None]:
+    """A result's estimates of :data:`TARGET_ERROR_QUANTITIES` (None where unknown)."""
     est = result.error_estimate or {}
-    errors = [est.get(q) for q in TARGET_ERROR_QUANTITIES]
-    if all(e is not None and e <= target for e in errors):
-        return None
-    if result.y is None:
-        nodes: int | tuple[int, int] = 2 * result.x.size - 1
-        if nodes > TARGET_ERROR_MAX_LINE_NODES:
-            return None
-    else:
-        nodes = (2 * result.x.size - 1, 2 * result.y.size - 1)
-        if max(nodes) > TARGET_ERROR_MAX_POINT_NODES:
-            return None
-    return replace(scene, mesh=replace(scene.mesh, nodes=nodes, file=None)), None
+    return [est.get(q) for q in TARGET_ERROR_QUANTITIES]
+
+
+def _misses(errors: list[float | None], target: float) -> bool:
+    """An estimate is above ``target``, or unknown."""
+    return any(e is None or e > target for e in errors)
 
 
 def _refinement(bearing: Bearing) -> Callable[[Scene, Any], Any] | None:
@@ -877,15 +879,14 @@ def _target_error_warning(bearing: Bearing, specs: list[ContactSpec],
             res = results.get(key)
             if res is None or not res.success:
                 continue
-            est = res.error_estimate or {}
-            errors = [est.get(q) for q in TARGET_ERROR_QUANTITIES]
-            if any(e is None or e > target for e in errors):
+            errors = _target_errors(res)
+            if _misses(errors, target):
                 worst = max((e for e in errors if e is not None), default=None)
                 above.append((spec, res, worst))
                 break
     if not above:
         return []
-    names = ", ".join(f"{s.element} {s.raceway} ({_grid_label(r)}"
+    names = ", ".join(f"{s.element} {s.raceway} ({grid_label(grid_nodes(r))}"
                       + (f", {100 * w:.2g} %)" if w is not None else ", no estimate)")
                       for s, r, w in above[:6])
     more = f" (+{len(above) - 6} more)" if len(above) > 6 else ""
@@ -899,10 +900,6 @@ def _target_error_warning(bearing: Bearing, specs: list[ContactSpec],
 def _solved_again_note(refined: dict[str, dict[str, Any]]) -> str:
     """", n solved again on finer grids" for the bearing's message, or ""."""
     return f", {len(refined)} solved again on finer grids" if refined else ""
-
-
-def _grid_label(result: Any) -> str:
-    return "x".join(str(n) for n in grid_nodes(result))
 
 
 def _static_capacity_warning(bearing: Bearing, specs: list[ContactSpec]) -> list[str]:
