@@ -64,17 +64,24 @@ def _fmt(value: Any, unit: str = "") -> str:
 
 
 def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
-    """Short human summary of a result on stdout."""
+    """Short human summary of a result on stdout, each number with its estimated error
+    where the solve made one."""
     s = result.summary()
     units = s.get("units", {})
     title = getattr(result.scene, "title", "") or "scene"
+    est = s.get("error_estimate") or {}
+
+    def number(key: str, est_key: str | None = None) -> str:
+        return (_fmt(s.get(key), units.get(key, "")) if key != "friction_coefficient"
+                else _fmt(s.get(key))) + _error_note(est, est_key or key)
+
     rows = [
         ("status", f"{s['status']} ({'success' if s['success'] else 'no success'})"),
-        ("h_central", _fmt(s.get("h_central"), units.get("h_central", "m"))),
-        ("h_min", _fmt(s.get("h_min"), units.get("h_min", "m"))),
-        ("p_max", _fmt(s.get("p_max"), units.get("p_max", "Pa"))),
-        ("friction coefficient", _fmt(s.get("friction_coefficient"))),
-        ("heat power", _fmt(s.get("heat_power"), units.get("heat_power", "W"))
+        ("h_central", number("h_central")),
+        ("h_min", number("h_min")),
+        ("p_max", number("p_max")),
+        ("friction coefficient", number("friction_coefficient", "friction_force")),
+        ("heat power", number("heat_power")
          + (f" ({_fmt(s['heat_power_total'], 'W')} over contact.length)"
             if s.get("heat_power_total") is not None else "")),
         ("iterations", f"{s.get('newton_iterations', 0)} Newton, "
@@ -82,6 +89,10 @@ def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
         ("wall time", _fmt(s.get("wall_time_s"), "s")),
         ("dofs", str(s.get("dofs", "n/a"))),
     ]
+    ref = s.get("refinement")
+    if ref:
+        rows.append(("grids", f"{', '.join(ref['grids'])} (mesh.target_error = "
+                              f"{ref['target_error']:g}, {'met' if ref['met'] else 'not met'})"))
     print(title)
     for name, value in rows:
         print(f"  {name:<21} {value}")
@@ -90,6 +101,12 @@ def _print_summary(result: Any, files: dict[str, Path] | None) -> None:
         print(f"  {'warning':<21} {text}")
     if files:
         print(f"  {'wrote':<21} " + ", ".join(str(p) for p in files.values()))
+
+
+def _error_note(estimate: dict[str, Any], key: str) -> str:
+    """" (estimated error 0.21 %)" of ``key`` in a summary's error estimate, or ""."""
+    e = estimate.get(key)
+    return f" (estimated error {100 * e:.2g} %)" if isinstance(e, (int, float)) else ""
 
 
 def failure_numbers(result: Any) -> str:
@@ -390,16 +407,12 @@ def _print_bearing(bearing: Any, result: Any, files: dict[str, Path]) -> None:
     loc = s.get("h_min_location") or {}
     est = s.get("error_estimate") or {}
 
-    def bar(key: str) -> str:
-        e = est.get(key)
-        return f" (estimated error {100 * e:.2g} %)" if e is not None else ""
-
     rows = [("status", f"{s['status']} ({'success' if s['success'] else 'no success'})"),
-            ("friction torque", _fmt(s["friction_torque"], "N m") + bar("friction_torque")),
-            ("heat power", _fmt(s["heat_power"], "W") + bar("heat_power")),
-            ("h_min", _fmt(s["h_min"], "m") + bar("h_min")
+            ("friction torque", _fmt(s["friction_torque"], "N m") + _error_note(est, "friction_torque")),
+            ("heat power", _fmt(s["heat_power"], "W") + _error_note(est, "heat_power")),
+            ("h_min", _fmt(s["h_min"], "m") + _error_note(est, "h_min")
              + (f" (element {loc['element']}, {loc['raceway']})" if loc else "")),
-            ("p_max", _fmt(s["p_max"], "Pa") + bar("p_max"))]
+            ("p_max", _fmt(s["p_max"], "Pa") + _error_note(est, "p_max"))]
     for name, m in s["empirical"].items():
         if m.get("torque") is not None:
             rows.append((f"{name} torque", _fmt(m["torque"], "N m")))

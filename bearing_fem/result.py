@@ -173,6 +173,12 @@ class Result:
         temperature's viscosity); None where the solve does not record it. After a failed
         continuation it differs from ``history[-1]``, the residual of the last step's
         (easier) problem.
+    refinement : dict or None
+        With ``mesh.target_error``: ``target_error`` [-], ``grids`` (the grids solved,
+        coarse to fine, e.g. ``["129x129", "257x257"]``; the result is on the last one
+        that succeeded), ``met`` (every estimate within the target), ``newton_iterations``
+        and ``wall_time_s`` [s] of all the solves
+        (:func:`bearing_fem.contacts.refine.hold_target_error`); None otherwise.
     """
 
     success: bool
@@ -195,6 +201,7 @@ class Result:
     error_estimate: dict[str, Any] | None = None
     traction_model: str | None = None
     residual: float | None = None
+    refinement: dict[str, Any] | None = None
 
     def __repr__(self) -> str:
         return (f"Result(message={self.message!r}, success={self.success}, "
@@ -242,9 +249,14 @@ class Result:
         out["dofs"] = self.dofs
         out["warnings"] = [str(w) for w in self.warnings]
         out["error_estimate"] = None if self.error_estimate is None else dict(self.error_estimate)
+        if self.refinement is not None:
+            out["refinement"] = dict(self.refinement)
         out["units"] = {k: u for k, u in summary_units(kind).items() if k in out}
         if out["error_estimate"] is not None:
             out["units"].update(error_estimate_units(out["error_estimate"]))
+        if self.refinement is not None:
+            out["units"].update({"refinement.target_error": "1",
+                                 "refinement.wall_time_s": "s"})
         out["dimensionless"] = dimensionless_groups(
             self.scene, viscosity=self.quantities.get("contact_viscosity"),
             piezo=self.quantities.get("contact_piezo"))

@@ -136,6 +136,15 @@ def field_nonnegative(obj: Any, name: str, unit: str) -> float:
     return value
 
 
+def field_target_error(obj: Any) -> float:
+    """``obj.target_error`` (a ``[mesh]`` section's) in :data:`TARGET_ERROR_RANGE` [-], else
+    SceneError naming it."""
+    return field_bounded(obj, "target_error", "(dimensionless; 0.05 is 5 %)",
+                         *TARGET_ERROR_RANGE,
+                         why="a relative error; below 1e-3 the estimate is at its noise, "
+                             "above 0.5 it is no error bar")
+
+
 def field_bounded(obj: Any, name: str, unit: str, lo: float, hi: float, *,
              open_low: bool = False, why: str = "") -> float:
     """A finite number in [lo, hi] (or (lo, hi] with ``open_low``), else SceneError.
@@ -484,6 +493,9 @@ MAX_HERTZ_RATIO = 0.5
 MAX_VISCOSITY_RATIO = math.exp(700.0)
 #: Node spacings of ``mesh.grading``.
 GRADINGS = ("uniform", "outlet")
+#: Accepted ``mesh.target_error`` (of a contact scene and of a bearing) [-]: below 1e-3
+#: the estimate is at its noise, above 0.5 it is no error bar.
+TARGET_ERROR_RANGE = (1e-3, 0.5)
 #: Largest |start|, |end| of mesh.x_range and mesh.y_range [Hertz half-widths or
 #: sqrt(2 r h0)].
 MAX_RANGE = 1e3
@@ -752,6 +764,14 @@ class MeshSpec:
         (:func:`bearing_fem.contacts.line.solve_line`); the node count of the uniform
         grid (rounded up to 4k + 1). Isothermal scenes; not with ``file``. ``"uniform"``
         is stored as None.
+    target_error : float or None
+        Largest estimated relative discretisation error [-] (0.05 is 5 %) of friction
+        force, heat power, h_min and h_central, in [1e-3, 0.5]: a successful solve above
+        it (or without an estimate of one of them) is solved again on the grid of half the
+        spacing, until it meets it or the next grid would exceed 513^2 nodes (points) or
+        4001 nodes (lines) (:func:`bearing_fem.contacts.refine.hold_target_error`). None
+        (the default): one solve on the scene's grid. Not with ``file`` or a
+        ``[transient]`` series.
     """
 
     _section = "mesh"
@@ -760,6 +780,7 @@ class MeshSpec:
     y_range: tuple[float, float] | None = None
     file: str | None = None
     grading: str | None = None
+    target_error: float | None = None
 
     def __post_init__(self) -> None:
         if self.grading is not None and (not isinstance(self.grading, str)
@@ -785,6 +806,12 @@ class MeshSpec:
                                isinstance(n, (list, tuple)) else tuple(items))
         field_range(self, "x_range")
         field_range(self, "y_range")
+        if self.target_error is not None:
+            field_target_error(self)
+            if self.file is not None:
+                raise SceneError("mesh.target_error refines a generated grid (mesh.nodes and "
+                                 "the ranges); it cannot refine mesh.file "
+                                 f"{show_value(self.file)}: remove one of them")
 
 
     def _check_file(self) -> None:
@@ -1135,6 +1162,10 @@ class Scene:
         if self.model.thermal != "none":
             raise SceneError("a [transient] squeeze series is isothermal: model.thermal must "
                              f"be 'none', got {self.model.thermal!r}")
+        if self.mesh.target_error is not None:
+            raise SceneError("mesh.target_error applies to steady solves: a [transient] "
+                             "squeeze series is solved on the scene's grid (remove "
+                             "mesh.target_error, or give a finer mesh.nodes)")
         if self.model.elasticity == "rigid":
             lub = self.lubricant
             if lub.density != "incompressible" or (lub.viscosity_law == "roelands"

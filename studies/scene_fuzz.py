@@ -6,8 +6,9 @@ Question
     For a few hundred generated scenes -- structural garbage (wrong types, unknown keys,
     missing sections, broken TOML, binary files), extreme values, sliding line and point
     contacts, thermal line contacts, point contacts with a traction model, rigid
-    prescribed-gap contacts on both sides of Kapitsa's existence limit, and line contacts
-    on outlet-graded grids (``mesh.grading = "outlet"``) -- does every run
+    prescribed-gap contacts on both sides of Kapitsa's existence limit, line contacts
+    on outlet-graded grids (``mesh.grading = "outlet"``) and contacts held to a
+    ``mesh.target_error`` (solved again on finer grids) -- does every run
     of ``bearing-fem solve SCENE --out DIR`` end in an orderly way? And for bearing files
     generated from the five shipped examples -- mutations (a number scaled by 0, -1,
     1e-3 .. 1e6 or set to an extreme, a value of a wrong type, a string, a boolean,
@@ -40,7 +41,8 @@ Checks (each failure is a *violation*, listed with its case)
     * ``negative-film``, ``film-order``, ``negative-load``, ``friction>1``,
       ``negative-heat``: a successful summary with h_min or h_central < 0,
       h_min > h_central, load < 0, |friction_coefficient| > 1 or heat_power < 0;
-    * ``budget-iterations``: more Newton iterations than ``solver.iteration_budget``;
+    * ``budget-iterations``: more Newton iterations than ``solver.iteration_budget``
+      (with ``mesh.target_error``: those of every grid, ``refinement.newton_iterations``);
     * ``budget-time``: a summary ``wall_time_s`` above 1.25 x ``solver.time_limit`` + 1 s
       (the limit is checked between Newton iterations, and post-processing follows the
       last one), or a process that had to be killed at its hard timeout.
@@ -94,6 +96,7 @@ COUNTS = {
     "bearing-variant": (24, 3),
     "bearing-garbage": (10, 2),
     "bearing-extreme": (39, 1),
+    "target-error": (20, 1),
 }
 #: Margin on a stated time limit: factor and seconds (see the module docstring).
 TIME_FACTOR, TIME_SLACK = 1.25, 1.0
@@ -399,10 +402,19 @@ def _garbage(rng: random.Random, quick: bool) -> tuple[str, bytes]:
     return "[thermal] section without model.thermal = 'patch'", _toml(base)
 
 
+def gen_target_error(rng: random.Random, quick: bool) -> tuple[str, dict]:
+    """An elastic line or point contact with ``mesh.target_error``: solved again on finer
+    grids, every solve within the one ``[solver]`` budget."""
+    data = rng.choice([line_elastic, point_elastic])(rng, quick)
+    data["mesh"]["target_error"] = _loguniform(rng, 0.002, 0.05)
+    return (f"{data['contact']['kind']} target_error {data['mesh']['target_error']:.3g}",
+            data)
+
+
 GENERATORS: dict[str, Callable[[random.Random, bool], tuple[str, dict]]] = {
     "extreme": gen_extreme, "elastic": gen_elastic, "sliding": gen_sliding,
     "point-traction": gen_point_traction, "thermal": gen_thermal, "rigid-gap": gen_rigid_gap,
-    "outlet-grading": gen_outlet_grading,
+    "outlet-grading": gen_outlet_grading, "target-error": gen_target_error,
 }
 
 
@@ -825,7 +837,9 @@ def check(case: Case, folder: Path, exit_code: int | None, wall: float) -> Outco
     if bearing:
         _check_bearing(case, summary, res)
         return res
-    res.newton_iterations = summary.get("newton_iterations")
+    # with mesh.target_error, every grid's solve counts against the one budget
+    res.newton_iterations = (summary.get("refinement") or {}).get(
+        "newton_iterations", summary.get("newton_iterations"))
     if res.success is True:
         h_min, h_c = summary.get("h_min"), summary.get("h_central")
         if any(isinstance(h, (int, float)) and h < 0 for h in (h_min, h_c)):

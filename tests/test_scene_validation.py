@@ -206,6 +206,9 @@ CASES = [
     _case("mesh.grading-type", {"mesh.grading": 1}, "mesh.grading"),
     _case("mesh.grading-outlet-on-point", {"mesh.grading": "outlet"}, "mesh.grading",
           "contact.kind = 'point'", base="point"),
+    _case("mesh.target_error-percent", {"mesh.target_error": 5.0}, "mesh.target_error",
+          "[0.001, 0.5]", "0.05 is 5 %"),
+    _case("mesh.target_error-type", {"mesh.target_error": "5 %"}, "mesh.target_error"),
     # --- solver ----------------------------------------------------------------------
     _case("solver.tolerance-sign", {"solver.tolerance": -1e-8}, "solver.tolerance"),
     _case("solver.tolerance-zero", {"solver.tolerance": 0.0}, "solver.tolerance"),

@@ -25,6 +25,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ..contacts.refine import finer_grid, grid_label, grid_nodes
 from ..errors import SceneError
 from ..scene import (Contact, Kinematics, Load, Lubricant, Materials, MeshSpec, Model, Scene,
                      Thermal)
@@ -34,7 +35,7 @@ from .kinematics import ElementKinematics
 from .loads import LoadDistribution
 
 __all__ = ["ContactSpec", "contact_specs", "lubricant_at_oil_temperature", "scene_key",
-           "solve_unique", "grid_nodes", "grid_label", "finer_grid", "KEY_DIGITS"]
+           "solve_unique", "KEY_DIGITS"]
 
 log = logging.getLogger(__name__)
 
@@ -338,26 +339,6 @@ def solve_unique(specs: list[ContactSpec],
             if progress is not None:
                 progress(i + 1, len(order), scene.title)
     return results
-
-
-def grid_nodes(result: Any) -> tuple[int, ...]:
-    """The node counts of a contact result's grid: (n,) for a line, (nx, ny) for a point."""
-    return (result.x.size,) if result.y is None else (result.x.size, result.y.size)
-
-
-def grid_label(nodes: tuple[int, ...] | int) -> str:
-    """Node counts as written in messages: "801", "129x129"."""
-    return "x".join(str(n) for n in np.atleast_1d(nodes))
-
-
-def finer_grid(scene: Scene, result: Any) -> tuple[Scene, int | tuple[int, int]]:
-    """``scene`` on the grid of half the spacing of ``result`` (2 n - 1 nodes per
-    direction), and those nodes (an int for a line, (nx, ny) for a point)."""
-    from dataclasses import replace
-
-    nodes = tuple(2 * n - 1 for n in grid_nodes(result))
-    nodes = nodes[0] if len(nodes) == 1 else nodes
-    return replace(scene, mesh=replace(scene.mesh, nodes=nodes, file=None)), nodes
 
 
 def _solved_again(solve: Callable[[Scene], Any], finer: Scene, why: str | None,

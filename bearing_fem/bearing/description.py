@@ -24,7 +24,8 @@ from ..scene import (FORCE_RANGE, GRADINGS, TEMPERATURE_RANGE, VISCOSITY_RANGE, 
                      Traction, field_bool, field_bounded, field_choice, field_integer,
                      field_name_prefix, field_nonnegative, field_number, field_piezo,
                      field_piezo_table, field_poisson, field_positive, field_range,
-                     parse_toml, read_text_file, sections_from_dict, sections_to_dict)
+                     field_target_error, parse_toml, read_text_file, sections_from_dict,
+                     sections_to_dict)
 
 __all__ = ["Bearing", "Geometry", "BearingMaterials", "BearingLubricant", "Operation",
            "BearingModel", "BearingMesh", "BearingThermal", "EmpiricalOptions",
@@ -839,14 +840,6 @@ def _roughness_hint(value: float) -> str:
     return reading or "e.g. 0.2 um is 2e-07"
 
 
-#: Accepted ``[mesh] target_error`` [-].
-TARGET_ERROR_RANGE = (1e-3, 0.5)
-#: Finest grid a ``target_error`` refinement reaches: nodes per direction of a point
-#: contact (513^2 costs 10-17 s per heavily loaded ball contact) ...
-TARGET_ERROR_MAX_POINT_NODES = 513
-#: ... and nodes of a line contact (the cap of the default line grids: the dense
-#: compliance's memory and LU time grow as N^2 and N^3).
-TARGET_ERROR_MAX_LINE_NODES = 4001
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -870,8 +863,9 @@ class BearingMesh:
         Largest estimated relative discretisation error [-] of each contact's
         friction force, heat power, h_min and h_central, in [1e-3, 0.5]: a contact above
         it, or without an estimate, is solved again on the grid of half the spacing,
-        until it meets it or the grid reaches :data:`TARGET_ERROR_MAX_POINT_NODES` per
-        direction (points) or :data:`TARGET_ERROR_MAX_LINE_NODES` (lines). None (the
+        until it meets it or the grid reaches :data:`~bearing_fem.contacts.refine.TARGET_ERROR_MAX_POINT_NODES`
+        per direction (points) or
+        :data:`~bearing_fem.contacts.refine.TARGET_ERROR_MAX_LINE_NODES` (lines). None (the
         default): each contact is solved once on its grid (but see
         ``refine_thin_films``).
     refine_thin_films : bool
@@ -894,10 +888,7 @@ class BearingMesh:
     def __post_init__(self) -> None:
         field_bool(self, "refine_thin_films")
         if self.target_error is not None:
-            field_bounded(self, "target_error", "(dimensionless; 0.05 is 5 %)",
-                          *TARGET_ERROR_RANGE,
-                          why="a relative error; below 1e-3 the estimate is at its noise, "
-                              "above 0.5 it is no error bar")
+            field_target_error(self)
         if self.line_grading is not None:
             field_choice(self, "line_grading", GRADINGS)
             if self.line_grading == "uniform":

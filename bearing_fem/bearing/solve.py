@@ -27,12 +27,13 @@ import numpy as np
 from ..errors import SceneError
 from ..formulas import point_films_hamrock_dowson
 from ..post import ERROR_WARNING_THRESHOLD, parse_estimate_warning
+from ..contacts.refine import (TARGET_ERROR_MAX_LINE_NODES, TARGET_ERROR_MAX_POINT_NODES,
+                               TARGET_ERROR_QUANTITIES, finer_grid, grid_label, grid_nodes,
+                               misses_target, target_errors, target_grid_cap)
 from ..result import json_safe
 from ..scene import Scene
-from .contacts import (ContactSpec, contact_specs, finer_grid, grid_label, grid_nodes,
-                       solve_unique)
-from .description import (TARGET_ERROR_MAX_LINE_NODES, TARGET_ERROR_MAX_POINT_NODES, Bearing,
-                          input_warnings, kelvin_like_temperatures)
+from .contacts import ContactSpec, contact_specs, solve_unique
+from .description import Bearing, input_warnings, kelvin_like_temperatures
 from .empirical import FIT_MIN_MATERIALS_PARAMETER, empirical_models, film_formulas
 from .kinematics import ElementKinematics, element_kinematics
 from .loads import LoadDistribution, centrifugal_force, distribute_loads, row_axial_force
@@ -801,11 +802,6 @@ def thin_film_refinement(scene: Scene, result: Any) -> tuple[Scene, str] | None:
     return finer, why
 
 
-#: The quantities ``mesh.target_error`` applies to (p_max is left out: at the outlet
-#: spike of heavily loaded contacts it converges slowly or not at all, docs/accuracy.md).
-TARGET_ERROR_QUANTITIES = ("friction_force", "heat_power", "h_min", "h_central")
-
-
 def target_error_refinement(scene: Scene, result: Any,
                             target: float) -> tuple[Scene, None] | None:
     """The scene on the grid of half the spacing when a contact's estimated error exceeds
@@ -814,8 +810,8 @@ def target_error_refinement(scene: Scene, result: Any,
     A successful contact whose largest ``error_estimate`` over
     :data:`TARGET_ERROR_QUANTITIES` exceeds ``target`` (or that has no estimate for one of
     them) is returned on 2 n - 1 nodes (per direction), unless that grid exceeds
-    :data:`~bearing_fem.bearing.description.TARGET_ERROR_MAX_POINT_NODES` per direction
-    (points) or :data:`~bearing_fem.bearing.description.TARGET_ERROR_MAX_LINE_NODES`
+    :data:`~bearing_fem.contacts.refine.TARGET_ERROR_MAX_POINT_NODES` per direction
+    (points) or :data:`~bearing_fem.contacts.refine.TARGET_ERROR_MAX_LINE_NODES`
     (lines).
 
     Parameters
@@ -830,22 +826,10 @@ def target_error_refinement(scene: Scene, result: Any,
     (Scene, None) or None
         The finer scene (no warning: the user asked for it), or None.
     """
-    if not result.success or not _misses(_target_errors(result), target):
+    if not result.success or not misses_target(result, target):
         return None
     finer, nodes = finer_grid(scene, result)
-    cap = TARGET_ERROR_MAX_LINE_NODES if result.y is None else TARGET_ERROR_MAX_POINT_NODES
-    return None if max(np.atleast_1d(nodes)) > cap else (finer, None)
-
-
-def _target_errors(result: Any) -> list[float | None]:
-    """A result's estimates of :data:`TARGET_ERROR_QUANTITIES` (None where unknown)."""
-    est = result.error_estimate or {}
-    return [est.get(q) for q in TARGET_ERROR_QUANTITIES]
-
-
-def _misses(errors: list[float | None], target: float) -> bool:
-    """An estimate is above ``target``, or unknown."""
-    return any(e is None or e > target for e in errors)
+    return None if max(np.atleast_1d(nodes)) > target_grid_cap(result) else (finer, None)
 
 
 def _refinement(bearing: Bearing) -> Callable[[Scene, Any], Any] | None:
@@ -879,9 +863,8 @@ def _target_error_warning(bearing: Bearing, specs: list[ContactSpec],
             res = results.get(key)
             if res is None or not res.success:
                 continue
-            errors = _target_errors(res)
-            if _misses(errors, target):
-                worst = max((e for e in errors if e is not None), default=None)
+            if misses_target(res, target):
+                worst = max((e for e in target_errors(res) if e is not None), default=None)
                 above.append((spec, res, worst))
                 break
     if not above:

@@ -82,6 +82,11 @@ def solve(scene: Scene, *, boundary_pressure: tuple[float, float] | None = None,
     with np.errstate(all="ignore"), warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         result = _route(scene, boundary_pressure, progress)
+        if scene.mesh.target_error is not None:
+            from .refine import hold_target_error
+
+            result = hold_target_error(
+                scene, result, lambda finer: _route(finer, boundary_pressure, progress))
     for w in caught:
         log.debug("suppressed during the solve: %s: %s", w.category.__name__, w.message)
     notes = input_warnings(scene)
