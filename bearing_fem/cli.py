@@ -489,12 +489,33 @@ def _cmd_runs(args: argparse.Namespace) -> int:
         return EXIT_OK
     print(format_runs(rows, cols, store_units(args.store)))
     if args.status and not rows and not args.quiet:
-        present, _ = query_runs(args.store, columns=["status"])
-        have = sorted({r["status"] for r in present})
-        print(f"no row has status {', '.join(map(repr, args.status))}; statuses in this "
-              f"store: {', '.join(have) or 'none'} (groups: success, failed, final, "
-              "unfinished)", file=sys.stderr)
+        print(_no_status_note(args.store, args.status), file=sys.stderr)
     return EXIT_OK
+
+
+#: The status groups of ``bearing-fem runs --status`` (docs/sweeps.md).
+STATUS_GROUPS = ("success", "failed", "final", "unfinished")
+
+
+def _no_status_note(store: Any, asked: list[str]) -> str:
+    """Why ``runs --status`` kept no row: the statuses and groups asked for, what the store
+    holds, and the closest name to one that looks misspelt."""
+    import difflib
+
+    from .sweep import query_runs
+
+    present, _ = query_runs(store, columns=["status"])
+    have = sorted({r["status"] for r in present})
+    groups = [s for s in asked if s in STATUS_GROUPS]
+    named = [s for s in asked if s not in STATUS_GROUPS]
+    parts = ([f"in the group{'s' if len(groups) > 1 else ''} {', '.join(map(repr, groups))}"]
+             if groups else [])
+    parts += [f"with status {', '.join(map(repr, named))}"] if named else []
+    guesses = {s: difflib.get_close_matches(s, have + list(STATUS_GROUPS), n=1, cutoff=0.75)
+               for s in named if s not in have}
+    hint = "".join(f" ('{s}': did you mean {g[0]!r}?)" for s, g in guesses.items() if g)
+    return (f"no row {' or '.join(parts)}{hint}; statuses in this store: "
+            f"{', '.join(have) or 'none'} (groups: {', '.join(STATUS_GROUPS)})")
 
 
 def _add_sweep_parsers(sub: Any) -> None:

@@ -141,7 +141,9 @@ MOLECULAR_FILM = 5e-9
 def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
                  p_nodes: np.ndarray, load: float, x: np.ndarray,
                  y: np.ndarray | None = None,
-                 h_near: np.ndarray | None = None) -> tuple[dict[str, float], list[str]]:
+                 h_near: np.ndarray | None = None,
+                 constriction: str | None = "the outlet constriction"
+                 ) -> tuple[dict[str, float], list[str]]:
     """h_min, h_central, p_max and load of a solution, and warnings when the minimum film
     lies between the nodes or below :data:`MOLECULAR_FILM`.
 
@@ -164,7 +166,9 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
     h_nodes, h_q : film at the nodes and at the quadrature points [m];
     h_central : film at the Hertz centre [m]; p_nodes : nodal pressure [Pa];
     load : int p dA [N or N/m]; x, y : node coordinates [m] (``y`` for point contacts);
-    h_near : film at further points between the nodes [m] (optional).
+    h_near : film at further points between the nodes [m] (optional);
+    constriction : what the warning says the grid does not resolve; None: no such warning
+    (a rigid body, whose minimum h_central at x = 0 is exact).
     """
     h_node_min = float(np.min(h_nodes))
     h_grid_min = float(min(h_node_min, float(np.min(h_q)), h_central))
@@ -172,11 +176,12 @@ def film_numbers(h_nodes: np.ndarray, h_q: np.ndarray, h_central: float,
     if h_near is not None and np.size(h_near):
         h_min = float(min(h_min, float(np.min(h_near))))
     notes = []
-    if (h_grid_min < (1.0 - SUBGRID_FILM_FRACTION) * h_node_min
+    if constriction is not None and (
+            h_grid_min < (1.0 - SUBGRID_FILM_FRACTION) * h_node_min
             or h_min < (1.0 - ERROR_WARNING_THRESHOLD) * h_node_min):
         notes.append(f"h_min lies between the nodes ({h_min:.4g} m, "
                      f"{100 * (1 - h_min / h_node_min):.3g}% below the nodal minimum "
-                     f"{h_node_min:.4g} m): the outlet constriction is not resolved by the "
+                     f"{h_node_min:.4g} m): {constriction} is not resolved by the "
                      "grid; refine the mesh")
     if 0.0 < h_min < MOLECULAR_FILM:
         notes.append(f"h_min = {h_min:.3g} m is below {MOLECULAR_FILM:.0e} m, a few molecular "

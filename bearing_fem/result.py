@@ -54,6 +54,8 @@ _UNITS_POINT = {
     "thermal_residual": "K",
     "contact_viscosity": "Pa s", "contact_piezo": "1/Pa", "gmres_iterations": "1",
     "wall_time_s": "s",
+    # counts: unit 1, as every dimensionless number
+    "newton_iterations": "1", "linear_solves": "1", "dofs": "1",
 }
 #: Per-metre summary keys of a line contact and the totals over ``contact.length`` that
 #: :meth:`Result.summary` adds when the length is given (key, total key, total unit).
@@ -115,12 +117,12 @@ def line_totals(summary: Mapping[str, Any], length: float) -> dict[str, float | 
 def error_estimate_units(estimate: Mapping[str, Any], prefix: str = "error_estimate"
                          ) -> dict[str, str]:
     """Units of the relative errors of an ``error_estimate`` table: ``"1"`` (a
-    dimensionless ratio, as ``friction_coefficient``) for each of its entries that is a
-    number or None, named ``prefix.key`` (the run store's column names); ``levels`` (a
-    count) and the text and table entries have no unit."""
+    dimensionless ratio, as ``friction_coefficient``; so is ``levels``, a count, as every
+    count of a summary) for each of its entries that is a number or None, named
+    ``prefix.key`` (the run store's column names); the text and table entries have no
+    unit."""
     return {f"{prefix}.{k}": "1" for k, v in estimate.items()
-            if k != "levels" and (v is None or (isinstance(v, (int, float))
-                                                and not isinstance(v, bool)))}
+            if v is None or (isinstance(v, (int, float)) and not isinstance(v, bool))}
 
 
 #: Status strings, in the spirit of scipy.optimize.
@@ -260,6 +262,7 @@ class Result:
         out["dimensionless"] = dimensionless_groups(
             self.scene, viscosity=self.quantities.get("contact_viscosity"),
             piezo=self.quantities.get("contact_piezo"))
+        out["units"].update({f"dimensionless.{k}": "1" for k in out["dimensionless"]})
         out["version"] = VERSION
         out["scene"] = self.scene.to_dict()
         return out

@@ -769,7 +769,7 @@ class MeshSpec:
         force, heat power, h_min and h_central, in [1e-3, 0.5]: a successful solve above
         it (or without an estimate of one of them) is solved again on the grid of half the
         spacing, until it meets it or the next grid would exceed 513^2 nodes (points) or
-        4001 nodes (lines) (:func:`bearing_fem.contacts.refine.hold_target_error`). None
+        8001 nodes (lines) (:func:`bearing_fem.contacts.refine.hold_target_error`). None
         (the default): one solve on the scene's grid. Not with ``file`` or a
         ``[transient]`` series.
     """

@@ -401,3 +401,24 @@ def test_row_axial_force_of_a_radially_loaded_tapered_pair():
     # one row under a combined load carries the applied axial load itself
     single = distribute_loads(_tapered(fa=5e4))
     np.testing.assert_allclose(row_axial_force(single), 5e4, rtol=1e-9)
+
+
+@pytest.mark.parametrize("radial, axial", [(0.0, 100.0), (3000.0, 200.0)])
+def test_centrifugal_load_zone_follows_the_loaded_balls(radial, axial):
+    """7010 with the centrifugal force: the load zone is where the inner contacts carry
+    load (the rigid-geometry boundary gave 0 deg under a pure axial 100 N with all 20
+    balls loaded): 180 deg when all are, else midway between the last loaded ball's
+    azimuth and the next one's."""
+    b = load_example("7010-steel")
+    b = replace(b, operation=replace(b.operation, radial_load=radial, axial_load=axial),
+                model=replace(b.model, centrifugal=True))
+    d = distribute_loads(b)
+    angle = np.abs(np.angle(np.exp(1j * d.azimuth)))
+    loaded = d.load_inner > 0.0
+    assert d.centrifugal_force > 0.0 and np.any(loaded)
+    if loaded.all():
+        assert d.load_zone_half_angle == math.pi, math.degrees(d.load_zone_half_angle)
+    else:
+        last, first_out = angle[loaded].max(), angle[~loaded].min()
+        assert last < d.load_zone_half_angle < first_out, (
+            math.degrees(last), math.degrees(d.load_zone_half_angle), math.degrees(first_out))

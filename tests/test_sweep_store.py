@@ -267,7 +267,7 @@ def test_concurrent_writers_from_several_processes(tmp_path):
 def test_error_estimate_columns_are_dimensionless(tmp_path):
     """The run store's error_estimate.* columns (relative errors) had no unit; they get
     "1", the unit of the summaries' other dimensionless ratios (friction_coefficient,
-    film_parameter_min)."""
+    film_parameter_min), and so do the counts and the Moes groups."""
     import bearing_fem as bf
     from bearing_fem.bearing import Bearing, solve_bearing
 
@@ -292,7 +292,11 @@ def test_error_estimate_columns_are_dimensionless(tmp_path):
                if c.startswith("error_estimate.") and isinstance(v, float)]
         assert len(rel) >= 4, cols
         assert {c: units.get(c) for c in rel} == dict.fromkeys(rel, "1"), units
-        assert "error_estimate.levels" not in units, "a count, not a ratio"
+    # counts and dimensionless groups too: one rule, every dimensionless number has "1"
+    cols, units = flatten_summary(contact)
+    for c in ("error_estimate.levels", "newton_iterations", "dofs", "dimensionless.M",
+              "dimensionless.L"):
+        assert c in cols and units.get(c) == "1", (c, units.get(c))
         with RunStore(tmp_path / "runs.sqlite") as store:
             store.write(Case({"i": len(rel)}, rigid(1e-6 * len(rel))),
                         {"status": summary["status"], "success": True, "message": "",

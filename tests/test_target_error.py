@@ -107,3 +107,14 @@ def test_target_survives_toml_and_the_command_line_prints_the_grids(tmp_path, ca
     out = capsys.readouterr().out
     assert "grids                 1201, 2401 (mesh.target_error = 0.002, met)" in out, out
     assert "h_min" in out and "(estimated error" in out, out
+
+
+def test_target_error_study_quick(tmp_path, load_study):
+    """studies/target_error.py --quick: two line cases at 1 % and one circular case at 5 %;
+    each meets its target, and its change to the twice-finer solve lies within it."""
+    study = load_study("target_error")
+    res = study.main(tmp_path, quick=True)
+    assert (tmp_path / "cases.csv").is_file() and (tmp_path / "summary.json").is_file()
+    for key, cell in ((k, v) for k, v in res["summary"].items() if isinstance(v, dict)):
+        assert cell["met"] == cell["cases"] and cell["no_truth"] == 0, (key, cell)
+        assert cell["within"] == 1.0, (key, cell, "a met target that does not hold")

@@ -386,8 +386,12 @@ def _ball_distribution(bearing: Bearing) -> LoadDistribution:
     st = m.state(dr, za)
     sum_r, sum_a = m.sums(dr, za)
     _check_balance(sum_r, fr, sum_a, fa)
-    # continuous load-zone boundary: s(psi) = A  ->  r0 + dr cos psi = sqrt(A^2 - za^2)
-    if za >= m.A:
+    # continuous load-zone boundary: s(psi) = A  ->  r0 + dr cos psi = sqrt(A^2 - za^2);
+    # with the centrifugal force the balls leave the rigid geometry (their equilibrium
+    # decides which inner contacts carry load): the boundary from the element loads
+    if m.fc > 0.0:
+        half = _discrete_load_zone(m.psi, st["qi"] > 0.0)
+    elif za >= m.A:
         half = math.pi
     elif dr > 0.0:
         c = (math.sqrt(m.A**2 - za**2) - m.r0) / dr
@@ -405,6 +409,18 @@ def _ball_distribution(bearing: Bearing) -> LoadDistribution:
         load_zone_half_angle=float(half), radial_sum=sum_r, axial_sum=sum_a,
         centrifugal_force=m.fc, slice_positions=None, slice_widths=None, slice_loads=None,
         exponent=LOAD_EXPONENT_BALL, stiffness=k0, clearance=float(m.cr))
+
+
+def _discrete_load_zone(psi: np.ndarray, loaded: np.ndarray) -> float:
+    """Load-zone half-angle [rad] from which elements carry load: midway between the
+    largest |azimuth| of a loaded element and the next unloaded one (pi when every
+    element is loaded, 0 when none is)."""
+    angle = np.abs(np.angle(np.exp(1j * np.asarray(psi, dtype=float))))
+    if not np.any(loaded):
+        return 0.0
+    last = float(np.max(angle[loaded]))
+    beyond = angle[~loaded & (angle > last)]
+    return math.pi if beyond.size == 0 else 0.5 * (last + float(np.min(beyond)))
 
 
 # ---------------------------------------------------------------------------------------

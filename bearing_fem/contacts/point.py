@@ -1778,7 +1778,10 @@ class PointModel:
         qgrid = qp.grid
         qops = qgrid.ops
         pq, h_q, gp, eta_q, gq, stab = qp.post_fields(qpress, h0)
-        nums, notes = film_numbers(h_nodes, h_q, h_c, p, load, grid.x, grid.y)
+        nums, notes = film_numbers(
+            h_nodes, h_q, h_c, p, load, grid.x, grid.y,
+            constriction=(None if scene.model.elasticity == "rigid"
+                          else "the outlet constriction"))
         q.update(nums)
         if exterior_load is not None:
             q["load_beyond_domain"] = beyond

@@ -33,9 +33,10 @@ TARGET_ERROR_QUANTITIES = ("friction_force", "heat_power", "h_min", "h_central")
 #: Finest grid a ``target_error`` refinement reaches: nodes per direction of a point
 #: contact (513^2 costs 10-17 s per heavily loaded ball contact) ...
 TARGET_ERROR_MAX_POINT_NODES = 513
-#: ... and nodes of a line contact (the cap of the default line grids: the dense
-#: compliance's memory and LU time grow as N^2 and N^3).
-TARGET_ERROR_MAX_LINE_NODES = 4001
+#: ... and nodes of a line contact (twice the cap of the default line grids: the dense
+#: compliance's memory grows as N^2, 0.5 GB at 8001 nodes; an 8001-node solve of the
+#: line map's M = 1000 cases took about 6 s, ``studies/target_error.py``).
+TARGET_ERROR_MAX_LINE_NODES = 8001
 
 
 def grid_nodes(result: Any) -> tuple[int, ...]:

@@ -91,8 +91,16 @@ def sweep(spec: Any, store: str | Path | None = None, *, scheduler: Any = None,
         reached. Unsuccessful solves do not raise: they are rows with their status.
     """
     if in_worker_bootstrap():
-        raise SceneError("bearing_fem.sweep() was called while a worker process imported the "
-                         "main script: call it under `if __name__ == \"__main__\":`")
+        # a pool worker importing an unguarded main script: one line and a quiet exit (a
+        # raise would print a multiprocessing traceback per worker); the client's pool
+        # then stops with the cause and the remedy
+        import os
+        import sys
+
+        sys.stderr.write("bearing_fem.sweep() was called while a worker process imported "
+                         "the main script: call it under `if __name__ == \"__main__\":`\n")
+        sys.stderr.flush()
+        os._exit(1)
     if isinstance(spec, (str, Path)):
         spec = SweepSpec.from_toml(spec)
         default_store = Path(spec.source).with_suffix(".sqlite")

@@ -516,12 +516,12 @@ def parse_axes(axes: Any, zipped: Any, source: str = "<sweep>"
         raise SceneError(f"{source}: [zip] must be a table of 'section.key' = "
                          f"'leader.key', got {shown(zipped)}")
     out_axes = []
-    for key, spec in _flat_keys(axes):
+    for key, spec in _once(_flat_keys(axes), "axes", source):
         _check_key(key, "axes")
         out_axes.append(Axis(key, axis_values(key, spec)))
     leaders = {a.key: a for a in out_axes}
     out_zip = []
-    for key, spec in _flat_keys(zipped):
+    for key, spec in _once(_flat_keys(zipped), "zip", source):
         _check_key(key, "zip")
         if key in leaders:
             raise SceneError(f"{source}: {key!r} is both an axis and a zipped key")
@@ -554,7 +554,8 @@ def _flat_keys(table: Mapping[str, Any], prefix: str = "") -> list[tuple[str, An
     """``{"load.force": v}`` as written with quotes, or ``{"load": {"force": v}}`` as
     TOML makes of unquoted dotted keys: both as ``("load.force", v)``. Only a section
     name (a key without a dot) is taken apart this way: below it, a table is the axis
-    itself (``{linspace = [...]}``)."""
+    itself (``{linspace = [...]}``). TOML keeps a key written both ways twice
+    (:func:`_once` refuses it)."""
     out = []
     for key, value in table.items():
         key = f"{prefix}{key}"
@@ -563,6 +564,18 @@ def _flat_keys(table: Mapping[str, Any], prefix: str = "") -> list[tuple[str, An
         else:
             out.append((key, value))
     return out
+
+
+def _once(pairs: list[tuple[str, Any]], table: str, source: str) -> list[tuple[str, Any]]:
+    """``pairs`` (of :func:`_flat_keys`), or SceneError naming a key given twice."""
+    seen: set[str] = set()
+    for key, _ in pairs:
+        if key in seen:
+            raise SceneError(f"{source}: [{table}] gives {key!r} twice (quoted, \"{key}\" = "
+                             "..., and unquoted or as a table): one would silently replace "
+                             "the other's values; give it once")
+        seen.add(key)
+    return pairs
 
 
 def cases_of(spec_or_cases: Any) -> list[Case]:
