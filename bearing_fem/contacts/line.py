@@ -206,11 +206,19 @@ class LineProblem(ScaledResidual):
         """Film at the nodes [m]."""
         return h0 + self.g_nodes + self.displacement(p)
 
+    @property
+    def rigid(self) -> bool:
+        """No deformation: the film is h0 + x^2/(2R)."""
+        return getattr(self.compliance, "kind", "rigid") == "rigid"
+
     def film_central(self, p: np.ndarray, h0: float) -> float:
-        """Film at x = 0 [m]: h0 plus the deformation interpolated there (the geometry
-        x^2/(2R) is 0 there; interpolating it too put a rigid cylinder's h_central up to
-        7 % above h0 on a grid without a node at x = 0)."""
-        return float(h0 + np.interp(0.0, self.disc.x, self.displacement(p)))
+        """Film at x = 0 [m]: h0 itself for rigid bodies (the interpolant of the nodal
+        parabola put a rigid cylinder's h_central up to 7 % above h0 on a grid without a
+        node at x = 0); for deformable bodies the interpolant of the nodal film, which is
+        flat in the Hertz zone (the default elastic grids have a node at x = 0)."""
+        if self.rigid:
+            return float(h0)
+        return float(np.interp(0.0, self.disc.x, self.film_nodes(p, h0)))
 
     def film_near_minimum(self, p: np.ndarray, h0: float) -> np.ndarray:
         """Film [m] between the nodes around the nodal minimum of a half-space line
@@ -1021,11 +1029,10 @@ class LineModel:
         pq, h_q, px, _ = problem.fields_q(p, h0)
         load = float(problem.mass @ p)
         q = out.quantities
-        rigid = problem.compliance is None or getattr(problem.compliance, "kind",
-                                                      None) == "rigid"
         nums, notes = film_numbers(h_nodes, h_q, problem.film_central(p, h0), p, load, disc.x,
                                    h_near=problem.film_near_minimum(p, h0),
-                                   constriction=None if rigid else "the outlet constriction")
+                                   constriction=(None if problem.rigid
+                                                 else "the outlet constriction"))
         q.update(nums)
         outlet = outlet_position_line(disc.x, p, scene.model.cavitation)
         ind = full_film_indicator_line(ops.points[0], outlet)
@@ -1106,7 +1113,7 @@ def _interpolated(problem: LineProblem, xs: np.ndarray, ps: np.ndarray,
     p[[0, -1]] = problem.p_bc[[0, -1]]
     h0 = 0.0
     if problem.has_h0:
-        h0 = hc - (problem.film_central(p, 0.0))
+        h0 = hc - problem.film_central(p, 0.0)
     return problem.pack(p, h0)
 
 
